@@ -1,0 +1,6 @@
+#pragma once
+#include <string>
+
+namespace fsi::app {
+std::string version();
+} // namespace fsi::app
