@@ -1,5 +1,6 @@
 #include "fsi_app/version.hpp"
 
 namespace fsi::app {
-std::string version() { return "0.1.0"; }
+std::string version() { return FSI_VERSION; }
+std::string git_revision() { return FSI_GIT_REVISION; }
 } // namespace fsi::app

@@ -1,0 +1,29 @@
+#pragma once
+// What the run driver sees of one simulated part of a scene (a structure, a fluid, or a coupled
+// system): advance, write its grids, answer its probes, report its statistics.
+#include "fsi_app/output/fields_file.hpp"
+#include "fsi_app/output/json.hpp"
+#include "fsi_app/scene.hpp"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace fsi::app {
+
+class Model {
+public:
+  virtual ~Model() = default;
+  /// Advances from `time` to `time + dt`; throws fsi::RunError when the run cannot go on.
+  virtual void advance(double time, double dt) = 0;
+  /// Declares static data (mesh connectivity) once, before the first frame.
+  virtual void declare(FieldsFile& file) const = 0;
+  /// Writes this model's grids for the current frame; `fields` lists the requested fields.
+  virtual void write_frame(FieldsFile& file, const std::vector<std::string>& fields) const = 0;
+  /// The probe's current value if this model owns it.
+  virtual std::optional<double> probe(const ProbeSpec& probe) const = 0;
+  /// Adds counts and statistics (elements, particles, iterations) to run.json.
+  virtual void report(JsonObject& run) const = 0;
+};
+
+} // namespace fsi::app

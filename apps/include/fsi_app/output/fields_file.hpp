@@ -1,0 +1,78 @@
+#pragma once
+// fields.h5 + fields.xmf: a time series of grids (particle clouds and T6 meshes) that ParaView
+// opens through the XDMF file. Each finished frame is flushed to disk and the XDMF rewritten
+// (to a temporary name, then renamed), so a killed run leaves every finished frame readable and
+// the XDMF names only datasets that exist.
+//
+// HDF5 layout:
+//   /meshes/<grid>/t6            int64 [elements x 6], written once per mesh grid
+//   /frames/<k>                  attribute `time` (s)
+//   /frames/<k>/<grid>/position  float64 [points x 2]
+//   /frames/<k>/<grid>/<field>   float64 [points] or [points x 2]
+#include "fsi/core/types.hpp"
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace fsi::app {
+
+struct GridField {
+  std::string name;
+  int components = 1;           ///< 1 (scalar) or 2 (vector)
+  const double* data = nullptr; ///< points x components, row-major
+};
+
+class FieldsFile {
+public:
+  /// Creates (truncates) `h5` and writes `xmf` beside it.
+  FieldsFile(const std::filesystem::path& h5, const std::filesystem::path& xmf);
+  ~FieldsFile();
+  FieldsFile(const FieldsFile&) = delete;
+  FieldsFile& operator=(const FieldsFile&) = delete;
+
+  /// Declares a T6 mesh grid; connectivity is 6 node indices per element.
+  void add_mesh(const std::string& grid, const std::vector<std::int64_t>& t6);
+
+  void begin_frame(double time);
+  /// Writes one grid of the current frame: points (x, y interleaved) and its fields.
+  void write_grid(const std::string& grid, const std::vector<double>& xy,
+                  const std::vector<GridField>& fields);
+  /// Flushes the HDF5 file and rewrites the XDMF index.
+  void end_frame();
+
+  int frames() const { return static_cast<int>(frames_.size()); }
+
+private:
+  struct GridRecord {
+    std::string grid;
+    std::size_t points = 0;
+    std::vector<std::pair<std::string, int>> fields;
+  };
+  struct FrameRecord {
+    double time = 0.0;
+    std::vector<GridRecord> grids;
+  };
+  struct MeshRecord {
+    std::string grid;
+    std::size_t elements = 0;
+  };
+  void write_xdmf() const;
+
+  std::filesystem::path h5_path_, xmf_path_;
+  std::int64_t file_ = -1;
+  std::int64_t frame_group_ = -1;
+  std::vector<FrameRecord> frames_;
+  std::vector<MeshRecord> meshes_;
+};
+
+/// Reads one float64 or int64 dataset back (tests, restart tools): values and dimensions.
+struct Dataset {
+  std::vector<double> values;
+  std::vector<std::size_t> dims;
+};
+Dataset read_dataset(const std::filesystem::path& h5, const std::string& name);
+double read_frame_time(const std::filesystem::path& h5, int frame);
+
+} // namespace fsi::app

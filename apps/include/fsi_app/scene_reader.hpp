@@ -1,0 +1,111 @@
+#pragma once
+// Strict, typed access to one block of a scene file. Every key is declared exactly once, at the
+// point where it is read: name, type, default, allowed range and a one-line doc. The same
+// declarations produce the scene reference (docs/scenes.md) when read in documentation mode.
+// Errors are one line, `FILE:LINE: KEY: what is wrong`, thrown as fsi::InputError.
+#include "fsi/core/types.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <limits>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+#include <yaml-cpp/yaml.h>
+
+namespace fsi::app {
+
+/// Allowed interval of a number; open or closed at each end.
+struct Range {
+  double lo = -std::numeric_limits<double>::infinity();
+  double hi = std::numeric_limits<double>::infinity();
+  bool lo_open = false;
+  bool hi_open = false;
+
+  static Range any() { return {}; }
+  static Range positive() { return {0.0, Range{}.hi, true, false}; }
+  static Range non_negative() { return {0.0, Range{}.hi, false, false}; }
+  static Range closed(double a, double b) { return {a, b, false, false}; }
+  static Range open(double a, double b) { return {a, b, true, true}; }
+  static Range left_open(double a, double b) { return {a, b, true, false}; }
+
+  bool contains(double v) const;
+  std::string describe() const; ///< e.g. "(0, 0.5)", "> 0", "any"
+};
+
+/// One declared key, as the documentation generator sees it.
+struct KeyDoc {
+  std::string path;     ///< dotted path, lists shown as `structures[]`
+  std::string type;     ///< "real", "integer", "bool", "string", "one of a|b", "[x, y]", ...
+  std::string fallback; ///< default value as text, or "required"
+  std::string range;
+  std::string doc;
+};
+
+/// Shared state of one scene read: file name, overridden paths, documentation collector.
+struct ReadContext {
+  std::string file;                                ///< scene path as given, for messages
+  std::filesystem::path dir;                       ///< relative file paths resolve here
+  std::map<std::string, std::string> overrides;    ///< dotted path -> `--set` text
+  std::unique_ptr<std::vector<KeyDoc>> collector;  ///< non-null in documentation mode
+
+  bool documenting() const { return collector != nullptr; }
+};
+
+class Section {
+public:
+  /// `key_line` is the 1-based line of the key that opened this block (0 for the top level).
+  Section(YAML::Node node, std::string path, ReadContext& ctx, int key_line = 0);
+
+  double real(const std::string& key, Range range, const std::string& doc);
+  double real(const std::string& key, double fallback, Range range, const std::string& doc);
+  std::optional<double> optional_real(const std::string& key, Range range, const std::string& doc);
+  int integer(const std::string& key, Range range, const std::string& doc);
+  std::optional<int> optional_integer(const std::string& key, Range range, const std::string& doc);
+  int integer(const std::string& key, int fallback, Range range, const std::string& doc);
+  bool boolean(const std::string& key, bool fallback, const std::string& doc);
+  std::string text(const std::string& key, const std::string& fallback, const std::string& doc);
+  std::string text(const std::string& key, const std::string& doc);
+  std::string choice(const std::string& key, const std::vector<std::string>& choices,
+                     const std::string& fallback, const std::string& doc);
+  Vec2 vec2(const std::string& key, const std::string& doc);
+  Vec2 vec2(const std::string& key, const Vec2& fallback, const std::string& doc);
+  std::optional<Vec2> optional_vec2(const std::string& key, const std::string& doc);
+  std::vector<Vec2> points(const std::string& key, std::size_t min_count, const std::string& doc);
+  std::vector<std::string> names(const std::string& key, const std::vector<std::string>& fallback,
+                                 const std::string& doc);
+  /// A file that must exist; relative paths resolve against the scene's directory.
+  std::filesystem::path file(const std::string& key, const std::string& doc);
+
+  std::optional<Section> block(const std::string& key, const std::string& doc);
+  Section required_block(const std::string& key, const std::string& doc);
+  /// A list of maps; each entry is a Section named `key[i]`.
+  std::vector<Section> list(const std::string& key, const std::string& doc);
+
+  bool has(const std::string& key) const;
+  /// Every key present must have been read: anything else is an unknown key.
+  void finish() const;
+  /// Throws the one-line error for `key` of this block (or the block itself if key is empty).
+  [[noreturn]] void fail(const std::string& key, const std::string& what) const;
+
+  const std::string& path() const { return path_; }
+  int line() const { return key_line_; }
+  ReadContext& context() const { return *ctx_; }
+
+private:
+  YAML::Node get(const std::string& key, const std::string& type, const std::string& fallback,
+                 const std::string& range, const std::string& doc);
+  std::string key_path(const std::string& key) const;
+  std::string location(const std::string& key) const;
+  [[noreturn]] void missing(const std::string& key) const;
+
+  YAML::Node node_;
+  std::string path_;
+  ReadContext* ctx_;
+  int key_line_;
+  mutable std::vector<std::string> read_;
+};
+
+} // namespace fsi::app

@@ -1,0 +1,88 @@
+#include "fsi_app/overrides.hpp"
+
+#include "fsi/core/error.hpp"
+
+#include <algorithm>
+#include <cctype>
+
+namespace fsi::app {
+
+namespace {
+
+struct Step {
+  std::string key; ///< map key, or empty for a list index
+  long index = -1;
+};
+
+std::vector<Step> parse_path(const std::string& path, const std::string& text) {
+  auto bad = [&](const std::string& what) {
+    return InputError("--set " + text + ": " + path + ": " + what);
+  };
+  std::vector<Step> steps;
+  std::size_t i = 0;
+  while (i < path.size()) {
+    std::size_t j = i;
+    while (j < path.size() && path[j] != '.' && path[j] != '[') ++j;
+    if (j == i) throw bad("empty key in path");
+    steps.push_back({path.substr(i, j - i)});
+    while (j < path.size() && path[j] == '[') {
+      const std::size_t close = path.find(']', j);
+      const std::string digits = close == std::string::npos ? "" : path.substr(j + 1, close - j - 1);
+      if (digits.empty() || digits.size() > 6 ||
+          !std::all_of(digits.begin(), digits.end(), [](char c) { return std::isdigit(c); }))
+        throw bad("malformed list index");
+      steps.push_back({"", std::stol(digits)});
+      j = close + 1;
+    }
+    if (j < path.size() && path[j] != '.') throw bad("malformed path");
+    i = j + 1;
+    if (j + 1 == path.size()) throw bad("path ends with '.'");
+  }
+  return steps;
+}
+
+} // namespace
+
+void apply_override(YAML::Node& root, const std::string& text, ReadContext& ctx) {
+  const std::size_t eq = text.find('=');
+  if (eq == std::string::npos || eq == 0)
+    throw InputError("--set " + text + ": expected key.path=value");
+  const std::string path = text.substr(0, eq);
+  const std::string value_text = text.substr(eq + 1);
+  const std::vector<Step> steps = parse_path(path, text);
+  YAML::Node value;
+  try {
+    value = YAML::Load(value_text);
+  } catch (const YAML::Exception& e) {
+    throw InputError("--set " + text + ": " + path + ": value is not valid YAML: " + e.msg);
+  }
+  YAML::Node node = root;
+  for (std::size_t k = 0; k < steps.size(); ++k) {
+    const Step& s = steps[k];
+    const bool last = k + 1 == steps.size();
+    if (s.index >= 0) {
+      if (!node.IsSequence() || s.index >= static_cast<long>(node.size()))
+        throw InputError("--set " + text + ": " + path + ": list index " +
+                         std::to_string(s.index) + " does not exist");
+      if (last) {
+        node[static_cast<std::size_t>(s.index)] = value;
+        break;
+      }
+      node.reset(node[static_cast<std::size_t>(s.index)]);
+    } else {
+      if (node.IsDefined() && !node.IsNull() && !node.IsMap())
+        throw InputError("--set " + text + ": " + path + ": '" + s.key + "' is inside a value");
+      if (last) {
+        node[s.key] = value;
+        break;
+      }
+      if (!node[s.key].IsDefined() || node[s.key].IsNull())
+        node[s.key] = YAML::Node(YAML::NodeType::Map);
+      YAML::Node child = node[s.key];
+      node.reset(child);
+    }
+  }
+  ctx.overrides[path] = value_text;
+}
+
+} // namespace fsi::app

@@ -1,0 +1,45 @@
+#include "fsi_app/progress.hpp"
+
+#include <cstdio>
+#include <string>
+
+namespace fsi::app {
+
+namespace {
+double seconds(std::chrono::steady_clock::duration d) {
+  return std::chrono::duration<double>(d).count();
+}
+} // namespace
+
+Progress::Progress(double end_time, bool terminal, std::ostream& out)
+    : end_(end_time), terminal_(terminal), out_(out), start_(std::chrono::steady_clock::now()),
+      last_(start_) {}
+
+std::string Progress::line(double time, long steps) const {
+  const double wall = seconds(std::chrono::steady_clock::now() - start_);
+  const double fraction = end_ > 0 ? time / end_ : 1.0;
+  const double rate = wall > 0 ? static_cast<double>(steps) / wall : 0.0;
+  const double eta = fraction > 0 ? wall * (1.0 - fraction) / fraction : 0.0;
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "t = %.5g s  %5.1f %%  %.0f steps/s  ETA %dm%02ds", time,
+                100.0 * fraction, rate, static_cast<int>(eta) / 60, static_cast<int>(eta) % 60);
+  return buf;
+}
+
+void Progress::update(double time, long steps) {
+  const auto now = std::chrono::steady_clock::now();
+  const double since = seconds(now - last_);
+  if (since < (terminal_ ? 0.2 : 5.0)) return;
+  last_ = now;
+  if (terminal_)
+    out_ << '\r' << line(time, steps) << "   " << std::flush;
+  else
+    out_ << "progress: " << line(time, steps) << '\n' << std::flush;
+}
+
+void Progress::finish(double time, long steps) {
+  if (terminal_) out_ << '\r';
+  out_ << "done: " << line(time, steps) << '\n' << std::flush;
+}
+
+} // namespace fsi::app

@@ -1,0 +1,126 @@
+#include "fsi_app/run.hpp"
+
+#include "fsi/core/error.hpp"
+#include "fsi/core/parallel.hpp"
+#include "fsi_app/output/probes_csv.hpp"
+#include "fsi_app/progress.hpp"
+#include "fsi_app/version.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <ctime>
+#include <fstream>
+
+namespace fsi::app {
+
+namespace {
+
+std::string iso_time(std::chrono::system_clock::time_point t) {
+  const std::time_t tt = std::chrono::system_clock::to_time_t(t);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&tt));
+  return buf;
+}
+
+std::string json_strings(const std::vector<std::string>& items) {
+  std::string out = "[";
+  for (std::size_t i = 0; i < items.size(); ++i)
+    out += (i ? ", " : "") + JsonObject::quote(items[i]);
+  return out + "]";
+}
+
+class Recorder {
+public:
+  Recorder(const Scene& scene, const std::vector<std::unique_ptr<Model>>& models,
+           const std::filesystem::path& out)
+      : scene_(scene), models_(models), fields_(out / "fields.h5", out / "fields.xmf"),
+        probes_(out / "probes.csv", probe_names(scene)) {
+    for (const auto& m : models_) m->declare(fields_);
+  }
+
+  void frame(double time) {
+    fields_.begin_frame(time);
+    for (const auto& m : models_) m->write_frame(fields_, scene_.output.fields);
+    fields_.end_frame();
+    std::vector<double> values;
+    for (const auto& p : scene_.output.probes) values.push_back(probe(p));
+    probes_.row(time, values);
+  }
+
+  int frames() const { return fields_.frames(); }
+
+private:
+  static std::vector<std::string> probe_names(const Scene& scene) {
+    std::vector<std::string> names;
+    for (const auto& p : scene.output.probes) names.push_back(p.name);
+    return names;
+  }
+  double probe(const ProbeSpec& p) const {
+    for (const auto& m : models_)
+      if (auto v = m->probe(p)) return *v;
+    throw InputError(scene_.path.string() + ":" + std::to_string(p.line) + ": output.probes: '" +
+                     p.name + "' is answered by no part of the scene");
+  }
+
+  const Scene& scene_;
+  const std::vector<std::unique_ptr<Model>>& models_;
+  FieldsFile fields_;
+  ProbesCsv probes_;
+};
+
+} // namespace
+
+void run_scene(const Scene& scene, std::vector<std::unique_ptr<Model>>& models,
+               const RunOptions& options) {
+  std::filesystem::create_directories(options.out);
+  std::ostream& log = *options.log;
+  const auto start = std::chrono::system_clock::now();
+  const auto wall_start = std::chrono::steady_clock::now();
+  const double dt = scene.time.dt.value();
+  const long total_steps = static_cast<long>(std::ceil(scene.time.end / dt - 1e-9));
+  const long steps_per_frame = std::max(1L, std::lround(scene.output.interval / dt));
+
+  long step = 0;
+  std::string status = "completed", message;
+  int frames = 0;
+  try {
+    Recorder recorder(scene, models, options.out);
+    Progress progress(scene.time.end, options.terminal, log);
+    recorder.frame(0.0);
+    frames = recorder.frames();
+    while (step < total_steps) {
+      const double time = static_cast<double>(step) * dt;
+      for (auto& m : models) m->advance(time, dt);
+      ++step;
+      if (step % steps_per_frame == 0 || step == total_steps)
+        recorder.frame(static_cast<double>(step) * dt), frames = recorder.frames();
+      progress.update(static_cast<double>(step) * dt, step);
+    }
+    progress.finish(static_cast<double>(step) * dt, step);
+  } catch (const RunError& e) {
+    status = "failed";
+    message = e.what();
+  }
+
+  JsonObject run;
+  run.add("scene", scene.path.string())
+      .add_raw("overrides", json_strings(scene.overrides))
+      .add("version", version())
+      .add("git_revision", git_revision())
+      .add("start", iso_time(start))
+      .add("end", iso_time(std::chrono::system_clock::now()))
+      .add("wall_seconds",
+           std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count())
+      .add("threads", num_threads())
+      .add("status", status)
+      .add("message", message)
+      .add("steps", static_cast<long long>(step))
+      .add("simulated_time", static_cast<double>(step) * dt)
+      .add("dt", dt)
+      .add("frames", frames);
+  for (const auto& m : models) m->report(run);
+  std::ofstream(options.out / "run.json") << run.str() << '\n';
+  if (status != "completed") throw RunError(message);
+}
+
+} // namespace fsi::app

@@ -1,0 +1,391 @@
+#include "fsi_app/scene.hpp"
+
+#include "fsi/core/error.hpp"
+#include "fsi_app/overrides.hpp"
+#include "fsi_app/scene_reader.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <sstream>
+
+namespace fsi::app {
+
+namespace {
+
+// Every scene key is declared in the functions below, once.
+
+TimeSpec read_time(Section s) {
+  TimeSpec t;
+  t.end = s.real("end", Range::positive(), "simulated end time, s");
+  t.dt = s.optional_real("dt", Range::positive(), "fixed time step, s (give dt or courant)");
+  t.courant = s.optional_real("courant", Range::left_open(0.0, 1.0),
+                              "adaptive step from this Courant number on c and the fastest "
+                              "particle, with the viscous limit (fluid scenes)");
+  if (!s.context().documenting()) {
+    if (t.dt && t.courant) s.fail("courant", "give either dt or courant, not both");
+    if (!t.dt && !t.courant) s.fail("", "one of dt or courant is required");
+    if (t.dt && *t.dt > t.end) s.fail("dt", "is larger than time.end");
+  }
+  s.finish();
+  return t;
+}
+
+const std::vector<std::string> kFieldNames = {"velocity", "pressure", "pnd", "free_surface",
+                                              "displacement", "von_mises"};
+const std::vector<std::string> kProbeQuantities = {"displacement_x", "displacement_y",
+                                                   "surge_front", "pressure"};
+
+ProbeSpec read_probe(Section s) {
+  ProbeSpec p;
+  p.line = s.line();
+  p.name = s.text("name", "column name in probes.csv (letters, digits, _)");
+  p.quantity = s.choice("quantity", kProbeQuantities, "",
+                        "what is sampled: a node's displacement, the surge front (largest "
+                        "particle x), or the pressure at a point");
+  p.structure = s.text("structure", "", "structure name, for displacement probes");
+  p.node = s.optional_integer("node", Range::non_negative(), "FE node index (or give point)");
+  p.point = s.optional_vec2("point", "reference position of the FE node, or the fluid point, m");
+  if (!s.context().documenting()) {
+    const bool ok_name = !p.name.empty() && std::all_of(p.name.begin(), p.name.end(), [](char c) {
+      return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+    });
+    if (!ok_name) s.fail("name", "'" + p.name + "' is not a valid column name");
+    const bool on_structure = p.quantity.rfind("displacement", 0) == 0;
+    if (on_structure && p.structure.empty()) s.fail("structure", "required key missing");
+    if (on_structure && !p.node && !p.point) s.fail("", "give node or point");
+    if (p.quantity == "pressure" && !p.point) s.fail("point", "required key missing");
+  }
+  s.finish();
+  return p;
+}
+
+OutputSpec read_output(Section s, double end_time, std::vector<Section>& probe_sections) {
+  OutputSpec o;
+  o.interval = s.real("interval", Range::positive(), "simulated time between frames, s");
+  o.fields = s.names("fields", kFieldNames,
+                     "fields written to fields.h5 (particle positions and mesh geometry always)");
+  for (const auto& f : o.fields)
+    if (std::find(kFieldNames.begin(), kFieldNames.end(), f) == kFieldNames.end())
+      s.fail("fields", "unknown field '" + f + "' (known: velocity, pressure, pnd, free_surface, "
+                       "displacement, von_mises)");
+  std::set<std::string> names;
+  probe_sections = s.list("probes", "sampled every frame into probes.csv");
+  for (auto& probe : probe_sections) {
+    o.probes.push_back(read_probe(probe));
+    if (!s.context().documenting() && !names.insert(o.probes.back().name).second)
+      probe.fail("name", "duplicate probe name '" + o.probes.back().name + "'");
+  }
+  if (!s.context().documenting() && o.interval > end_time)
+    s.fail("interval", "is larger than time.end");
+  s.finish();
+  return o;
+}
+
+MotionSpec read_motion(Section s) {
+  MotionSpec m;
+  const bool doc = s.context().documenting();
+  m.kind = s.choice("kind", {"sinusoid", "table"}, "",
+                    "sinusoid: amplitude sin(2 pi t / period + phase); table: CSV time,value");
+  m.dof = s.choice("dof", {"rotation", "x", "y"}, "rotation",
+                   "rotation about pivot, or translation along x or y");
+  m.pivot = s.vec2("pivot", Vec2::Zero(), "rotation centre in the scene frame, m");
+  if (doc || m.kind == "sinusoid") {
+    m.amplitude = s.real("amplitude", Range::any(), "rad for rotation, m for translation");
+    m.period = s.real("period", Range::positive(), "s");
+    m.phase = s.real("phase", 0.0, Range::any(), "rad");
+  }
+  if (doc || m.kind == "table") {
+    m.table = s.file("table", "CSV with header; columns time (s) and value");
+    const std::string unit = s.choice("unit", {"deg", "rad", "m"}, "rad", "unit of the values");
+    m.table_scale = unit == "deg" ? M_PI / 180.0 : 1.0;
+    if (!doc && (unit == "m") != (m.dof != "rotation"))
+      s.fail("unit", "'" + unit + "' does not match dof '" + m.dof + "'");
+  }
+  s.finish();
+  return m;
+}
+
+WallSpec read_wall(Section s) {
+  WallSpec w;
+  w.name = s.text("name", "wall name, for messages");
+  w.polyline = s.points("polyline", 2,
+                        "vertices; the fluid lies on the left of each directed segment");
+  w.closed = s.boolean("closed", false, "join the last vertex to the first");
+  if (auto m = s.block("motion", "prescribed rigid motion; absent: the wall is static"))
+    w.motion = read_motion(*m);
+  if (!s.context().documenting())
+    for (std::size_t i = 0; i + 1 < w.polyline.size(); ++i)
+      if ((w.polyline[i + 1] - w.polyline[i]).norm() == 0.0)
+        s.fail("polyline", "points " + std::to_string(i) + " and " + std::to_string(i + 1) +
+                               " coincide (zero-length segment)");
+  s.finish();
+  return w;
+}
+
+std::vector<Vec2> read_region(Section s) {
+  const bool doc = s.context().documenting();
+  std::vector<Vec2> polygon;
+  if (doc || s.has("polygon")) polygon = s.points("polygon", 3, "closed polygon to fill, m");
+  if (doc || !s.has("polygon")) {
+    const Vec2 lo = s.vec2("min", "lower-left corner of a rectangle to fill, m");
+    const Vec2 hi = s.vec2("max", "upper-right corner, m");
+    if (!doc && (hi.x() <= lo.x() || hi.y() <= lo.y()))
+      s.fail("max", "must lie above and right of min");
+    if (!doc) polygon = {lo, {hi.x(), lo.y()}, hi, {lo.x(), hi.y()}};
+  }
+  s.finish();
+  return polygon;
+}
+
+FluidSpec read_fluid(Section s) {
+  FluidSpec f;
+  const bool doc = s.context().documenting();
+  f.density = s.real("density", Range::positive(), "rho, kg/m^3");
+  f.viscosity = s.real("viscosity", 0.0, Range::non_negative(),
+                       "kinematic viscosity nu, m^2/s; 0 skips the viscous loop");
+  f.l0 = s.real("l0", Range::positive(), "initial particle spacing, m");
+  f.re_over_l0 = s.real("re_over_l0", 3.1, Range::closed(2.0, 5.0), "effective radius r_e / l0");
+  f.sound_speed = s.real("sound_speed", Range::positive(), "c of eq. 15, m/s");
+  f.beta = s.real("beta", 1.0, Range::left_open(0.0, 1.5), "free-surface threshold, eq. 17");
+  f.alpha_rep = s.real("alpha_rep", 0.0, Range::non_negative(),
+                       "repulsive coefficient of eq. 27, N/m^3");
+  f.wall_condition = s.choice("wall_condition", {"no_slip", "slip"}, "no_slip",
+                              "viscous wall condition (eq. 24)");
+  f.damping_time = s.real("damping_time", 0.0, Range::non_negative(),
+                          "initial phase over which velocities are damped to rest, s");
+  for (auto& region : s.list("regions", "areas filled with particles at spacing l0"))
+    f.regions.push_back(read_region(region));
+  if (!doc && f.regions.empty()) s.fail("regions", "at least one region is required");
+  if (auto d = s.block("domain", "particles leaving this box are removed and counted")) {
+    f.domain_min = d->vec2("min", "lower-left corner, m");
+    f.domain_max = d->vec2("max", "upper-right corner, m");
+    if (!doc && (f.domain_max.x() <= f.domain_min.x() || f.domain_max.y() <= f.domain_min.y()))
+      d->fail("max", "must lie above and right of min");
+    d->finish();
+  }
+  if (!doc) {
+    for (std::size_t i = 0; i < f.regions.size(); ++i) {
+      Vec2 lo = f.regions[i][0], hi = f.regions[i][0];
+      for (const auto& p : f.regions[i]) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+      const Vec2 size = hi - lo;
+      if (f.l0 > size.minCoeff()) {
+        std::ostringstream msg;
+        msg << "particle spacing " << f.l0 << " m is larger than fluid region " << i << " ("
+            << size.x() << " x " << size.y() << " m)";
+        s.fail("l0", msg.str());
+      }
+    }
+  }
+  s.finish();
+  return f;
+}
+
+MeshSpec read_mesh(Section s) {
+  MeshSpec m;
+  const bool doc = s.context().documenting();
+  m.kind = s.choice("kind", {"rectangle", "gmsh"}, "",
+                    "built-in structured T6 rectangle, or a Gmsh 4.1 file of 6-node triangles");
+  if (doc || m.kind == "rectangle") {
+    m.origin = s.vec2("origin", Vec2::Zero(), "lower-left corner, m");
+    m.width = s.real("width", Range::positive(), "m");
+    m.height = s.real("height", Range::positive(), "m");
+    m.elements_x = s.integer("elements_x", Range::closed(1, 10000), "element columns");
+    m.elements_y = s.integer("elements_y", Range::closed(1, 10000), "element rows");
+  }
+  if (doc || m.kind == "gmsh") m.file = s.file("file", "Gmsh .msh (format 4.1 ASCII)");
+  s.finish();
+  return m;
+}
+
+StructureSpec read_structure(Section s) {
+  StructureSpec st;
+  st.name = s.text("name", "structure name (probes refer to it)");
+  st.mesh = read_mesh(s.required_block("mesh", "the T6 mesh"));
+  auto mat = s.required_block("material", "St. Venant-Kirchhoff material");
+  st.youngs_modulus = mat.real("youngs_modulus", Range::positive(), "E, Pa");
+  st.poisson_ratio = mat.real("poisson_ratio", Range::open(-1.0, 0.5), "nu");
+  st.density = mat.real("density", Range::positive(), "rho_s, kg/m^3");
+  st.plane = mat.choice("plane", {"strain", "stress"}, "strain", "2D idealisation");
+  mat.finish();
+  st.clamped = s.names("clamped", {}, "boundary tags whose nodes are fixed");
+  st.interface = s.names("interface", {}, "boundary tags wetted by the fluid");
+  if (auto nb = s.block("newmark", "Newmark-beta coefficients (eqs. 40-41)")) {
+    st.newmark_beta = nb->real("beta", 0.3025, Range::left_open(0.0, 0.5), "beta_NB");
+    st.newmark_gamma = nb->real("gamma", 0.6, Range::closed(0.5, 1.0), "gamma_NB");
+    if (!s.context().documenting() && st.newmark_beta < 0.25 * std::pow(st.newmark_gamma + 0.5, 2) - 1e-12)
+      nb->fail("beta", "must be >= (gamma + 1/2)^2 / 4 for unconditional stability");
+    nb->finish();
+  }
+  if (auto nr = s.block("newton", "Newton-Raphson controls")) {
+    st.newton_tolerance = nr->real("tolerance", 1e-8, Range::open(0.0, 1.0),
+                                   "residual norm relative to the load norm");
+    st.increment_tolerance = nr->real("increment_tolerance", 1e-10, Range::open(0.0, 1.0),
+                                      "increment norm relative to the displacement norm");
+    st.newton_max_iterations = nr->integer("max_iterations", 20, Range::closed(1, 1000),
+                                           "iterations before the run stops");
+    nr->finish();
+  }
+  st.linear_solver = s.choice("linear_solver", {"cholmod", "umfpack", "ldlt", "cg"}, "cholmod",
+                              "sparse direct (CHOLMOD, UMFPACK, Eigen LDLT) or preconditioned CG");
+  for (auto& load : s.list("loads", "constant nodal forces (structure-only scenes)")) {
+    PointLoadSpec p;
+    p.boundary = load.text("boundary", "boundary tag the force is spread over");
+    p.force = load.vec2("force", "total force per unit thickness, N/m, applied as a uniform "
+                                 "traction over the tagged edges (consistent nodal loads)");
+    load.finish();
+    st.loads.push_back(p);
+  }
+  s.finish();
+  return st;
+}
+
+CouplingSpec read_coupling(Section s) {
+  CouplingSpec c;
+  c.scheme = s.choice("scheme", {"css", "bgs", "one_way"}, "css",
+                      "serial staggered, block Gauss-Seidel, or one-way");
+  c.predictor = s.choice("predictor", {"none", "second_order"}, "none",
+                         "interface predictor for CSS (eqs. 63-65)");
+  c.acceleration = s.choice("acceleration", {"none", "constant", "aitken", "iqn-ils"}, "aitken",
+                            "BGS relaxation");
+  c.tolerance = s.real("tolerance", 1e-4, Range::open(0.0, 1.0), "epsilon of eq. 69");
+  c.max_iterations = s.integer("max_iterations", 200, Range::closed(1, 100000),
+                               "BGS iterations per step");
+  c.omega = s.real("omega", 0.5, Range::left_open(0.0, 1.0),
+                   "constant relaxation factor, or Aitken's first");
+  c.reuse = s.integer("reuse", 8, Range::closed(0, 100), "IQN-ILS: past steps kept");
+  c.stop_on_unconverged = s.boolean("stop_on_unconverged", false,
+                                    "stop the run at the first unconverged BGS step");
+  c.substeps = s.integer("substeps", 1, Range::closed(1, 10000),
+                         "fluid steps per structure step");
+  s.finish();
+  return c;
+}
+
+// A structured T6 rectangle has (2 nx + 1)(2 ny + 1) nodes on a regular grid.
+void check_rectangle_probe(const MeshSpec& m, const ProbeSpec& p, const Section& s) {
+  const long nodes = (2L * m.elements_x + 1) * (2L * m.elements_y + 1);
+  if (p.node && *p.node >= nodes)
+    s.fail("node", "node " + std::to_string(*p.node) + " does not exist (the mesh has " +
+                       std::to_string(nodes) + " nodes)");
+  if (p.point) {
+    const Vec2 h(m.width / (2 * m.elements_x), m.height / (2 * m.elements_y));
+    const Vec2 grid = (*p.point - m.origin).cwiseQuotient(h);
+    const Vec2 snapped = grid.array().round();
+    const bool inside = snapped.x() >= 0 && snapped.x() <= 2 * m.elements_x && snapped.y() >= 0 &&
+                        snapped.y() <= 2 * m.elements_y;
+    if (!inside || (grid - snapped).cwiseAbs().maxCoeff() > 1e-6) {
+      std::ostringstream msg;
+      msg << "no node of structure '" << p.structure << "' at (" << p.point->x() << ", "
+          << p.point->y() << ")";
+      s.fail("point", msg.str());
+    }
+  }
+}
+
+// Checks that need the whole scene: names resolve, rectangles have the tags asked for.
+void cross_check(Section& top, const Scene& scene, std::vector<Section>& structure_sections,
+                 std::vector<Section>& probe_sections) {
+  std::set<std::string> names;
+  for (std::size_t i = 0; i < scene.structures.size(); ++i) {
+    const auto& st = scene.structures[i];
+    if (!names.insert(st.name).second)
+      structure_sections[i].fail("name", "duplicate structure name '" + st.name + "'");
+    if (st.mesh.kind == "rectangle") {
+      const std::set<std::string> tags = {"left", "right", "bottom", "top"};
+      auto check = [&](const std::vector<std::string>& list, const std::string& key) {
+        for (const auto& t : list)
+          if (!tags.count(t))
+            structure_sections[i].fail(key, "unknown boundary tag '" + t +
+                                                "' (a rectangle has left, right, bottom, top)");
+      };
+      check(st.clamped, "clamped");
+      check(st.interface, "interface");
+      for (const auto& l : st.loads)
+        if (!tags.count(l.boundary))
+          structure_sections[i].fail("loads", "unknown boundary tag '" + l.boundary + "'");
+    }
+  }
+  for (std::size_t i = 0; i < scene.output.probes.size(); ++i) {
+    const auto& p = scene.output.probes[i];
+    if (p.quantity.rfind("displacement", 0) == 0) {
+      auto it = std::find_if(scene.structures.begin(), scene.structures.end(),
+                             [&](const StructureSpec& st) { return st.name == p.structure; });
+      if (it == scene.structures.end())
+        probe_sections[i].fail("structure", "no structure named '" + p.structure + "'");
+      if (it->mesh.kind == "rectangle") check_rectangle_probe(it->mesh, p, probe_sections[i]);
+    } else if (!scene.fluid) {
+      probe_sections[i].fail("quantity", "'" + p.quantity + "' needs a fluid block");
+    }
+  }
+  if (scene.coupling && (!scene.fluid || scene.structures.empty()))
+    top.fail("coupling", "coupling needs a fluid block and at least one structure");
+  if (!scene.fluid && scene.structures.empty())
+    top.fail("", "the scene has neither a fluid nor a structure: nothing to simulate");
+  if (scene.time.courant && !scene.fluid)
+    top.fail("time", "courant needs a fluid block (give dt for structure-only scenes)");
+}
+
+Scene read_scene(Section top) {
+  Scene scene;
+  ReadContext& ctx = top.context();
+  scene.name = top.text("name", "", "scene name, for logs (default: the file name)");
+  scene.gravity = top.vec2("gravity", Vec2::Zero(), "gravitational acceleration, m/s^2");
+  scene.time = read_time(top.required_block("time", "time span and step"));
+  std::vector<Section> probe_sections;
+  scene.output = read_output(top.required_block("output", "what is written, and how often"),
+                             scene.time.end, probe_sections);
+  if (auto f = top.block("fluid", "EMPS fluid; absent: no fluid"))
+    scene.fluid = read_fluid(*f);
+  for (auto& w : top.list("walls", "polygon walls (ERP), static or with prescribed motion"))
+    scene.walls.push_back(read_wall(w));
+  auto structure_sections = top.list("structures", "FE structures (T6, St. Venant-Kirchhoff)");
+  for (auto& st : structure_sections) scene.structures.push_back(read_structure(st));
+  if (auto c = top.block("coupling", "partitioned coupling; needs fluid and structures"))
+    scene.coupling = read_coupling(*c);
+  top.finish();
+  if (!ctx.documenting()) cross_check(top, scene, structure_sections, probe_sections);
+  return scene;
+}
+
+} // namespace
+
+Scene load_scene(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
+  ReadContext ctx;
+  ctx.file = file.string();
+  ctx.dir = file.parent_path();
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(file.string());
+  } catch (const YAML::BadFile&) {
+    throw InputError(file.string() + ": cannot open scene file");
+  } catch (const YAML::ParserException& e) {
+    throw InputError(file.string() + ":" + std::to_string(e.mark.line + 1) + ": yaml: " + e.msg);
+  }
+  if (!root.IsMap()) throw InputError(file.string() + ":1: scene: expected a block of keys");
+  for (const auto& text : overrides) apply_override(root, text, ctx);
+  Scene scene = read_scene(Section(root, "", ctx));
+  scene.path = file;
+  scene.overrides = overrides;
+  if (scene.name.empty()) scene.name = file.stem().string();
+  return scene;
+}
+
+std::string scene_reference() {
+  ReadContext ctx;
+  ctx.collector = std::make_unique<std::vector<KeyDoc>>();
+  read_scene(Section(YAML::Node(), "", ctx));
+  std::ostringstream out;
+  out << "# Scene file reference\n\n"
+      << "Generated by `fsi reference` from the declarations the scene reader uses; do not edit.\n"
+      << "SI units throughout. Unknown keys, wrong types and out-of-range values are errors\n"
+      << "(`FILE:LINE: KEY: what is wrong`, exit status 2). Any key can be overridden with\n"
+      << "`--set key.path=value` (list entries as `structures[0].material.density`).\n\n"
+      << "| key | type | default | allowed | meaning |\n|---|---|---|---|---|\n";
+  for (const auto& k : *ctx.collector)
+    out << "| `" << k.path << "` | " << k.type << " | " << k.fallback << " | " << k.range << " | "
+        << k.doc << " |\n";
+  return out.str();
+}
+
+} // namespace fsi::app

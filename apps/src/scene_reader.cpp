@@ -1,0 +1,358 @@
+#include "fsi_app/scene_reader.hpp"
+
+#include "fsi/core/error.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace fsi::app {
+
+namespace {
+
+std::string format_number(double v) {
+  std::ostringstream out;
+  out << v;
+  return out.str();
+}
+
+std::string scalar_text(const YAML::Node& node) {
+  if (node.IsScalar()) return node.Scalar();
+  if (node.IsSequence()) return "a list";
+  if (node.IsMap()) return "a block";
+  return "nothing";
+}
+
+bool parse_real(const YAML::Node& node, double& out) {
+  if (!node.IsScalar()) return false;
+  const std::string& s = node.Scalar();
+  char* end = nullptr;
+  out = std::strtod(s.c_str(), &end);
+  return !s.empty() && end == s.c_str() + s.size() && std::isfinite(out);
+}
+
+std::string join(const std::vector<std::string>& items, const std::string& sep) {
+  std::string out;
+  for (std::size_t i = 0; i < items.size(); ++i) out += (i ? sep : "") + items[i];
+  return out;
+}
+
+} // namespace
+
+bool Range::contains(double v) const {
+  const bool above = lo_open ? v > lo : v >= lo;
+  const bool below = hi_open ? v < hi : v <= hi;
+  return above && below;
+}
+
+std::string Range::describe() const {
+  const bool has_lo = std::isfinite(lo);
+  const bool has_hi = std::isfinite(hi);
+  if (!has_lo && !has_hi) return "any";
+  if (has_lo && !has_hi) return (lo_open ? "> " : ">= ") + format_number(lo);
+  if (!has_lo) return (hi_open ? "< " : "<= ") + format_number(hi);
+  return (lo_open ? "in (" : "in [") + format_number(lo) + ", " + format_number(hi) +
+         (hi_open ? ")" : "]");
+}
+
+Section::Section(YAML::Node node, std::string path, ReadContext& ctx, int key_line)
+    : node_(std::move(node)), path_(std::move(path)), ctx_(&ctx), key_line_(key_line) {
+  if (!ctx.documenting() && node_.IsDefined() && !node_.IsNull() && !node_.IsMap())
+    fail("", "expected a block of keys, got " + scalar_text(node_));
+}
+
+std::string Section::key_path(const std::string& key) const {
+  if (key.empty()) return path_;
+  return path_.empty() ? key : path_ + "." + key;
+}
+
+std::string Section::location(const std::string& key) const {
+  const std::string full = key_path(key);
+  for (const auto& [path, text] : ctx_->overrides)
+    if (full == path || full.rfind(path + ".", 0) == 0 || full.rfind(path + "[", 0) == 0)
+      return ctx_->file + ": --set " + path + "=" + text;
+  int line = key_line_ > 0 ? key_line_ : 1;
+  if (!key.empty() && node_.IsMap())
+    for (auto it = node_.begin(); it != node_.end(); ++it)
+      if (it->first.Scalar() == key) line = it->first.Mark().line + 1;
+  return ctx_->file + ":" + std::to_string(line);
+}
+
+void Section::fail(const std::string& key, const std::string& what) const {
+  const std::string name = key_path(key);
+  throw InputError(location(key) + ": " + (name.empty() ? "scene" : name) + ": " + what);
+}
+
+namespace {
+int key_line_of(const YAML::Node& map, const std::string& key) {
+  if (map.IsMap())
+    for (auto it = map.begin(); it != map.end(); ++it)
+      if (it->first.Scalar() == key) return it->first.Mark().line + 1;
+  return 0;
+}
+
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
+      diagonal = up;
+    }
+  }
+  return row[b.size()];
+}
+} // namespace
+
+void Section::missing(const std::string& key) const {
+  std::string hint;
+  if (node_.IsMap())
+    for (auto it = node_.begin(); it != node_.end(); ++it) {
+      const std::string present = it->first.Scalar();
+      if (present != key && edit_distance(present, key) <= 2)
+        hint = " (is '" + present + "' on line " + std::to_string(it->first.Mark().line + 1) +
+               " a misspelling?)";
+    }
+  fail(key, "required key missing" + hint);
+}
+
+bool Section::has(const std::string& key) const {
+  return node_.IsMap() && node_[key].IsDefined() && !node_[key].IsNull();
+}
+
+YAML::Node Section::get(const std::string& key, const std::string& type,
+                        const std::string& fallback, const std::string& range,
+                        const std::string& doc) {
+  read_.push_back(key);
+  if (ctx_->documenting()) {
+    const std::string list_path = path_.empty() ? key : path_ + "." + key;
+    ctx_->collector->push_back({list_path, type, fallback, range, doc});
+    return YAML::Node(YAML::NodeType::Undefined);
+  }
+  if (!has(key)) return YAML::Node(YAML::NodeType::Undefined);
+  return node_[key];
+}
+
+double Section::real(const std::string& key, Range range, const std::string& doc) {
+  const auto value = optional_real(key, range, doc);
+  if (ctx_->documenting()) {
+    ctx_->collector->back().fallback = "required";
+    return std::isfinite(range.lo) ? range.lo : 0.0;
+  }
+  if (!value) missing(key);
+  return *value;
+}
+
+double Section::real(const std::string& key, double fallback, Range range,
+                     const std::string& doc) {
+  const auto value = optional_real(key, range, doc);
+  if (ctx_->documenting()) ctx_->collector->back().fallback = format_number(fallback);
+  return value.value_or(fallback);
+}
+
+std::optional<double> Section::optional_real(const std::string& key, Range range,
+                                             const std::string& doc) {
+  const YAML::Node node = get(key, "real", "optional", range.describe(), doc);
+  if (!node.IsDefined()) return std::nullopt;
+  double v = 0.0;
+  if (!parse_real(node, v)) fail(key, "expected a real number, got '" + scalar_text(node) + "'");
+  if (!range.contains(v))
+    fail(key, "must be " + range.describe() + ", got " + format_number(v));
+  return v;
+}
+
+std::optional<int> Section::optional_integer(const std::string& key, Range range,
+                                            const std::string& doc) {
+  const YAML::Node node = get(key, "integer", "optional", range.describe(), doc);
+  if (!node.IsDefined()) return std::nullopt;
+  double v = 0.0;
+  if (!parse_real(node, v) || v != std::floor(v) || std::abs(v) > 1e9)
+    fail(key, "expected an integer, got '" + scalar_text(node) + "'");
+  if (!range.contains(v)) fail(key, "must be " + range.describe() + ", got " + format_number(v));
+  return static_cast<int>(v);
+}
+
+int Section::integer(const std::string& key, Range range, const std::string& doc) {
+  const auto value = optional_integer(key, range, doc);
+  if (ctx_->documenting()) {
+    ctx_->collector->back().fallback = "required";
+    return std::isfinite(range.lo) ? static_cast<int>(range.lo) : 0;
+  }
+  if (!value) missing(key);
+  return *value;
+}
+
+int Section::integer(const std::string& key, int fallback, Range range, const std::string& doc) {
+  const auto value = optional_integer(key, range, doc);
+  if (ctx_->documenting()) ctx_->collector->back().fallback = std::to_string(fallback);
+  return value.value_or(fallback);
+}
+
+bool Section::boolean(const std::string& key, bool fallback, const std::string& doc) {
+  const YAML::Node node = get(key, "bool", fallback ? "true" : "false", "", doc);
+  if (!node.IsDefined()) return fallback;
+  const std::string s = node.IsScalar() ? node.Scalar() : "";
+  if (s == "true") return true;
+  if (s == "false") return false;
+  fail(key, "expected true or false, got '" + scalar_text(node) + "'");
+}
+
+std::string Section::text(const std::string& key, const std::string& fallback,
+                          const std::string& doc) {
+  const YAML::Node node = get(key, "string", fallback.empty() ? "\"\"" : fallback, "", doc);
+  if (!node.IsDefined()) return fallback;
+  if (!node.IsScalar()) fail(key, "expected a string, got " + scalar_text(node));
+  return node.Scalar();
+}
+
+std::string Section::text(const std::string& key, const std::string& doc) {
+  const YAML::Node node = get(key, "string", "required", "", doc);
+  if (ctx_->documenting()) return "";
+  if (!node.IsDefined()) missing(key);
+  if (!node.IsScalar() || node.Scalar().empty())
+    fail(key, "expected a non-empty string, got " + scalar_text(node));
+  return node.Scalar();
+}
+
+std::string Section::choice(const std::string& key, const std::vector<std::string>& choices,
+                            const std::string& fallback, const std::string& doc) {
+  const YAML::Node node =
+      get(key, "one of " + join(choices, " \\| "), fallback.empty() ? "required" : fallback, "",
+          doc);
+  if (ctx_->documenting()) return fallback.empty() ? choices.front() : fallback;
+  if (!node.IsDefined()) {
+    if (fallback.empty()) missing(key);
+    return fallback;
+  }
+  const std::string s = node.IsScalar() ? node.Scalar() : "";
+  if (std::find(choices.begin(), choices.end(), s) == choices.end())
+    fail(key, "expected one of " + join(choices, ", ") + ", got '" + scalar_text(node) + "'");
+  return s;
+}
+
+namespace {
+bool parse_vec2(const YAML::Node& node, Vec2& out) {
+  if (!node.IsSequence() || node.size() != 2) return false;
+  return parse_real(node[0], out.x()) && parse_real(node[1], out.y());
+}
+} // namespace
+
+Vec2 Section::vec2(const std::string& key, const std::string& doc) {
+  const YAML::Node node = get(key, "[x, y]", "required", "", doc);
+  if (ctx_->documenting()) return Vec2::Zero();
+  if (!node.IsDefined()) missing(key);
+  Vec2 v;
+  if (!parse_vec2(node, v)) fail(key, "expected a pair of real numbers [x, y]");
+  return v;
+}
+
+Vec2 Section::vec2(const std::string& key, const Vec2& fallback, const std::string& doc) {
+  const YAML::Node node = get(key, "[x, y]",
+                              "[" + format_number(fallback.x()) + ", " +
+                                  format_number(fallback.y()) + "]",
+                              "", doc);
+  if (!node.IsDefined()) return fallback;
+  Vec2 v;
+  if (!parse_vec2(node, v)) fail(key, "expected a pair of real numbers [x, y]");
+  return v;
+}
+
+std::optional<Vec2> Section::optional_vec2(const std::string& key, const std::string& doc) {
+  const YAML::Node node = get(key, "[x, y]", "optional", "", doc);
+  if (!node.IsDefined()) return std::nullopt;
+  Vec2 v;
+  if (!parse_vec2(node, v)) fail(key, "expected a pair of real numbers [x, y]");
+  return v;
+}
+
+std::vector<Vec2> Section::points(const std::string& key, std::size_t min_count,
+                                  const std::string& doc) {
+  const YAML::Node node = get(key, "[[x, y], ...]", "required",
+                              "at least " + std::to_string(min_count) + " points", doc);
+  if (ctx_->documenting()) return {};
+  if (!node.IsDefined()) missing(key);
+  if (!node.IsSequence()) fail(key, "expected a list of points [[x, y], ...]");
+  std::vector<Vec2> pts;
+  for (const auto& item : node) {
+    Vec2 v;
+    if (!parse_vec2(item, v))
+      fail(key, "point " + std::to_string(pts.size()) + " is not a pair of real numbers [x, y]");
+    pts.push_back(v);
+  }
+  if (pts.size() < min_count)
+    fail(key, "needs at least " + std::to_string(min_count) + " points, got " +
+                  std::to_string(pts.size()));
+  return pts;
+}
+
+std::vector<std::string> Section::names(const std::string& key,
+                                        const std::vector<std::string>& fallback,
+                                        const std::string& doc) {
+  const YAML::Node node =
+      get(key, "[name, ...]", fallback.empty() ? "[]" : "[" + join(fallback, ", ") + "]", "", doc);
+  if (!node.IsDefined()) return fallback;
+  std::vector<std::string> out;
+  if (node.IsScalar()) return {node.Scalar()};
+  if (!node.IsSequence()) fail(key, "expected a list of names");
+  for (const auto& item : node) {
+    if (!item.IsScalar()) fail(key, "expected a list of names");
+    out.push_back(item.Scalar());
+  }
+  return out;
+}
+
+std::filesystem::path Section::file(const std::string& key, const std::string& doc) {
+  const YAML::Node node = get(key, "file path", "required", "relative to the scene file", doc);
+  if (ctx_->documenting()) return {};
+  if (!node.IsDefined()) missing(key);
+  if (!node.IsScalar()) fail(key, "expected a file path");
+  std::filesystem::path p = node.Scalar();
+  if (p.is_relative()) p = ctx_->dir / p;
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(p, ec))
+    fail(key, "file not found: " + p.string());
+  return p;
+}
+
+std::optional<Section> Section::block(const std::string& key, const std::string& doc) {
+  const YAML::Node node = get(key, "block", "optional", "", doc);
+  if (ctx_->documenting()) return Section(YAML::Node(), key_path(key), *ctx_);
+  if (!node.IsDefined()) return std::nullopt;
+  return Section(node, key_path(key), *ctx_, key_line_of(node_, key));
+}
+
+Section Section::required_block(const std::string& key, const std::string& doc) {
+  const YAML::Node node = get(key, "block", "required", "", doc);
+  if (!ctx_->documenting() && !node.IsDefined()) missing(key);
+  return Section(node, key_path(key), *ctx_, key_line_of(node_, key));
+}
+
+std::vector<Section> Section::list(const std::string& key, const std::string& doc) {
+  const YAML::Node node = get(key, "list of blocks", "[]", "", doc);
+  if (ctx_->documenting()) return {Section(YAML::Node(), key_path(key) + "[]", *ctx_)};
+  std::vector<Section> out;
+  if (!node.IsDefined()) return out;
+  if (!node.IsSequence()) fail(key, "expected a list of blocks (- key: value)");
+  for (std::size_t i = 0; i < node.size(); ++i)
+    out.emplace_back(node[i], key_path(key) + "[" + std::to_string(i) + "]", *ctx_,
+                     node[i].Mark().line + 1);
+  return out;
+}
+
+void Section::finish() const {
+  if (ctx_->documenting() || !node_.IsMap()) return;
+  for (auto it = node_.begin(); it != node_.end(); ++it) {
+    const std::string key = it->first.Scalar();
+    if (std::find(read_.begin(), read_.end(), key) == read_.end()) {
+      std::vector<std::string> known = read_;
+      std::sort(known.begin(), known.end());
+      known.erase(std::unique(known.begin(), known.end()), known.end());
+      fail(key, "unknown key (known here: " + join(known, ", ") + ")");
+    }
+  }
+}
+
+} // namespace fsi::app

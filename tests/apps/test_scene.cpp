@@ -1,0 +1,119 @@
+// Scene parsing: a valid scene reads back its values; each class of bad input gives one line
+// `FILE:LINE: KEY: what` and exit status 2; overrides apply and fail the same way.
+#include "fsi/core/error.hpp"
+#include "fsi_app/cli.hpp"
+#include "fsi_app/scene.hpp"
+
+#include <catch2/catch.hpp>
+#include <fstream>
+#include <sstream>
+
+using namespace fsi::app;
+
+namespace {
+
+const std::string data = FSI_TEST_DATA "/";
+
+struct CliResult {
+  int status;
+  std::string out, err;
+};
+
+CliResult cli(std::vector<std::string> args) {
+  std::ostringstream out, err;
+  const int status = run_cli(args, out, err, false);
+  return {status, out.str(), err.str()};
+}
+
+} // namespace
+
+TEST_CASE("a valid scene reads back its values", "[apps][scene]") {
+  const Scene s = load_scene(data + "valid_structure.yaml", {});
+  CHECK(s.name == "valid_structure");
+  CHECK(s.gravity.y() == -10.0);
+  CHECK(s.time.end == 0.01);
+  REQUIRE(s.time.dt);
+  CHECK(*s.time.dt == 1e-3);
+  CHECK_FALSE(s.time.courant);
+  REQUIRE(s.structures.size() == 1);
+  const auto& b = s.structures[0];
+  CHECK(b.mesh.kind == "rectangle");
+  CHECK(b.mesh.elements_x == 4);
+  CHECK(b.youngs_modulus == 2e6);
+  CHECK(b.poisson_ratio == 0.25);
+  CHECK(b.plane == "strain");            // default
+  CHECK(b.newmark_beta == 0.25);
+  CHECK(b.newmark_gamma == 0.5);
+  CHECK(b.linear_solver == "cholmod");   // default
+  CHECK(b.clamped == std::vector<std::string>{"left"});
+  REQUIRE(s.output.probes.size() == 1);
+  CHECK(s.output.probes[0].point->y() == 0.1);
+  CHECK(s.output.fields.size() == 6);    // default: all fields
+  CHECK_FALSE(s.fluid);
+}
+
+TEST_CASE("overrides replace entries before validation", "[apps][scene]") {
+  const Scene s = load_scene(data + "valid_structure.yaml",
+                             {"time.end=0.5", "structures[0].material.density=2000",
+                              "structures[0].linear_solver=cg"});
+  CHECK(s.time.end == 0.5);
+  CHECK(s.structures[0].density == 2000.0);
+  CHECK(s.structures[0].linear_solver == "cg");
+}
+
+TEST_CASE("each class of bad input names file, line and key, exit status 2", "[apps][scene]") {
+  struct Case {
+    std::string file, prefix, what;
+  };
+  const std::vector<Case> cases = {
+      {"bad_unknown_key.yaml", ":25: structures[0].material.colour: ", "unknown key"},
+      {"bad_misspelt_key.yaml", ":21: structures[0].material.density: ", "'densty' on line 24"},
+      {"bad_wrong_type.yaml", ":4: time.end: ", "expected a real number, got 'soon'"},
+      {"bad_missing_key.yaml", ":21: structures[0].material.youngs_modulus: ",
+       "required key missing"},
+      {"bad_density.yaml", ":24: structures[0].material.density: ", "must be > 0, got -1200"},
+      {"bad_youngs.yaml", ":22: structures[0].material.youngs_modulus: ", "must be > 0, got 0"},
+      {"bad_dt.yaml", ":5: time.dt: ", "must be > 0, got 0"},
+      {"bad_poisson.yaml", ":23: structures[0].material.poisson_ratio: ",
+       "must be in (-1, 0.5), got 0.5"},
+      {"bad_spacing.yaml", ":9: fluid.l0: ", "larger than fluid region 0"},
+      {"bad_mesh_missing.yaml", ":17: structures[0].mesh.file: ", "file not found"},
+      {"bad_probe_node.yaml", ":12: output.probes[0].node: ", "node 45 does not exist"},
+      {"bad_probe_point.yaml", ":12: output.probes[0].point: ", "no node of structure 'beam'"},
+      {"bad_yaml_syntax.yaml", ":4: yaml: ", "end of sequence"},
+  };
+  for (const auto& c : cases) {
+    INFO(c.file);
+    const auto r = cli({"check", data + c.file});
+    CHECK(r.status == 2);
+    CHECK(r.err.rfind(data + c.file + c.prefix, 0) == 0);
+    CHECK(r.err.find(c.what) != std::string::npos);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    CHECK(r.out.empty());
+  }
+}
+
+TEST_CASE("a bad override fails like a bad scene entry", "[apps][scene]") {
+  const std::string scene = data + "valid_structure.yaml";
+  auto r = cli({"check", scene, "--set", "structures[0].material.density=abc"});
+  CHECK(r.status == 2);
+  CHECK(r.err == scene + ": --set structures[0].material.density=abc: "
+                         "structures[0].material.density: expected a real number, got 'abc'\n");
+  r = cli({"check", scene, "--set", "time.foo=1"});
+  CHECK(r.status == 2);
+  CHECK(r.err.find("time.foo: unknown key") != std::string::npos);
+  r = cli({"check", scene, "--set", "structures[3].name=x"});
+  CHECK(r.status == 2);
+  CHECK(r.err.find("list index 3 does not exist") != std::string::npos);
+  r = cli({"check", scene, "--set", "time.end"});
+  CHECK(r.status == 2);
+  CHECK(r.err.find("expected key.path=value") != std::string::npos);
+}
+
+TEST_CASE("docs/scenes.md is the generated scene reference", "[apps][scene]") {
+  std::ifstream in(FSI_SOURCE_DIR "/docs/scenes.md");
+  REQUIRE(in);
+  std::stringstream text;
+  text << in.rdbuf();
+  CHECK(text.str() == scene_reference());
+}
