@@ -1,0 +1,44 @@
+#pragma once
+// Sparse linear solvers for the Newton systems K du = -R. The pattern is analysed once
+// (analyze), the values refactorised every Newton iteration (factorize), and info() is checked
+// after every call: a failure throws RunError, never returns a wrong answer.
+#include <memory>
+#include <string>
+
+#include "structure_fem/types.hpp"
+
+namespace fsi::fem {
+
+enum class LinearSolverKind {
+  cg_incomplete_cholesky, ///< conjugate gradient, IncompleteCholesky preconditioner (SPD K)
+  cg_jacobi,              ///< conjugate gradient, diagonal preconditioner (SPD K)
+  cholmod,                ///< sparse direct supernodal Cholesky, CHOLMOD (SPD K)
+  umfpack,                ///< sparse direct LU, UMFPACK (any nonsingular K, e.g. indefinite)
+  simplicial_ldlt,        ///< Eigen's sparse LDL^T (symmetric, no pivoting)
+};
+
+struct LinearSolverOptions {
+  LinearSolverKind kind = LinearSolverKind::cholmod;
+  double cg_tolerance = 1e-12; ///< relative residual ||K x - b|| / ||b|| of CG, in (0, 1)
+  int cg_max_iterations = 0;   ///< 0: Eigen's default (2 n); else >= 1
+};
+
+/// Throws InputError naming the field, its value and the allowed range.
+void validate(const LinearSolverOptions& options);
+const char* to_string(LinearSolverKind kind);
+
+class LinearSolver {
+public:
+  virtual ~LinearSolver() = default;
+  /// Symbolic analysis of K's sparsity pattern (ordering); once per mesh.
+  virtual void analyze(const SparseMatrix& K) = 0;
+  /// Numeric factorisation (direct) or preconditioner set-up (CG) for K's current values.
+  virtual void factorize(const SparseMatrix& K) = 0;
+  virtual Vector solve(const Vector& b) = 0;
+  /// Iterations of the last solve (1 for direct solvers).
+  virtual int iterations() const { return 1; }
+};
+
+std::unique_ptr<LinearSolver> make_linear_solver(const LinearSolverOptions& options);
+
+} // namespace fsi::fem

@@ -1,0 +1,159 @@
+#pragma once
+// The T6 solid as the coupler sees it: node arrays in (external forces), node arrays out
+// (displacement, velocity, acceleration, predictor, stress), one Newmark step at a time, and a
+// value-type state for save/restore in iterative coupling. Units SI, per unit thickness (forces
+// in N/m). Node arrays have size 2 * nodes, entry 2K + c for component c of node K.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "structure_fem/assembly.hpp"
+#include "structure_fem/linear_solver.hpp"
+#include "structure_fem/material.hpp"
+#include "structure_fem/mesh.hpp"
+#include "structure_fem/newmark.hpp"
+
+namespace fsi::fem {
+
+/// Newton–Raphson convergence: iteration k has converged when
+///   ||R_k|| <= residual_atol + residual_rtol * R_ref   (R_ref = max(||R_0||, ||f_ext + f_g||))
+/// and, for k >= 1, ||du_k|| <= increment_atol + increment_rtol * ||u||,
+/// with R on the free dofs. A step with ||R_0|| <= residual_atol needs no iteration. It has also
+/// converged when ||du_k|| <= roundoff_rtol * ||u||: the residual is then at its round-off floor
+/// (which grows with the condition number) and no further progress is possible in double.
+struct NewtonOptions {
+  int max_iterations = 25;       ///< >= 1
+  double residual_rtol = 1e-8;   ///< >= 0
+  double residual_atol = 1e-10;  ///< [N/m], >= 0
+  double increment_rtol = 1e-8;  ///< >= 0
+  double increment_atol = 1e-14; ///< [m], >= 0
+  double roundoff_rtol = 1e-13;  ///< >= 0
+};
+
+struct StructureOptions {
+  MaterialOptions material;
+  Vec2 gravity{0.0, 0.0};                  ///< body acceleration g [m/s^2]
+  std::vector<DirichletCondition> clamped; ///< zero-displacement conditions by edge tag
+  NewmarkOptions newmark;
+  NewtonOptions newton;
+  LinearSolverOptions linear_solver;
+};
+
+/// Throws InputError naming the field, its value and the allowed range.
+void validate(const StructureOptions& options);
+
+struct NewtonIterationLog {
+  double residual_norm;  ///< ||R|| on the free dofs before the solve [N/m]
+  double increment_norm; ///< ||du|| of the solve [m]
+  int linear_iterations; ///< CG iterations (1 for direct solvers)
+};
+
+/// What one Newton solve did; the caller logs it.
+struct StepReport {
+  long step = 0;      ///< dynamic: index of the step just taken; static: load step
+  double time = 0.0;  ///< dynamic: t^{n+1}; static: load factor
+  int iterations = 0; ///< Newton iterations (linear solves)
+  double final_residual = 0.0;
+  std::vector<NewtonIterationLog> history;
+};
+
+struct StaticOptions {
+  int load_steps = 1; ///< the load (f_ext + gravity) is applied in equal increments, >= 1
+};
+
+/// The full kinematic state; cheap to copy (iterative coupling re-runs a step from it).
+struct StructureState {
+  Vector u, v, a; ///< node arrays [m], [m/s], [m/s^2]
+  Vector f_ext;   ///< the external forces of the last step (for the work integral)
+  double time = 0.0;
+  long step = 0;
+  double external_work = 0.0; ///< integral f_ext . du (trapezoidal) [J/m]
+};
+
+/// u-hat, v-hat, a-hat at t + dt (eqs. 63-65).
+struct Prediction {
+  Vector u, v, a;
+};
+
+struct Energies {
+  double kinetic = 0.0;       ///< v^T M v / 2
+  double strain = 0.0;        ///< integral W(E)
+  double gravity_work = 0.0;  ///< f_g . u (work done by gravity)
+  double external_work = 0.0; ///< integral f_ext . du
+  /// Conserved for beta = 1/4, gamma = 1/2 (to the Newton tolerance) in the linear regime.
+  double total() const { return kinetic + strain - gravity_work - external_work; }
+};
+
+class Structure {
+public:
+  /// Validates options and mesh, builds the assembly pattern, mass and gravity forces, analyses
+  /// the pattern once, and starts at rest with u = 0 and a^0 from M a^0 = f_g.
+  Structure(Mesh mesh, StructureOptions options);
+  ~Structure();
+  Structure(const Structure&) = delete;
+  Structure& operator=(const Structure&) = delete;
+
+  const Mesh& mesh() const { return mesh_; }
+  std::size_t num_nodes() const { return mesh_.num_nodes(); }
+  const DofMap& dofs() const { return *dofs_; }
+  const StructureOptions& options() const { return options_; }
+
+  /// Nodal external forces for the next step (e.g. projected fluid forces, eq. 58) [N/m], size
+  /// 2 * nodes; they act at t^{n+1}. Entries on clamped dofs are ignored (reactions).
+  void set_external_forces(const Vector& f_ext);
+  const Vector& external_forces() const { return f_ext_next_; }
+
+  /// One Newmark step (eqs. 40-41) t -> t + dt, Newton–Raphson on u^{n+1} starting from the
+  /// predictor (eq. 64). Throws RunError (with step and time) if Newton or the linear solver
+  /// fails or an element inverts; the state is then unchanged.
+  const StepReport& advance(double dt);
+
+  /// Static equilibrium f_int(u) = f_ext + f_g with load stepping from the current u; sets
+  /// v = a = 0. Returns one report per load step. Throws RunError like advance().
+  std::vector<StepReport> solve_static(const StaticOptions& options = {});
+
+  /// Re-solves M a = f_ext + f_g - f_int(u) for the current u (after changing forces at rest).
+  void update_acceleration();
+
+  const Vector& displacement() const { return state_.u; }
+  const Vector& velocity() const { return state_.v; }
+  const Vector& acceleration() const { return state_.a; }
+  /// Current node positions x = X + u (eq. 28 / 60).
+  std::vector<Vec2> positions() const;
+  double time() const { return state_.time; }
+  long step() const { return state_.step; }
+
+  /// Second-order predictor for t + dt (eqs. 63-65).
+  Prediction predict(double dt) const;
+
+  StructureState save() const { return state_; }
+  /// Returns to a saved state; the pending external forces become those of that state, so set
+  /// the new forces after restoring.
+  void restore(const StructureState& state);
+
+  /// Von Mises Cauchy stress per node (element nodal values averaged) [Pa].
+  Vector von_mises() const;
+  Energies energies() const;
+
+  /// The report of the last advance().
+  const StepReport& last_report() const { return report_; }
+
+private:
+  /// Newton on the free dofs; residual(u, R, K) fills R (free) and K (effective tangent).
+  template <class Residual> void newton(Vector& u, Residual&& residual, StepReport& report);
+  void factor_and_solve(const SparseMatrix& K, const Vector& rhs, Vector& x, int& iterations);
+
+  Mesh mesh_;
+  StructureOptions options_;
+  std::unique_ptr<Material> material_;
+  std::unique_ptr<DofMap> dofs_;
+  std::unique_ptr<Assembler> assembler_;
+  std::unique_ptr<LinearSolver> solver_;
+  SparseMatrix M_, K_, K_eff_;
+  Vector f_g_, f_ext_next_, f_int_;
+  StructureState state_;
+  StepReport report_;
+  bool analysed_ = false;
+};
+
+} // namespace fsi::fem

@@ -1,0 +1,230 @@
+#include "structure_fem/structure.hpp"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <sstream>
+
+#include "fsi/core/error.hpp"
+
+namespace fsi::fem {
+
+void validate(const StructureOptions& o) {
+  validate(o.material);
+  validate(o.newmark);
+  validate(o.linear_solver);
+  const auto& n = o.newton;
+  auto non_negative = [](const char* key, double v) {
+    if (!(v >= 0.0) || !std::isfinite(v))
+      throw InputError(std::string("newton: ") + key + " = " + std::to_string(v) +
+                       ": must be >= 0");
+  };
+  if (n.max_iterations < 1)
+    throw InputError("newton: max_iterations = " + std::to_string(n.max_iterations) +
+                     ": must be >= 1");
+  non_negative("residual_rtol", n.residual_rtol);
+  non_negative("residual_atol", n.residual_atol);
+  non_negative("increment_rtol", n.increment_rtol);
+  non_negative("increment_atol", n.increment_atol);
+  non_negative("roundoff_rtol", n.roundoff_rtol);
+  if (!o.gravity.allFinite()) throw InputError("structure: gravity must be finite");
+}
+
+Structure::Structure(Mesh mesh, StructureOptions options)
+    : mesh_(std::move(mesh)), options_(std::move(options)) {
+  validate(options_);
+  validate_mesh(mesh_);
+  material_ = std::make_unique<StVenantKirchhoff>(options_.material);
+  dofs_ = std::make_unique<DofMap>(mesh_, options_.clamped);
+  assembler_ = std::make_unique<Assembler>(mesh_, *material_, *dofs_);
+  solver_ = make_linear_solver(options_.linear_solver);
+  M_ = assembler_->mass();
+  K_ = assembler_->pattern();
+  K_eff_ = assembler_->pattern();
+  f_g_ = assembler_->gravity_forces(options_.gravity);
+  const auto n = static_cast<Eigen::Index>(2 * mesh_.num_nodes());
+  state_.u = state_.v = state_.a = state_.f_ext = Vector::Zero(n);
+  f_ext_next_ = Vector::Zero(n);
+  f_int_ = Vector::Zero(n);
+  if (dofs_->num_free() > 0) {
+    solver_->analyze(M_); // the pattern of M, K and K_eff is the same: analysed once per mesh
+    update_acceleration();
+  }
+}
+
+Structure::~Structure() = default;
+
+void Structure::set_external_forces(const Vector& f_ext) {
+  if (f_ext.size() != static_cast<Eigen::Index>(2 * mesh_.num_nodes()))
+    throw InputError("structure: external forces have size " + std::to_string(f_ext.size()) +
+                     ", need 2 * nodes = " + std::to_string(2 * mesh_.num_nodes()));
+  if (!f_ext.allFinite()) throw RunError("structure: external forces are not finite");
+  f_ext_next_ = f_ext;
+  for (int d = 0; d < dofs_->num_dofs(); ++d)
+    if (dofs_->free_index(d) < 0) f_ext_next_[d] = 0.0;
+}
+
+void Structure::factor_and_solve(const SparseMatrix& K, const Vector& rhs, Vector& x,
+                                 int& iterations) {
+  solver_->factorize(K);
+  x = solver_->solve(rhs);
+  iterations = solver_->iterations();
+}
+
+void Structure::update_acceleration() {
+  assembler_->assemble(state_.u, f_int_, nullptr);
+  const Vector r = dofs_->restrict_to_free(f_ext_next_ + f_g_ - f_int_);
+  Vector a_free;
+  int its = 0;
+  factor_and_solve(M_, r, a_free, its);
+  state_.a.setZero();
+  dofs_->add_free(a_free, state_.a);
+}
+
+template <class Residual>
+void Structure::newton(Vector& u, Residual&& residual, StepReport& report) {
+  const NewtonOptions& o = options_.newton;
+  const double force_scale = dofs_->restrict_to_free(f_ext_next_ + f_g_).norm();
+  report.history.clear();
+  Vector R, du;
+  double R_ref = 0.0;
+  for (int k = 0;; ++k) {
+    residual(u, R);
+    const double r = R.norm();
+    report.final_residual = r;
+    if (!std::isfinite(r)) throw RunError("Newton: the residual is not finite");
+    if (k == 0) R_ref = std::max(r, force_scale);
+    const bool residual_ok = r <= o.residual_atol + o.residual_rtol * R_ref;
+    const bool increment_ok = k == 0 ? r <= o.residual_atol
+                                     : report.history.back().increment_norm <=
+                                           o.increment_atol + o.increment_rtol * u.norm();
+    const bool at_roundoff =
+        k > 0 && report.history.back().increment_norm <= o.roundoff_rtol * u.norm();
+    if ((residual_ok && increment_ok) || at_roundoff) {
+      report.iterations = k;
+      return;
+    }
+    if (k == o.max_iterations) {
+      std::ostringstream s;
+      s << "Newton did not converge in " << o.max_iterations << " iterations (residual " << r
+        << ", tolerance " << o.residual_atol + o.residual_rtol * R_ref << "; last increment "
+        << report.history.back().increment_norm << ", tolerance "
+        << o.increment_atol + o.increment_rtol * u.norm() << ")";
+      throw RunError(s.str());
+    }
+    int its = 0;
+    factor_and_solve(K_eff_, -R, du, its);
+    dofs_->add_free(du, u);
+    report.history.push_back({r, du.norm(), its});
+  }
+}
+
+const StepReport& Structure::advance(double dt) {
+  if (!(dt > 0.0) || !std::isfinite(dt))
+    throw InputError("structure: time step dt = " + std::to_string(dt) + ": must be > 0");
+  const Newmark nm{options_.newmark.beta, options_.newmark.gamma, dt};
+  const StructureState& s = state_;
+  StepReport report;
+  report.step = s.step + 1;
+  report.time = s.time + dt;
+  Vector u = predict(dt).u; // eq. 64 as the first guess
+  const double c0 = nm.mass_factor();
+  auto residual = [&](const Vector& u_next, Vector& R) {
+    assembler_->assemble(u_next, f_int_, &K_);
+    const Vector a_next = nm.acceleration(u_next, s.u, s.v, s.a); // eq. 40
+    R = M_ * dofs_->restrict_to_free(a_next) + dofs_->restrict_to_free(f_int_ - f_ext_next_ - f_g_);
+    const Eigen::Index nnz = K_.nonZeros();
+    Eigen::Map<Eigen::VectorXd>(K_eff_.valuePtr(), nnz) =
+        c0 * Eigen::Map<const Eigen::VectorXd>(M_.valuePtr(), nnz) +
+        Eigen::Map<const Eigen::VectorXd>(K_.valuePtr(), nnz);
+  };
+  try {
+    if (dofs_->num_free() > 0) newton(u, residual, report);
+  } catch (const RunError& e) {
+    std::ostringstream msg;
+    msg << e.what() << " (structure step " << report.step << ", t = " << report.time << ")";
+    throw RunError(msg.str());
+  }
+  const Vector a = nm.acceleration(u, s.u, s.v, s.a);
+  const Vector v = nm.velocity(a, s.v, s.a); // eq. 41
+  state_.external_work += 0.5 * (state_.f_ext + f_ext_next_).dot(u - state_.u);
+  state_.u = u;
+  state_.v = v;
+  state_.a = a;
+  state_.f_ext = f_ext_next_;
+  state_.time = report.time;
+  state_.step = report.step;
+  report_ = std::move(report);
+  return report_;
+}
+
+std::vector<StepReport> Structure::solve_static(const StaticOptions& options) {
+  if (options.load_steps < 1)
+    throw InputError("static: load_steps = " + std::to_string(options.load_steps) +
+                     ": must be >= 1");
+  std::vector<StepReport> reports;
+  Vector u = state_.u;
+  const Vector f_total = f_ext_next_ + f_g_;
+  for (int i = 1; i <= options.load_steps; ++i) {
+    const double lambda = static_cast<double>(i) / options.load_steps;
+    StepReport report;
+    report.step = i;
+    report.time = lambda;
+    auto residual = [&](const Vector& u_k, Vector& R) {
+      assembler_->assemble(u_k, f_int_, &K_);
+      R = dofs_->restrict_to_free(f_int_ - lambda * f_total);
+      K_eff_ = K_;
+    };
+    try {
+      if (dofs_->num_free() > 0) newton(u, residual, report);
+    } catch (const RunError& e) {
+      std::ostringstream msg;
+      msg << e.what() << " (static load step " << i << " of " << options.load_steps
+          << ", load factor " << lambda << ")";
+      throw RunError(msg.str());
+    }
+    reports.push_back(std::move(report));
+  }
+  state_.external_work += 0.5 * (state_.f_ext + f_ext_next_).dot(u - state_.u);
+  state_.u = u;
+  state_.v.setZero();
+  state_.a.setZero();
+  state_.f_ext = f_ext_next_;
+  return reports;
+}
+
+std::vector<Vec2> Structure::positions() const {
+  std::vector<Vec2> x(mesh_.num_nodes());
+  for (std::size_t k = 0; k < x.size(); ++k)
+    x[k] = mesh_.X[k] + state_.u.segment<2>(2 * static_cast<Eigen::Index>(k)); // eq. 60
+  return x;
+}
+
+Prediction Structure::predict(double dt) const {
+  const StructureState& s = state_;
+  return {s.u + dt * s.v + 0.5 * dt * dt * s.a, // eq. 64
+          s.v + dt * s.a,                       // eq. 65
+          s.a};                                 // eq. 63
+}
+
+void Structure::restore(const StructureState& state) {
+  assert(state.u.size() == state_.u.size());
+  state_ = state;
+  f_ext_next_ = state.f_ext;
+}
+
+Vector Structure::von_mises() const {
+  return assembler_->nodal_von_mises(state_.u);
+}
+
+Energies Structure::energies() const {
+  Energies e;
+  const Vector v = dofs_->restrict_to_free(state_.v);
+  e.kinetic = 0.5 * v.dot(M_ * v);
+  e.strain = assembler_->strain_energy(state_.u);
+  e.gravity_work = f_g_.dot(state_.u);
+  e.external_work = state_.external_work;
+  return e;
+}
+
+} // namespace fsi::fem
