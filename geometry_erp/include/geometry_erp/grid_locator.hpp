@@ -1,0 +1,28 @@
+#pragma once
+// Uniform-grid back-end: segments are binned into square cells of side h >= r_e (every cell their
+// bounding box overlaps); a particle checks the segments of its own and the 8 surrounding cells,
+// which contain every segment within r_e of it.
+#include "geometry_erp/wall_locator.hpp"
+
+namespace fsi::erp {
+
+class GridLocator final : public WallLocator {
+public:
+  GridLocator(const WallSet& walls, double r_e);
+  void update() override;
+  void query(std::span<const Vec2> x, WallHits& hits) const override;
+  void query(std::span<const double> x, std::span<const double> y, WallHits& hits) const override;
+
+  double cell_size() const { return h_; }
+
+private:
+  template <class Point> void run(std::size_t n, Point&& point, WallHits& hits) const;
+
+  double h_ = 0.0;
+  Vec2 lo_ = Vec2::Zero();
+  int nx_ = 0, ny_ = 0;
+  std::vector<int> cell_begin_; // CSR offsets into cell_segment_, size nx*ny + 1
+  std::vector<int> cell_segment_;
+};
+
+} // namespace fsi::erp

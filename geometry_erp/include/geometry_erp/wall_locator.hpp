@@ -1,0 +1,72 @@
+#pragma once
+// Nearest wall point for many particles at once (eqs. 18-19).
+//
+// For each particle within r_e of some segment: the nearest point x_wall over all segments, the
+// distance r = |x - x_wall|, the unit normal n_wall from the wall to the particle (eq. 19), the
+// segment and the local coordinate t in [0, 1] on it (x_wall = (1 - t) x_a + t x_b), and the wall
+// velocity and acceleration interpolated linearly along the segment.
+//
+// Normal and crossing: the "fluid normal" at x_wall is the segment's left normal, or the node
+// pseudo-normal (WallSet::node_normal) when x_wall is a node (t = 0 or 1).
+// - r <= on_wall_tolerance * r_e: the particle is on the wall; n_wall is the fluid normal and the
+//   particle is not crossed.
+// - otherwise n_wall = (x - x_wall) / r, and the particle is crossed (on the solid side of its
+//   nearest wall) when n_wall . fluid normal < 0. Crossed particles are reported, never fixed.
+// Equally near segments are resolved towards the lower segment index, so results do not depend
+// on the back-end or the thread count.
+#include "fsi/core/types.hpp"
+#include "geometry_erp/wall_set.hpp"
+
+#include <memory>
+#include <span>
+#include <vector>
+
+namespace fsi::erp {
+
+/// Query results, one entry per particle (struct-of-arrays). For a particle with no wall within
+/// r_e, segment = -1, r = +inf, crossed = 0 and the other fields are left unchanged.
+struct WallHits {
+  std::vector<int> segment;
+  std::vector<double> t, r;
+  std::vector<Vec2> x_wall, n_wall, v_wall, a_wall;
+  std::vector<unsigned char> crossed;
+  /// Grows every array to n (no allocation once warmed up to the largest n).
+  void resize(std::size_t n);
+  std::size_t size() const { return segment.size(); }
+};
+
+/// Distance below which a particle counts as on the wall, as a fraction of r_e.
+inline constexpr double on_wall_tolerance = 1e-10;
+
+enum class LocatorKind { grid, aabb_tree };
+
+/// The default back-end (docs/geometry_erp.md gives the measurements behind the choice).
+inline constexpr LocatorKind default_locator = LocatorKind::grid;
+
+/// A spatial index over the segments of one WallSet, which must outlive it. Call update() after
+/// nodes move or segments are added, before the next query. Queries are const, run through
+/// fsi::parallel_for and do not allocate once `hits` has the particle count.
+class WallLocator {
+public:
+  virtual ~WallLocator() = default;
+  /// Rebuilds the index for the current node positions.
+  virtual void update() = 0;
+  virtual void query(std::span<const Vec2> x, WallHits& hits) const = 0;
+  /// Same with particle coordinates as separate arrays, x.size() == y.size().
+  virtual void query(std::span<const double> x, std::span<const double> y,
+                     WallHits& hits) const = 0;
+
+  double r_e() const { return r_e_; }
+  const WallSet& walls() const { return *walls_; }
+
+protected:
+  WallLocator(const WallSet& walls, double r_e) : walls_(&walls), r_e_(r_e) {}
+  const WallSet* walls_;
+  double r_e_;
+};
+
+/// A locator of the given kind, already updated.
+std::unique_ptr<WallLocator> make_wall_locator(const WallSet& walls, double r_e,
+                                               LocatorKind kind = default_locator);
+
+} // namespace fsi::erp

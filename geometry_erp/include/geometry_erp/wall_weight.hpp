@@ -1,0 +1,48 @@
+#pragma once
+// Wall weight z(r) (eq. 20) and the lattice constants n0 (eq. 9) and lambda0 (eq. 12), all on the
+// same square lattice of spacing l0.
+//
+// Lattice of z: a flat wall at y = 0, fluid rows at y = l0/2 + k l0 (k >= 0), virtual rows behind
+// the wall at y = -l0/2 - m l0 (m >= 0), the continuation of the fluid lattice; columns at
+// x = i l0 aligned with the particle at (0, r). z(r) = sum of w over the virtual particles, so a
+// particle on a fluid row with a full fluid lattice around it has n_i + z(r) = n0 exactly.
+#include "geometry_erp/cubic_spline.hpp"
+#include "geometry_erp/weight.hpp"
+
+#include <functional>
+
+namespace fsi::erp {
+
+/// A weight function of distance, zero at and beyond r_e (QuadraticWeight or a replacement).
+using WeightFunction = std::function<double(double)>;
+
+/// z(r) by direct summation over the virtual half-lattice.
+double wall_weight_sum(double r, double l0, double r_e, const WeightFunction& w);
+
+/// n0 = sum_{j != i} w(|x_j - x_i|) over the full square lattice (eq. 9).
+double lattice_n0(double l0, double r_e, const WeightFunction& w);
+
+/// lambda0 = sum_{j != i} |x_j - x_i|^2 w / sum_{j != i} w over the full square lattice (eq. 12).
+double lattice_lambda0(double l0, double r_e, const WeightFunction& w);
+
+/// z(r) tabulated once and interpolated by a natural cubic spline. z = 0 from r = r_e - l0/2 on
+/// (the nearest virtual row is l0/2 behind the wall), so the table spans [0, r_e - l0/2]. The
+/// knots are multiples of l0 / (2 M), M chosen for at least `min_intervals` intervals over r_e, so
+/// every fluid row r = l0/2 + k l0 is a knot.
+class WallWeightTable {
+public:
+  WallWeightTable(double l0, double r_e, const WeightFunction& w, int min_intervals = 1000);
+  /// z(r); z(r) = z(0) for r < 0 and 0 for r >= r_e - l0/2.
+  double operator()(double r) const { return r >= r_zero_ ? 0.0 : z_(r).y; }
+  double dz_dr(double r) const { return r >= r_zero_ ? 0.0 : z_(r).dy; }
+  double l0() const { return l0_; }
+  double r_e() const { return r_e_; }
+  /// Knot spacing of the table.
+  double spacing() const { return dr_; }
+
+private:
+  double l0_, r_e_, r_zero_, dr_;
+  CubicSpline z_;
+};
+
+} // namespace fsi::erp

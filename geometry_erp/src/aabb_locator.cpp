@@ -1,0 +1,104 @@
+#include "geometry_erp/aabb_locator.hpp"
+
+#include "nearest_segment.hpp"
+
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/Simple_cartesian.h>
+
+namespace fsi::erp {
+
+namespace {
+
+using Kernel = CGAL::Simple_cartesian<double>;
+
+/// One wall segment as an AABB primitive: its index and end points at the last update().
+struct SegmentPrimitive {
+  using Id = int;
+  using Point = Kernel::Point_3;
+  using Datum = Kernel::Segment_3;
+  struct Source {
+    int id;
+    Point a, b;
+  };
+  SegmentPrimitive() = default;
+  template <class Iterator> explicit SegmentPrimitive(Iterator it) : source(*it) {}
+  Id id() const { return source.id; }
+  Datum datum() const { return {source.a, source.b}; }
+  Point reference_point() const { return source.a; }
+  Source source;
+};
+
+using Traits = CGAL::AABB_traits<Kernel, SegmentPrimitive>;
+using Node = CGAL::AABB_node<Traits>;
+
+/// Traversal that visits only boxes within the current best distance (ties included, so the
+/// lower-index rule of consider_segment sees every equally near segment).
+struct NearestWithin {
+  const WallSet& walls;
+  Vec2 p;
+  detail::Nearest& best;
+  bool go_further() const { return true; }
+  template <class Query> void intersection(const Query&, const SegmentPrimitive& primitive) {
+    detail::consider_segment(walls, primitive.id(), p, best);
+  }
+  template <class Query> bool do_intersect(const Query&, const Node& node) const {
+    const CGAL::Bbox_3& box = node.bbox();
+    const double dx = std::max({box.xmin() - p.x(), 0.0, p.x() - box.xmax()});
+    const double dy = std::max({box.ymin() - p.y(), 0.0, p.y() - box.ymax()});
+    return dx * dx + dy * dy <= best.d2;
+  }
+};
+
+} // namespace
+
+struct AabbLocator::Tree {
+  std::vector<SegmentPrimitive::Source> sources;
+  CGAL::AABB_tree<Traits> tree;
+};
+
+AabbLocator::AabbLocator(const WallSet& walls, double r_e)
+    : WallLocator(walls, r_e), tree_(std::make_unique<Tree>()) {
+  tree_->tree.do_not_accelerate_distance_queries();
+  update();
+}
+
+AabbLocator::~AabbLocator() = default;
+
+void AabbLocator::update() {
+  const WallSet& walls = *walls_;
+  const auto& seg = walls.segments().node;
+  const auto& x = walls.nodes().x;
+  tree_->sources.resize(seg.size());
+  for (std::size_t s = 0; s < seg.size(); ++s) {
+    const Vec2& xa = x[static_cast<std::size_t>(seg[s][0])];
+    const Vec2& xb = x[static_cast<std::size_t>(seg[s][1])];
+    tree_->sources[s] = {static_cast<int>(s), {xa.x(), xa.y(), 0.0}, {xb.x(), xb.y(), 0.0}};
+  }
+  tree_->tree.rebuild(tree_->sources.begin(), tree_->sources.end());
+}
+
+template <class Point> void AabbLocator::run(std::size_t n, Point&& point, WallHits& hits) const {
+  const WallSet& walls = *walls_;
+  const auto& tree = tree_->tree;
+  detail::batch_query(
+      walls, r_e_, n, point,
+      [&](const Vec2& p, detail::Nearest& best) {
+        NearestWithin traits{walls, p, best};
+        tree.traversal(0, traits);
+      },
+      hits);
+}
+
+void AabbLocator::query(std::span<const Vec2> x, WallHits& hits) const {
+  run(
+      x.size(), [&](std::size_t i) { return x[i]; }, hits);
+}
+
+void AabbLocator::query(std::span<const double> x, std::span<const double> y,
+                        WallHits& hits) const {
+  run(
+      x.size(), [&](std::size_t i) { return Vec2(x[i], y[i]); }, hits);
+}
+
+} // namespace fsi::erp

@@ -1,0 +1,79 @@
+#pragma once
+// Shared by the locator back-ends: distance to one segment and the hit record of eqs. 18-19.
+#include "geometry_erp/wall_locator.hpp"
+
+#include "fsi/core/parallel.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace fsi::erp::detail {
+
+/// Best segment so far for one particle; d2 starts at r_e^2 so only walls within r_e count.
+struct Nearest {
+  int segment = -1;
+  double t = 0.0;
+  double d2;
+};
+
+/// Nearest point of segment s to p; replaces `best` if strictly nearer, or equally near with a
+/// lower segment index.
+inline void consider_segment(const WallSet& walls, int s, const Vec2& p, Nearest& best) {
+  const auto& [a, b] = walls.segments().node[static_cast<std::size_t>(s)];
+  const Vec2& xa = walls.nodes().x[static_cast<std::size_t>(a)];
+  const Vec2& xb = walls.nodes().x[static_cast<std::size_t>(b)];
+  const Vec2 ab = xb - xa;
+  const double t = std::clamp((p - xa).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
+  const Vec2 q = t == 1.0 ? xb : Vec2(xa + t * ab);
+  const double d2 = (p - q).squaredNorm();
+  if (d2 < best.d2 || (d2 == best.d2 && best.segment >= 0 && s < best.segment)) best = {s, t, d2};
+}
+
+/// Writes particle i's record from its nearest segment (see wall_locator.hpp for the rules).
+inline void write_hit(const WallSet& walls, double r_e, const Vec2& p, const Nearest& best,
+                      WallHits& hits, std::size_t i) {
+  hits.segment[i] = best.segment;
+  if (best.segment < 0) {
+    hits.r[i] = std::numeric_limits<double>::infinity();
+    hits.crossed[i] = 0;
+    return;
+  }
+  const auto& [a, b] = walls.segments().node[static_cast<std::size_t>(best.segment)];
+  const auto ua = static_cast<std::size_t>(a), ub = static_cast<std::size_t>(b);
+  const double t = best.t;
+  const Vec2 x_wall =
+      t == 1.0 ? walls.nodes().x[ub]
+               : Vec2(walls.nodes().x[ua] + t * (walls.nodes().x[ub] - walls.nodes().x[ua]));
+  const Vec2 n_fluid = t == 0.0   ? walls.node_normal(a, best.segment)
+                       : t == 1.0 ? walls.node_normal(b, best.segment)
+                                  : walls.segment_normal(best.segment);
+  const double r = std::sqrt(best.d2);
+  hits.t[i] = t;
+  hits.r[i] = r;
+  hits.x_wall[i] = x_wall;
+  if (r <= on_wall_tolerance * r_e) {
+    hits.n_wall[i] = n_fluid;
+    hits.crossed[i] = 0;
+  } else {
+    hits.n_wall[i] = (p - x_wall) / r; // eq. 19
+    hits.crossed[i] = hits.n_wall[i].dot(n_fluid) < 0.0 ? 1 : 0;
+  }
+  hits.v_wall[i] = (1.0 - t) * walls.nodes().v[ua] + t * walls.nodes().v[ub];
+  hits.a_wall[i] = (1.0 - t) * walls.nodes().a[ua] + t * walls.nodes().a[ub];
+}
+
+/// Runs nearest(p, best) for every particle in parallel and writes the records.
+template <class Point, class Find>
+void batch_query(const WallSet& walls, double r_e, std::size_t n, Point&& point, Find&& nearest,
+                 WallHits& hits) {
+  hits.resize(n);
+  parallel_for(n, [&](std::size_t i) {
+    const Vec2 p = point(i);
+    Nearest best{-1, 0.0, r_e * r_e};
+    nearest(p, best);
+    write_hit(walls, r_e, p, best, hits, i);
+  });
+}
+
+} // namespace fsi::erp::detail

@@ -1,0 +1,60 @@
+#include "geometry_erp/wall_weight.hpp"
+
+#include <cmath>
+#include <vector>
+
+namespace fsi::erp {
+
+namespace {
+/// Lattice index bound that covers every point within r_e.
+int reach(double l0, double r_e) {
+  return static_cast<int>(std::ceil(r_e / l0)) + 1;
+}
+} // namespace
+
+double wall_weight_sum(double r, double l0, double r_e, const WeightFunction& w) {
+  const int n = reach(l0, r_e);
+  double z = 0.0;
+  for (int m = 0; r + 0.5 * l0 + m * l0 < r_e; ++m) {
+    const double dy = r + 0.5 * l0 + m * l0; // particle at y = r, virtual row at -l0/2 - m l0
+    for (int i = -n; i <= n; ++i) z += w(std::hypot(i * l0, dy));
+  }
+  return z;
+}
+
+double lattice_n0(double l0, double r_e, const WeightFunction& w) {
+  const int n = reach(l0, r_e);
+  double n0 = 0.0;
+  for (int j = -n; j <= n; ++j)
+    for (int i = -n; i <= n; ++i)
+      if (i != 0 || j != 0) n0 += w(std::hypot(i * l0, j * l0));
+  return n0;
+}
+
+double lattice_lambda0(double l0, double r_e, const WeightFunction& w) {
+  const int n = reach(l0, r_e);
+  double sum_r2w = 0.0;
+  for (int j = -n; j <= n; ++j)
+    for (int i = -n; i <= n; ++i) {
+      if (i == 0 && j == 0) continue;
+      const double r = std::hypot(i * l0, j * l0);
+      sum_r2w += r * r * w(r);
+    }
+  return sum_r2w / lattice_n0(l0, r_e, w); // eq. 12
+}
+
+WallWeightTable::WallWeightTable(double l0, double r_e, const WeightFunction& w, int min_intervals)
+    : l0_(l0), r_e_(r_e), r_zero_(r_e - 0.5 * l0) {
+  // Intervals per half spacing, so that l0/2 + k l0 fall on knots.
+  const int M = std::max(1, static_cast<int>(std::ceil(min_intervals * 0.5 * l0 / r_e)));
+  dr_ = 0.5 * l0 / M;
+  const int knots = std::max(2, static_cast<int>(std::ceil(r_zero_ / dr_)) + 1);
+  std::vector<double> r(static_cast<std::size_t>(knots)), z(r.size());
+  for (int k = 0; k < knots; ++k) {
+    r[static_cast<std::size_t>(k)] = k * dr_;
+    z[static_cast<std::size_t>(k)] = wall_weight_sum(k * dr_, l0, r_e, w);
+  }
+  z_ = CubicSpline(std::move(r), std::move(z));
+}
+
+} // namespace fsi::erp

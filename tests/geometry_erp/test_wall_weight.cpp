@@ -1,0 +1,73 @@
+// Wall weight z(r) (eq. 20), n0 (eq. 9) and lambda0 (eq. 12) on the lattice that continues the
+// fluid lattice behind a flat wall.
+#include "geometry_erp/wall_weight.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+using namespace fsi::erp;
+using Catch::Matchers::WithinAbs;
+using Catch::Matchers::WithinRel;
+
+namespace {
+
+/// n_i of the fluid particle in column 0, row k of a block of fluid rows 0..rows-1 at
+/// y = l0/2 + k l0 and columns -half..half (sum over the real particles only, eq. 9).
+double block_pnd(int k, int rows, int half, double l0, const WeightFunction& w) {
+  double n = 0.0;
+  for (int row = 0; row < rows; ++row)
+    for (int i = -half; i <= half; ++i)
+      if (row != k || i != 0) n += w(std::hypot(i * l0, (row - k) * l0));
+  return n;
+}
+
+} // namespace
+
+TEST_CASE("n0 and lambda0 of the quadratic weight for r_e = 1.5 l0", "[wall_weight]") {
+  // Neighbours within r_e: 4 at l0, 4 at sqrt(2) l0.
+  const double l0 = 0.01, r_e = 1.5 * l0;
+  const QuadraticWeight w{r_e};
+  const double w1 = std::pow(1.0 / 1.5 - 1.0, 2), w2 = std::pow(std::sqrt(2.0) / 1.5 - 1.0, 2);
+  const double n0 = 4.0 * w1 + 4.0 * w2;
+  CHECK_THAT(lattice_n0(l0, r_e, w), WithinRel(n0, 1e-14));
+  CHECK_THAT(lattice_lambda0(l0, r_e, w),
+             WithinRel((4.0 * w1 * l0 * l0 + 8.0 * w2 * l0 * l0) / n0, 1e-14));
+}
+
+TEST_CASE("z(r) table matches the direct lattice sum", "[wall_weight]") {
+  const double l0 = 1.46e-3, r_e = 3.1 * l0;
+  const QuadraticWeight w{r_e};
+  const WallWeightTable z(l0, r_e, w);
+  const double dr = z.spacing();
+  const double n0 = lattice_n0(l0, r_e, w);
+  CHECK(z(0.0) > 0.3 * n0);
+  double worst_between = 0.0;
+  for (int k = 0; k * dr < r_e; ++k) {
+    REQUIRE_THAT(z(k * dr), WithinAbs(wall_weight_sum(k * dr, l0, r_e, w), 1e-10));
+    const double r = (k + 0.5) * dr;
+    worst_between = std::max(worst_between, std::abs(z(r) - wall_weight_sum(r, l0, r_e, w)));
+  }
+  CHECK(worst_between < 1e-4);
+  CHECK(z(r_e) == 0.0);
+  CHECK(z(r_e - 0.5 * l0 + 1e-9 * l0) == 0.0);
+}
+
+TEST_CASE("n_i + z(r_i) = n0 for every fluid row next to a flat wall", "[wall_weight]") {
+  const double l0 = 1.0;
+  for (const double r_e : {2.1, 3.1, 4.0}) {
+    const QuadraticWeight quadratic{r_e};
+    // The classic MPS weight r_e/r - 1 as a replacement weight.
+    const WeightFunction classic = [r_e](double r) { return r < r_e ? r_e / r - 1.0 : 0.0; };
+    for (const WeightFunction& w : {WeightFunction(quadratic), classic}) {
+      const WallWeightTable z(l0, r_e, w);
+      const double n0 = lattice_n0(l0, r_e, w);
+      const int rows = 12, half = 10;
+      for (int k = 0; k < 6; ++k) {
+        const double r_i = 0.5 * l0 + k * l0;
+        INFO("r_e = " << r_e << ", row " << k);
+        REQUIRE_THAT(block_pnd(k, rows, half, l0, w) + z(r_i), WithinAbs(n0, 1e-12));
+      }
+    }
+  }
+}
