@@ -7,11 +7,11 @@
 namespace fsi::fem {
 
 Vector edge_traction_forces(const Mesh& mesh, const std::string& tag, const Vec2& traction) {
-  return edge_traction_forces(mesh, tag, [&](const Vec2&) { return traction; });
+  return edge_traction_field_forces(mesh, tag, [&](const Vec2&) { return traction; });
 }
 
-Vector edge_traction_forces(const Mesh& mesh, const std::string& tag,
-                            const std::function<Vec2(const Vec2& X)>& traction) {
+Vector edge_traction_field_forces(const Mesh& mesh, const std::string& tag,
+                                  const std::function<Vec2(const Vec2& X)>& traction) {
   Vector f = Vector::Zero(2 * static_cast<Eigen::Index>(mesh.num_nodes()));
   const double s_q[3] = {-std::sqrt(0.6), 0.0, std::sqrt(0.6)};
   const double w_q[3] = {5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0};

@@ -79,6 +79,7 @@ void Structure::update_acceleration() {
   factor_and_solve(M_, r, a_free, its);
   state_.a.setZero();
   dofs_->add_free(a_free, state_.a);
+  state_.f_ext = f_ext_next_; // the forces a^n balances
 }
 
 template <class Residual>

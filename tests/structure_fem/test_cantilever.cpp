@@ -35,10 +35,10 @@ TEST_CASE("cantilever tip error converges at the rate of quadratic elements",
     Structure s(mesh, o);
     auto shear = [&](double y) { return P * 6.0 * y * (b.h - y) / (b.h * b.h * b.h); };
     const Vector f =
-        edge_traction_forces(s.mesh(), "left",
-                             [&](const fsi::Vec2& X) { return fsi::Vec2(0.0, shear(X.y())); }) +
-        edge_traction_forces(s.mesh(), "right",
-                             [&](const fsi::Vec2& X) { return fsi::Vec2(0.0, -shear(X.y())); });
+        edge_traction_field_forces(
+            s.mesh(), "left", [&](const fsi::Vec2& X) { return fsi::Vec2(0.0, shear(X.y())); }) +
+        edge_traction_field_forces(
+            s.mesh(), "right", [&](const fsi::Vec2& X) { return fsi::Vec2(0.0, -shear(X.y())); });
     s.set_external_forces(f);
     s.solve_static();
     return -s.displacement()[2 * tip_node(s.mesh(), b) + 1];

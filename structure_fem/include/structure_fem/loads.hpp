@@ -14,7 +14,7 @@ Vector edge_traction_forces(const Mesh& mesh, const std::string& tag, const Vec2
 
 /// The same for a dead traction t(X) varying along the edges (e.g. hydrostatic pressure):
 /// f_K = integral_edge N_K t(X) dS, 3-point Gauss (exact for t quadratic on a straight edge).
-Vector edge_traction_forces(const Mesh& mesh, const std::string& tag,
-                            const std::function<Vec2(const Vec2& X)>& traction);
+Vector edge_traction_field_forces(const Mesh& mesh, const std::string& tag,
+                                  const std::function<Vec2(const Vec2& X)>& traction);
 
 } // namespace fsi::fem

@@ -112,7 +112,8 @@ public:
   /// v = a = 0. Returns one report per load step. Throws RunError like advance().
   std::vector<StepReport> solve_static(const StaticOptions& options = {});
 
-  /// Re-solves M a = f_ext + f_g - f_int(u) for the current u (after changing forces at rest).
+  /// Re-solves M a = f_ext + f_g - f_int(u) for the current u with the forces just set, which
+  /// then count as the forces at t^n (e.g. releasing a load at t^n).
   void update_acceleration();
 
   const Vector& displacement() const { return state_.u; }
