@@ -1,0 +1,44 @@
+#pragma once
+// Coupling options: a plain struct filled by the config layer (no YAML here). Every field is
+// declared once with its default, allowed range and meaning; validate_options() checks them.
+#include <string>
+
+namespace fsi::coupling {
+
+class Registry;
+
+struct CouplingOptions {
+  /// Scheme by registry name: "css", "bgs", "one_way_fluid", "one_way_structure".
+  std::string scheme = "css";
+  /// Interface predictor by name: "none" (keep x^n, v^n, a^n) or "second_order" (eqs. 63-65).
+  std::string predictor = "none";
+  /// BGS acceleration by name: "none", "constant", "aitken", "iqn-ils".
+  std::string acceleration = "none";
+  /// BGS convergence measure by name: "relative" (eq. 69) or "absolute".
+  std::string convergence = "relative";
+  /// (0, inf): relative measure: ||r^i|| / ||r^0|| < tolerance; absolute: ||r^i|| < tolerance [m].
+  double tolerance = 1e-4;
+  /// [1, 100000]: BGS iterations (F + S evaluations) per step before giving up.
+  int max_iterations = 200;
+  /// (0, 2]: constant relaxation factor; initial factor of aitken and iqn-ils.
+  double omega = 0.5;
+  /// [0, 1000]: iqn-ils reuses the columns of this many past time steps.
+  int reuse = 8;
+  /// [0, 1): iqn-ils QR2 filter: a column whose part orthogonal to the newer columns is below
+  /// iqn_filter times its own norm is deleted.
+  double iqn_filter = 1e-2;
+  /// [0.01, 100]: aitken factor clamp, |omega| <= aitken_omega_max.
+  double aitken_omega_max = 2.0;
+  /// BGS also requires the velocity residual to satisfy the measure (positions always do).
+  bool converge_velocities = false;
+  /// Throw fsi::RunError on the first step that does not converge within max_iterations.
+  bool stop_on_unconverged = false;
+  /// [1, 100000]: fluid sub-steps per coupling (structure) step.
+  int substeps = 1;
+};
+
+/// Throws fsi::InputError (`coupling.KEY: value V is out of range R` or `unknown name`) for the
+/// first invalid field. Component names are checked against `registry`.
+void validate_options(const CouplingOptions& options, const Registry& registry);
+
+} // namespace fsi::coupling

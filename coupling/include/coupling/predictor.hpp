@@ -1,0 +1,18 @@
+#pragma once
+// Interface predictor: the first guess of the interface state at t^{n+1} from the state at t^n.
+// One small class per method (predictor_none.hpp, predictor_second_order.hpp), chosen by name.
+#include <string_view>
+
+#include "coupling/interface.hpp"
+
+namespace fsi::coupling {
+
+class Predictor {
+public:
+  virtual ~Predictor() = default;
+  virtual std::string_view name() const = 0;
+  /// Predicted interface state at t^n + dt from the accepted state `current` at t^n.
+  virtual InterfaceMotion predict(const InterfaceMotion& current, double dt) const = 0;
+};
+
+} // namespace fsi::coupling

@@ -1,0 +1,93 @@
+#pragma once
+// Components chosen by name. A Registry maps names to factories; register_builtin_components()
+// is the one place that lists the built-in schemes, accelerations, predictors and measures.
+// A new component plugs in by one add_*() line there (or on a registry of one's own).
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "coupling/acceleration.hpp"
+#include "coupling/convergence.hpp"
+#include "coupling/options.hpp"
+#include "coupling/predictor.hpp"
+#include "coupling/scheme.hpp"
+
+namespace fsi::coupling {
+
+class Registry {
+public:
+  using SchemeFactory = std::function<std::unique_ptr<CouplingScheme>(
+      const CouplingOptions&, const Participants&, const Registry&)>;
+  using AccelerationFactory = std::function<std::unique_ptr<Acceleration>(const CouplingOptions&)>;
+  using PredictorFactory = std::function<std::unique_ptr<Predictor>(const CouplingOptions&)>;
+  using MeasureFactory = std::function<std::unique_ptr<ConvergenceMeasure>(const CouplingOptions&)>;
+
+  /// Register a factory under `name` with a one-line description. Replaces an existing entry.
+  void add_scheme(std::string name, std::string doc, SchemeFactory factory);
+  void add_acceleration(std::string name, std::string doc, AccelerationFactory factory);
+  void add_predictor(std::string name, std::string doc, PredictorFactory factory);
+  void add_measure(std::string name, std::string doc, MeasureFactory factory);
+
+  /// Build by name; unknown names throw fsi::InputError naming the key and the allowed names.
+  /// make_scheme also validates the options and checks the participants the scheme needs.
+  std::unique_ptr<CouplingScheme> make_scheme(const CouplingOptions& options,
+                                              const Participants& participants) const;
+  std::unique_ptr<Acceleration> make_acceleration(std::string_view name,
+                                                  const CouplingOptions& options) const;
+  std::unique_ptr<Predictor> make_predictor(std::string_view name,
+                                            const CouplingOptions& options) const;
+  std::unique_ptr<ConvergenceMeasure> make_measure(std::string_view name,
+                                                   const CouplingOptions& options) const;
+
+  /// Names in alphabetical order, and their docs (for generated documentation and messages).
+  std::vector<std::string> scheme_names() const { return names(schemes_); }
+  std::vector<std::string> acceleration_names() const { return names(accelerations_); }
+  std::vector<std::string> predictor_names() const { return names(predictors_); }
+  std::vector<std::string> measure_names() const { return names(measures_); }
+  bool has_scheme(std::string_view n) const { return schemes_.count(std::string(n)) != 0; }
+  bool has_acceleration(std::string_view n) const {
+    return accelerations_.count(std::string(n)) != 0;
+  }
+  bool has_predictor(std::string_view n) const { return predictors_.count(std::string(n)) != 0; }
+  bool has_measure(std::string_view n) const { return measures_.count(std::string(n)) != 0; }
+
+  template <class F> struct Entry {
+    std::string doc;
+    F factory;
+  };
+
+private:
+  template <class F>
+  static std::vector<std::string> names(const std::map<std::string, Entry<F>>& m) {
+    std::vector<std::string> out;
+    for (const auto& [name, entry] : m) out.push_back(name);
+    return out;
+  }
+  std::map<std::string, Entry<SchemeFactory>> schemes_;
+  std::map<std::string, Entry<AccelerationFactory>> accelerations_;
+  std::map<std::string, Entry<PredictorFactory>> predictors_;
+  std::map<std::string, Entry<MeasureFactory>> measures_;
+};
+
+/// Fill `registry` with the built-in components:
+///   schemes: css, bgs, one_way_fluid, one_way_structure
+///   accelerations: none, constant, aitken, iqn-ils
+///   predictors: none, second_order;  measures: relative, absolute.
+void register_builtin_components(Registry& registry);
+
+/// A registry filled once by register_builtin_components().
+const Registry& builtin_registry();
+
+/// Shorthands on builtin_registry().
+std::unique_ptr<CouplingScheme> make_scheme(const CouplingOptions& options,
+                                            const Participants& participants);
+std::unique_ptr<CouplingScheme> make_scheme(const CouplingOptions& options, FluidSolver& fluid,
+                                            StructureSolver& structure);
+std::unique_ptr<Acceleration> make_acceleration(std::string_view name,
+                                                const CouplingOptions& options);
+std::unique_ptr<Predictor> make_predictor(std::string_view name, const CouplingOptions& options);
+
+} // namespace fsi::coupling

@@ -1,0 +1,24 @@
+#pragma once
+// Scheme "one_way_structure": the structure under prescribed (e.g. recorded) loads, evaluated at
+// the end of each step, prescribed(t + dt), as a Newmark structure expects. No fluid is run.
+#include "coupling/scheme.hpp"
+
+namespace fsi::coupling {
+
+class OneWayStructureScheme final : public CouplingScheme {
+public:
+  OneWayStructureScheme(const CouplingOptions& options, StructureSolver& structure,
+                        LoadFunction prescribed, SchemeComponents components);
+
+protected:
+  InterfaceMotion initialize_participants(double t0) override;
+  void finalize_participants() override;
+  InterfaceMotion evaluate(double t, double dt, const InterfaceMotion& input) override;
+  bool has_residual() const override { return false; }
+
+private:
+  StructureSolver& structure_;
+  LoadFunction prescribed_;
+};
+
+} // namespace fsi::coupling

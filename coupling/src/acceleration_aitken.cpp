@@ -1,0 +1,40 @@
+#include "coupling/acceleration_aitken.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace fsi::coupling {
+
+AitkenRelaxation::AitkenRelaxation(double omega_init, double omega_max)
+    : omega_init_(omega_init), omega_max_(omega_max), omega_(omega_init) {}
+
+void AitkenRelaxation::begin_step(const Eigen::VectorXd& scale) {
+  scale_ = scale;
+  iteration_ = 0;
+}
+
+void AitkenRelaxation::update(const Eigen::VectorXd& x, const Eigen::VectorXd& x_tilde,
+                              Eigen::VectorXd& x_next) {
+  const Eigen::VectorXd r = x_tilde - x;
+  Eigen::VectorXd rs = r;
+  if (scale_.size() == r.size()) rs = r.cwiseProduct(scale_);
+
+  if (iteration_ == 0) {
+    // First factor of the step: the previous step's last factor, bounded by the initial one.
+    omega_ = std::copysign(std::min(omega_init_, std::abs(omega_)), omega_);
+  } else {
+    const Eigen::VectorXd d = rs - r_prev_;
+    const double den = d.squaredNorm();
+    if (den > 0.0) {
+      const double w = -omega_ * r_prev_.dot(d) / den; // Kuettler & Wall 2008, eq. (44)
+      omega_ = std::isfinite(w) && w != 0.0 ? w : omega_init_;
+    }
+  }
+  if (std::abs(omega_) > omega_max_) omega_ = std::copysign(omega_max_, omega_);
+
+  x_next = x + omega_ * r;
+  r_prev_ = rs;
+  ++iteration_;
+}
+
+} // namespace fsi::coupling

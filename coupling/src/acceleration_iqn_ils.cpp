@@ -1,0 +1,92 @@
+#include "coupling/acceleration_iqn_ils.hpp"
+
+#include <cassert>
+#include <vector>
+
+namespace fsi::coupling {
+
+IqnIlsAcceleration::IqnIlsAcceleration(double omega_init, int reuse, double filter)
+    : omega_init_(omega_init), reuse_(reuse), filter_(filter) {}
+
+void IqnIlsAcceleration::begin_step(const Eigen::VectorXd& scale) {
+  scale_ = scale;
+  has_prev_ = false;
+  relaxation_.reset();
+}
+
+void IqnIlsAcceleration::update(const Eigen::VectorXd& x, const Eigen::VectorXd& x_tilde,
+                                Eigen::VectorXd& x_next) {
+  const Eigen::Index n = x.size();
+  const Eigen::VectorXd r = x_tilde - x;
+  if (has_prev_) columns_.push_front(Column{r - r_prev_, x_tilde - x_tilde_prev_, step_});
+  r_prev_ = r;
+  x_tilde_prev_ = x_tilde;
+  has_prev_ = true;
+  while (static_cast<Eigen::Index>(columns_.size()) > n) columns_.pop_back();
+
+  const bool scaled = scale_.size() == n;
+  auto scale = [&](const Eigen::VectorXd& v) -> Eigen::VectorXd {
+    return scaled ? Eigen::VectorXd(v.cwiseProduct(scale_)) : v;
+  };
+
+  // QR of the scaled V by modified Gram-Schmidt (two passes), newest column first; QR2 filter.
+  const auto k_max = static_cast<Eigen::Index>(columns_.size());
+  Eigen::MatrixXd q(n, k_max), rr = Eigen::MatrixXd::Zero(k_max, k_max);
+  std::vector<std::size_t> kept;
+  std::vector<bool> erase(columns_.size(), false);
+  for (std::size_t j = 0; j < columns_.size(); ++j) {
+    Eigen::VectorXd v = scale(columns_[j].dr);
+    const double norm0 = v.norm();
+    if (!(norm0 > 0.0)) {
+      erase[j] = true;
+      continue;
+    }
+    const auto kk = static_cast<Eigen::Index>(kept.size());
+    Eigen::VectorXd h = Eigen::VectorXd::Zero(kk);
+    for (int pass = 0; pass < 2; ++pass) {
+      for (Eigen::Index i = 0; i < kk; ++i) {
+        const double hij = q.col(i).dot(v);
+        h(i) += hij;
+        v -= hij * q.col(i);
+      }
+    }
+    const double norm = v.norm();
+    if (!(norm >= filter_ * norm0) || norm == 0.0) {
+      erase[j] = true;
+      continue;
+    }
+    q.col(kk) = v / norm;
+    rr.block(0, kk, kk, 1) = h;
+    rr(kk, kk) = norm;
+    kept.push_back(j);
+  }
+  // Delete filtered columns for good (keeps the relative order of the others).
+  std::deque<Column> remaining;
+  for (std::size_t j = 0; j < columns_.size(); ++j)
+    if (!erase[j]) remaining.push_back(std::move(columns_[j]));
+  columns_ = std::move(remaining);
+
+  if (kept.empty()) {
+    x_next = x + omega_init_ * r;
+    relaxation_ = omega_init_;
+    return;
+  }
+  const auto k = static_cast<Eigen::Index>(kept.size());
+  // c = argmin ||V c + r||: R c = -Q^T r.
+  const Eigen::VectorXd rhs = -(q.leftCols(k).transpose() * scale(r));
+  const Eigen::VectorXd c = rr.topLeftCorner(k, k).triangularView<Eigen::Upper>().solve(rhs);
+  x_next = x_tilde;
+  for (Eigen::Index i = 0; i < k; ++i)
+    x_next += c(i) * columns_[static_cast<std::size_t>(i)].dx_tilde;
+  relaxation_.reset();
+}
+
+void IqnIlsAcceleration::end_step(bool converged) {
+  if (!converged) std::erase_if(columns_, [&](const Column& c) { return c.step == step_; });
+  ++step_;
+  // The next step (index step_) reuses steps step_ - reuse .. step_ - 1.
+  std::erase_if(columns_, [&](const Column& c) { return c.step < step_ - reuse_; });
+  has_prev_ = false;
+}
+
+} // namespace fsi::coupling

@@ -1,0 +1,231 @@
+#include "coupling/scheme.hpp"
+
+#include <cassert>
+#include <cmath>
+#include <sstream>
+
+#include "fsi/core/error.hpp"
+
+namespace fsi::coupling {
+
+Eigen::VectorXd pack(const InterfaceMotion& m) {
+  const auto n = static_cast<Eigen::Index>(m.size());
+  Eigen::VectorXd z(6 * n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    z.segment<2>(2 * i) = m.x[k];
+    z.segment<2>(2 * n + 2 * i) = m.v[k];
+    z.segment<2>(4 * n + 2 * i) = m.a[k];
+  }
+  return z;
+}
+
+InterfaceMotion unpack(const Eigen::VectorXd& z) {
+  assert(z.size() % 6 == 0);
+  const Eigen::Index n = z.size() / 6;
+  InterfaceMotion m = InterfaceMotion::zeros(static_cast<std::size_t>(n));
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    m.x[k] = z.segment<2>(2 * i);
+    m.v[k] = z.segment<2>(2 * n + 2 * i);
+    m.a[k] = z.segment<2>(4 * n + 2 * i);
+  }
+  return m;
+}
+
+Eigen::VectorXd coupling_scale(std::size_t n, double dt) {
+  const auto m = static_cast<Eigen::Index>(2 * n);
+  Eigen::VectorXd s(3 * m);
+  s.head(m).setOnes();
+  s.segment(m, m).setConstant(dt);
+  s.tail(m).setConstant(dt * dt);
+  return s;
+}
+
+namespace {
+
+double norm_of_difference(const std::vector<Vec2>& a, const std::vector<Vec2>& b) {
+  double sum = 0.0;
+  for (std::size_t i = 0; i < a.size(); ++i) sum += (a[i] - b[i]).squaredNorm();
+  return std::sqrt(sum);
+}
+
+bool all_finite(const InterfaceMotion& m) {
+  for (std::size_t i = 0; i < m.size(); ++i)
+    if (!m.x[i].allFinite() || !m.v[i].allFinite() || !m.a[i].allFinite()) return false;
+  return true;
+}
+
+} // namespace
+
+CouplingScheme::CouplingScheme(std::string name, const CouplingOptions& options,
+                               SchemeComponents components)
+    : options_(options), name_(std::move(name)), components_(std::move(components)) {
+  assert(components_.predictor != nullptr);
+  assert(components_.acceleration == nullptr || !components_.measures.empty());
+}
+
+void CouplingScheme::initialize(double t0) {
+  state_ = initialize_participants(t0);
+  n_nodes_ = state_.size();
+  check_sizes(state_, "initial interface motion");
+  loads_ = InterfaceLoads::zeros(n_nodes_);
+  step_index_ = 0;
+  summary_ = {};
+  initialized_ = true;
+}
+
+void CouplingScheme::finalize() {
+  if (initialized_) finalize_participants();
+  initialized_ = false;
+}
+
+InterfaceMotion CouplingScheme::first_input(double /*t*/, double dt) {
+  return components_.predictor->predict(state_, dt);
+}
+
+void CouplingScheme::check_sizes(const InterfaceMotion& m, const char* what) const {
+  if (m.x.size() == n_nodes_ && m.v.size() == n_nodes_ && m.a.size() == n_nodes_) return;
+  std::ostringstream s;
+  s << "coupling (" << name_ << "): step " << step_index_ << ": " << what << " has x/v/a sizes "
+    << m.x.size() << "/" << m.v.size() << "/" << m.a.size() << ", expected " << n_nodes_
+    << " interface nodes";
+  throw RunError(s.str());
+}
+
+void CouplingScheme::advance(double t, double dt) {
+  assert(initialized_ && "CouplingScheme::advance before initialize");
+  if (!(dt > 0.0) || !std::isfinite(dt)) {
+    std::ostringstream s;
+    s << "coupling (" << name_ << "): step " << step_index_ << " at t = " << t << " s: dt = " << dt
+      << " is not a positive finite time step";
+    throw RunError(s.str());
+  }
+  const auto start = std::chrono::steady_clock::now();
+  step_ = StepStats{};
+  step_.step = step_index_;
+  step_.t = t;
+  step_.dt = dt;
+  Acceleration* acceleration = components_.acceleration.get();
+  const bool iterate = acceleration != nullptr;
+
+  InterfaceMotion input = first_input(t, dt);
+  check_sizes(input, "first interface input");
+  if (iterate) {
+    save_checkpoint();
+    acceleration->begin_step(coupling_scale(n_nodes_, dt));
+    for (auto& m : components_.measures) m->begin_step();
+  }
+
+  InterfaceMotion output;
+  bool converged = true;
+  for (int it = 0;; ++it) {
+    if (it > 0) restore_checkpoint();
+    output = evaluate(t, dt, input);
+    check_sizes(output, "structure interface motion");
+    ++step_.iterations;
+    double rx = 0.0, rv = 0.0;
+    if (has_residual()) {
+      rx = norm_of_difference(output.x, input.x); // eq. 68
+      rv = norm_of_difference(output.v, input.v);
+    }
+    if (!std::isfinite(rx) || !std::isfinite(rv) || !all_finite(output)) {
+      std::ostringstream s;
+      s << "coupling (" << name_ << "): step " << step_index_ << " at t = " << t << " s, iteration "
+        << it + 1 << ": non-finite interface state or residual";
+      throw RunError(s.str());
+    }
+    if (it == 0) step_.residual_initial = rx;
+    step_.residual_final = rx;
+    if (!iterate) break;
+
+    bool done = components_.measures[0]->measure(rx);
+    for (std::size_t k = 1; k < components_.measures.size(); ++k)
+      done = components_.measures[k]->measure(rv) && done;
+    if (done) break;
+    if (it + 1 >= options_.max_iterations) {
+      converged = false;
+      break;
+    }
+    Eigen::VectorXd next;
+    acceleration->update(pack(input), pack(output), next);
+    step_.omega = acceleration->relaxation();
+    input = unpack(next);
+  }
+  if (iterate) acceleration->end_step(converged);
+  state_ = std::move(output);
+  step_.converged = converged;
+
+  const double total =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  step_.time_coupler = std::max(0.0, total - step_.time_fluid - step_.time_structure);
+  last_ = step_;
+  summary_.add(last_);
+  ++step_index_;
+  if (callback_) callback_(last_);
+
+  if (!converged && options_.stop_on_unconverged) {
+    std::ostringstream s;
+    s << "coupling (" << name_ << "): step " << last_.step << " at t = " << t
+      << " s did not converge in " << last_.iterations << " iterations: residual "
+      << last_.residual_final << " m (";
+    for (std::size_t k = 0; k < components_.measures.size(); ++k)
+      s << (k ? "; " : "") << (k ? "velocities " : "positions ")
+        << components_.measures[k]->criterion() << ", value " << components_.measures[k]->value();
+    s << ")";
+    throw RunError(s.str());
+  }
+}
+
+const InterfaceLoads&
+CouplingScheme::run_fluid(FluidSolver& fluid, double t, double dt,
+                          const std::function<InterfaceMotion(double s)>& motion_at) {
+  const int m = options_.substeps;
+  const double dts = dt / m;
+  InterfaceLoads sum = InterfaceLoads::zeros(n_nodes_);
+  for (int k = 1; k <= m; ++k) {
+    const double s = static_cast<double>(k) / static_cast<double>(m); // exactly 1 at k = m
+    const InterfaceMotion motion = motion_at(s);
+    check_sizes(motion, "fluid interface input");
+    time_fluid([&] {
+      fluid.set_interface_motion(motion);
+      fluid.advance(t + (k - 1) * dts, dts);
+    });
+    const InterfaceLoads& f = fluid.interface_loads();
+    if (f.size() != n_nodes_) {
+      std::ostringstream e;
+      e << "coupling (" << name_ << "): step " << step_index_ << ": fluid returned " << f.size()
+        << " interface loads, expected " << n_nodes_;
+      throw RunError(e.str());
+    }
+    if (m == 1) {
+      loads_ = f;
+      return loads_;
+    }
+    for (std::size_t i = 0; i < n_nodes_; ++i) sum.f[i] += f.f[i];
+  }
+  for (auto& f : sum.f) f /= static_cast<double>(m);
+  loads_ = std::move(sum);
+  return loads_;
+}
+
+InterfaceMotion CouplingScheme::run_structure(StructureSolver& structure,
+                                              const InterfaceLoads& loads, double t, double dt) {
+  InterfaceMotion out;
+  time_structure([&] {
+    structure.set_interface_loads(loads);
+    structure.advance(t, dt);
+    out = structure.interface_motion();
+  });
+  return out;
+}
+
+InterfaceMotion CouplingScheme::serial_evaluate(FluidSolver& fluid, StructureSolver& structure,
+                                                double t, double dt, const InterfaceMotion& input) {
+  // Sub-step k of m sees (1 - k/m) x^n + (k/m) x^{n+1}, the same for v and a (linear in time).
+  const InterfaceLoads& loads = run_fluid(
+      fluid, t, dt, [&](double s) { return s == 1.0 ? input : interpolate(state_, input, s); });
+  return run_structure(structure, loads, t, dt);
+}
+
+} // namespace fsi::coupling
