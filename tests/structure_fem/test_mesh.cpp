@@ -1,1 +1,46 @@
+// Rectangle mesher and mesh validation.
 #include <catch2/catch.hpp>
+
+#include "fsi/core/error.hpp"
+#include "structure_fem/element_t6.hpp"
+#include "structure_fem/rectangle_mesher.hpp"
+
+using namespace fsi::fem;
+using Catch::Contains;
+using Catch::Matchers::WithinRel;
+
+TEST_CASE("rectangle mesher: counts, tags, orientation", "[structure_fem][mesh]") {
+  const Mesh mesh = make_rectangle_mesh({{1.0, 2.0}, 3.0, 0.5, 6, 2});
+  CHECK(mesh.num_elements() == 2 * 6 * 2);
+  CHECK(mesh.num_nodes() == 13 * 5);
+  CHECK(mesh.edges_with_tag("bottom").size() == 6);
+  CHECK(mesh.edges_with_tag("left").size() == 2);
+  CHECK(mesh.node_set("right").size() == 5);
+  double area = 0.0;
+  for (const auto& el : mesh.elements) {
+    ElementNodes X;
+    for (std::size_t k = 0; k < 6; ++k) X[k] = mesh.X[static_cast<std::size_t>(el[k])];
+    area += t6_area(X);
+  }
+  CHECK_THAT(area, WithinRel(1.5, 1e-13));
+  // Solid on the left: the outward normal (t_y, -t_x) of every edge points away from the centre.
+  const fsi::Vec2 centre(2.5, 2.25);
+  for (const auto& e : mesh.edges) {
+    const fsi::Vec2 t =
+        mesh.X[static_cast<std::size_t>(e.nodes[2])] - mesh.X[static_cast<std::size_t>(e.nodes[0])];
+    const fsi::Vec2 n(t.y(), -t.x());
+    CHECK(n.dot(mesh.X[static_cast<std::size_t>(e.nodes[1])] - centre) > 0.0);
+  }
+  CHECK_THROWS_WITH(mesh.node_set("interface"), Contains("interface"));
+  CHECK_THROWS_AS(make_rectangle_mesh({{0.0, 0.0}, -1.0, 1.0, 2, 2}), fsi::InputError);
+}
+
+TEST_CASE("validation rejects a mid-node that inverts the Jacobian", "[structure_fem][mesh]") {
+  Mesh mesh = make_rectangle_mesh({{0.0, 0.0}, 1.0, 1.0, 1, 1});
+  // Mid-node 1 (bottom edge) moved off the edge midpoint: allowed while det J > 0 ...
+  mesh.X[1] = {0.5, 0.1};
+  CHECK_NOTHROW(validate_mesh(mesh));
+  // ... rejected when det J <= 0 inside the element.
+  mesh.X[1] = {0.5, 0.6};
+  CHECK_THROWS_WITH(validate_mesh(mesh), Contains("element 1") && Contains("det J"));
+}
