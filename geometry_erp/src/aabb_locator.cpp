@@ -12,21 +12,17 @@ namespace {
 
 using Kernel = CGAL::Simple_cartesian<double>;
 
-/// One wall segment as an AABB primitive: its index and end points at the last update().
+/// One wall segment as an AABB primitive (lifted to z = 0), with its geometry at update().
 struct SegmentPrimitive {
   using Id = int;
   using Point = Kernel::Point_3;
   using Datum = Kernel::Segment_3;
-  struct Source {
-    int id;
-    Point a, b;
-  };
   SegmentPrimitive() = default;
-  template <class Iterator> explicit SegmentPrimitive(Iterator it) : source(*it) {}
-  Id id() const { return source.id; }
-  Datum datum() const { return {source.a, source.b}; }
-  Point reference_point() const { return source.a; }
-  Source source;
+  template <class Iterator> explicit SegmentPrimitive(Iterator it) : geometry(*it) {}
+  Id id() const { return geometry.id; }
+  Datum datum() const { return {reference_point(), Point(geometry.b.x(), geometry.b.y(), 0.0)}; }
+  Point reference_point() const { return {geometry.a.x(), geometry.a.y(), 0.0}; }
+  SegmentGeometry geometry;
 };
 
 using Traits = CGAL::AABB_traits<Kernel, SegmentPrimitive>;
@@ -35,12 +31,11 @@ using Node = CGAL::AABB_node<Traits>;
 /// Traversal that visits only boxes within the current best distance (ties included, so the
 /// lower-index rule of consider_segment sees every equally near segment).
 struct NearestWithin {
-  const WallSet& walls;
   Vec2 p;
   detail::Nearest& best;
   bool go_further() const { return true; }
   template <class Query> void intersection(const Query&, const SegmentPrimitive& primitive) {
-    detail::consider_segment(walls, primitive.id(), p, best);
+    detail::consider_segment(primitive.geometry, p, best);
   }
   template <class Query> bool do_intersect(const Query&, const Node& node) const {
     const CGAL::Bbox_3& box = node.bbox();
@@ -53,7 +48,7 @@ struct NearestWithin {
 } // namespace
 
 struct AabbLocator::Tree {
-  std::vector<SegmentPrimitive::Source> sources;
+  std::vector<SegmentGeometry> sources;
   CGAL::AABB_tree<Traits> tree;
 };
 
@@ -67,14 +62,9 @@ AabbLocator::~AabbLocator() = default;
 
 void AabbLocator::update() {
   const WallSet& walls = *walls_;
-  const auto& seg = walls.segments().node;
-  const auto& x = walls.nodes().x;
-  tree_->sources.resize(seg.size());
-  for (std::size_t s = 0; s < seg.size(); ++s) {
-    const Vec2& xa = x[static_cast<std::size_t>(seg[s][0])];
-    const Vec2& xb = x[static_cast<std::size_t>(seg[s][1])];
-    tree_->sources[s] = {static_cast<int>(s), {xa.x(), xa.y(), 0.0}, {xb.x(), xb.y(), 0.0}};
-  }
+  tree_->sources.resize(walls.segments().size());
+  for (std::size_t s = 0; s < tree_->sources.size(); ++s)
+    tree_->sources[s] = detail::segment_geometry(walls, static_cast<int>(s));
   tree_->tree.rebuild(tree_->sources.begin(), tree_->sources.end());
 }
 
@@ -84,7 +74,7 @@ template <class Point> void AabbLocator::run(std::size_t n, Point&& point, WallH
   detail::batch_query(
       walls, r_e_, n, point,
       [&](const Vec2& p, detail::Nearest& best) {
-        NearestWithin traits{walls, p, best};
+        NearestWithin traits{p, best};
         tree.traversal(0, traits);
       },
       hits);

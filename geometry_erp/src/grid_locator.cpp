@@ -53,11 +53,13 @@ void GridLocator::update() {
   for (std::size_t c = 0; c < cells; ++c) cell_begin_[c + 1] += cell_begin_[c];
   cell_segment_.resize(static_cast<std::size_t>(cell_begin_[cells]));
   for (std::size_t s = 0; s < seg.size(); ++s) {
+    const SegmentGeometry geometry = detail::segment_geometry(walls, static_cast<int>(s));
     cell_range(seg[s], i0, i1, j0, j1);
     for (int j = j0; j <= j1; ++j)
-      for (int i = i0; i <= i1; ++i)
-        cell_segment_[static_cast<std::size_t>(
-            cell_begin_[static_cast<std::size_t>(j * nx_ + i)]++)] = static_cast<int>(s);
+      for (int i = i0; i <= i1; ++i) {
+        int& next = cell_begin_[static_cast<std::size_t>(j * nx_ + i)];
+        cell_segment_[static_cast<std::size_t>(next++)] = geometry;
+      }
   }
   // The fill pass advanced each offset to the next cell's start: shift back.
   for (std::size_t c = cells; c > 0; --c) cell_begin_[c] = cell_begin_[c - 1];
@@ -78,7 +80,7 @@ template <class Point> void GridLocator::run(std::size_t n, Point&& point, WallH
           for (int i = std::max(ci - 1, 0); i <= std::min(ci + 1, nx_ - 1); ++i) {
             const auto c = static_cast<std::size_t>(j * nx_ + i);
             for (int k = cell_begin_[c]; k < cell_begin_[c + 1]; ++k)
-              detail::consider_segment(walls, cell_segment_[static_cast<std::size_t>(k)], p, best);
+              detail::consider_segment(cell_segment_[static_cast<std::size_t>(k)], p, best);
           }
       },
       hits);

@@ -1,5 +1,6 @@
 #pragma once
 // Shared by the locator back-ends: distance to one segment and the hit record of eqs. 18-19.
+#include "geometry_erp/segment_geometry.hpp"
 #include "geometry_erp/wall_locator.hpp"
 
 #include "fsi/core/parallel.hpp"
@@ -17,17 +18,27 @@ struct Nearest {
   double d2;
 };
 
-/// Nearest point of segment s to p; replaces `best` if strictly nearer, or equally near with a
-/// lower segment index.
-inline void consider_segment(const WallSet& walls, int s, const Vec2& p, Nearest& best) {
+inline SegmentGeometry segment_geometry(const WallSet& walls, int s) {
   const auto& [a, b] = walls.segments().node[static_cast<std::size_t>(s)];
   const Vec2& xa = walls.nodes().x[static_cast<std::size_t>(a)];
   const Vec2& xb = walls.nodes().x[static_cast<std::size_t>(b)];
   const Vec2 ab = xb - xa;
-  const double t = std::clamp((p - xa).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
-  const Vec2 q = t == 1.0 ? xb : Vec2(xa + t * ab);
-  const double d2 = (p - q).squaredNorm();
-  if (d2 < best.d2 || (d2 == best.d2 && best.segment >= 0 && s < best.segment)) best = {s, t, d2};
+  const double length2 = ab.dot(ab);
+  return {xa, xb, ab, length2, 1.0 / length2, s};
+}
+
+/// Nearest point of a segment to p; replaces `best` if strictly nearer, or equally near with a
+/// lower segment index. The projection is compared with |ab|^2 before dividing, so a particle on
+/// node b gets t = 1 exactly (p - a and ab are then the same numbers), and on node a t = 0.
+/// Written without branches: the candidates of one particle make them unpredictable.
+inline void consider_segment(const SegmentGeometry& g, const Vec2& p, Nearest& best) {
+  const double along = (p - g.a).dot(g.ab);
+  const double t = along >= g.length2 ? 1.0 : std::max(along * g.inv_length2, 0.0);
+  const double d2 = (p - (g.a + t * g.ab)).squaredNorm();
+  const bool nearer = d2 < best.d2 || (d2 == best.d2 && g.id < best.segment);
+  best.segment = nearer ? g.id : best.segment;
+  best.t = nearer ? t : best.t;
+  best.d2 = nearer ? d2 : best.d2;
 }
 
 /// Writes particle i's record from its nearest segment (see wall_locator.hpp for the rules).
@@ -48,7 +59,7 @@ inline void write_hit(const WallSet& walls, double r_e, const Vec2& p, const Nea
   const Vec2 n_fluid = t == 0.0   ? walls.node_normal(a, best.segment)
                        : t == 1.0 ? walls.node_normal(b, best.segment)
                                   : walls.segment_normal(best.segment);
-  const double r = std::sqrt(best.d2);
+  const double r = (p - x_wall).norm();
   hits.t[i] = t;
   hits.r[i] = r;
   hits.x_wall[i] = x_wall;

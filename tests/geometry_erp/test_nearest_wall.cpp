@@ -72,7 +72,7 @@ TEST_CASE("nearest wall: both back-ends agree with brute force on random polygon
   std::mt19937 rng(12345);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   int checked = 0, crossed_checked = 0, on_vertex = 0, on_segment = 0;
-  for (int polygon = 0; polygon < 1500; ++polygon) {
+  for (int polygon = 0; polygon < 5000; ++polygon) {
     const double radius = 0.5 + u(rng);
     const Vec2 center(4.0 * u(rng) - 2.0, 4.0 * u(rng) - 2.0);
     std::vector<Vec2> points = star_polygon(rng, center, radius);
@@ -159,10 +159,10 @@ TEST_CASE("nearest wall: both back-ends agree with brute force on random polygon
       }
     }
   }
-  CHECK(checked > 40000);
-  CHECK(crossed_checked > 20000);
-  CHECK(on_vertex > 10000);
-  CHECK(on_segment > 10000);
+  CHECK(checked > 100000);
+  CHECK(crossed_checked > 50000);
+  CHECK(on_vertex > 40000);
+  CHECK(on_segment > 40000);
 }
 
 TEST_CASE("nearest wall: convex and concave corners of a tank", "[nearest]") {
