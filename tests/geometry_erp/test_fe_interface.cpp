@@ -83,8 +83,19 @@ TEST_CASE("FE interface: NCR round trip, positions, fluid side, parent coordinat
                          t * walls.nodes().x[static_cast<std::size_t>(b)];
       CHECK((x_fe - x_seg).norm() < 1e-15);
     }
+    // Point-load weights: sum 1 and first moment = the load point (force and moment kept).
+    const auto [K_load, N_load] = fe.load_weights(s, 0.3);
+    CHECK(K_load == K);
+    CHECK_THAT(N_load[0] + N_load[1] + N_load[2], WithinAbs(1.0, 1e-15));
+    const Vec2 moment_arm = N_load[0] * block.X0[static_cast<std::size_t>(K[0])] +
+                            N_load[1] * block.X0[static_cast<std::size_t>(K[1])] +
+                            N_load[2] * block.X0[static_cast<std::size_t>(K[2])];
+    CHECK((moment_arm - (0.7 * walls.nodes().x[static_cast<std::size_t>(a)] +
+                         0.3 * walls.nodes().x[static_cast<std::size_t>(b)]))
+              .norm() < 1e-15);
     // Mid node <-> xi = 0.
     const int mid_end = fe.fe_node(a) == K[1] ? 0 : 1;
+    CHECK(fe.half(s) == mid_end); // the half K1 -> Km ends at the mid node
     CHECK(fe.parent_coordinate(s, mid_end) == 0.0);
     CHECK(std::abs(fe.parent_coordinate(s, 1 - mid_end)) == 1.0);
   }

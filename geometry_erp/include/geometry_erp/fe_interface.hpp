@@ -47,8 +47,20 @@ public:
   /// Parent coordinate on that edge of the point at local coordinate t on segment s (t = 0 at
   /// the segment's node a): xi = xi_a + t (xi_b - xi_a); the mid node is xi = 0.
   double parent_coordinate(int s, double t) const;
+  /// Which half of its FE edge segment s is: 0 for Km -> K0 (xi in [-1, 0]), 1 for K1 -> Km.
+  int half(int s) const { return (s - first_segment_) % 2 == 0 ? 1 : 0; }
   /// The FE edge's nodes (K0, Km, K1).
   const std::array<int, 3>& edge_nodes(int e) const { return edges_[static_cast<std::size_t>(e)]; }
+
+  /// FE nodes and shape-function weights that share a point load at local coordinate t on
+  /// segment s (eq. 58): node K[k] receives N[k] times the load; the weights sum to 1.
+  struct LoadWeights {
+    std::array<int, 3> K;
+    std::array<double, 3> N;
+  };
+  LoadWeights load_weights(int s, double t) const {
+    return {edge_nodes(edge(s)), edge_shape_functions(parent_coordinate(s, t))};
+  }
 
   /// Eqs. 60-62: x_L = X0_K + u_K, v_L = v_K, a_L = a_K for every interface node, with u, v, a
   /// the FE arrays interleaved by degree of freedom (component c of node K at 2K + c).
