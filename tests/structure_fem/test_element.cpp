@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "fsi/core/error.hpp"
+#include "fsi/core/parallel.hpp"
 #include "structure_fem/assembly.hpp"
 #include "structure_fem/loads.hpp"
 #include "structure_fem/rectangle_mesher.hpp"
@@ -157,4 +158,21 @@ TEST_CASE("an inverted element stops the run with RunError naming it", "[structu
   Vector f;
   CHECK_THROWS_WITH(assembler.assemble(u, f, nullptr),
                     Catch::Contains("element 1") && Catch::Contains("det F"));
+}
+
+TEST_CASE("parallel assembly is bitwise identical to sequential", "[structure_fem][element]") {
+  const Mesh mesh = make_rectangle_mesh({{0.0, 0.0}, 1.0, 0.2, 20, 4});
+  const StVenantKirchhoff material({1.0e6, 0.3, 1000.0, PlaneModel::plane_strain});
+  const DofMap dofs(mesh, {{"left", true, true, {}}});
+  Assembler assembler(mesh, material, dofs);
+  Vector u(2 * static_cast<Eigen::Index>(mesh.num_nodes()));
+  for (Eigen::Index i = 0; i < u.size(); ++i) u[i] = 1e-3 * std::sin(0.37 * static_cast<double>(i));
+  SparseMatrix K1 = assembler.pattern(), K2 = assembler.pattern();
+  Vector f1, f2;
+  fsi::set_sequential(true);
+  assembler.assemble(u, f1, &K1);
+  fsi::set_sequential(false);
+  assembler.assemble(u, f2, &K2);
+  CHECK((f1 - f2).cwiseAbs().maxCoeff() == 0.0);
+  CHECK((K1 - K2).norm() == 0.0);
 }
