@@ -4,7 +4,7 @@
 
 namespace fsi::coupling {
 
-bool RelativeConvergence::measure(double residual_norm) {
+bool RelativeConvergence::measure(double residual_norm, double magnitude) {
   if (first_) {
     first_ = false;
     r0_ = residual_norm;
@@ -16,7 +16,7 @@ bool RelativeConvergence::measure(double residual_norm) {
     return true;
   }
   ratio_ = residual_norm / r0_; // eq. 69
-  return ratio_ < tolerance_;
+  return ratio_ < tolerance_ || residual_norm <= roundoff_floor * magnitude;
 }
 
 std::string RelativeConvergence::criterion() const {

@@ -44,6 +44,12 @@ Eigen::VectorXd coupling_scale(std::size_t n, double dt) {
 
 namespace {
 
+double norm(const std::vector<Vec2>& a) {
+  double sum = 0.0;
+  for (const Vec2& x : a) sum += x.squaredNorm();
+  return std::sqrt(sum);
+}
+
 double norm_of_difference(const std::vector<Vec2>& a, const std::vector<Vec2>& b) {
   double sum = 0.0;
   for (std::size_t i = 0; i < a.size(); ++i) sum += (a[i] - b[i]).squaredNorm();
@@ -139,9 +145,9 @@ void CouplingScheme::advance(double t, double dt) {
     step_.residual_final = rx;
     if (!iterate) break;
 
-    bool done = components_.measures[0]->measure(rx);
+    bool done = components_.measures[0]->measure(rx, norm(output.x));
     for (std::size_t k = 1; k < components_.measures.size(); ++k)
-      done = components_.measures[k]->measure(rv) && done;
+      done = components_.measures[k]->measure(rv, norm(output.v)) && done;
     if (done) break;
     if (it + 1 >= options_.max_iterations) {
       converged = false;

@@ -13,8 +13,9 @@ public:
   virtual std::string_view name() const = 0;
   /// Start of a coupling step: forget r^0.
   virtual void begin_step() = 0;
-  /// Record the residual norm ||r^i|| of evaluation i = 0, 1, ...; true when converged.
-  virtual bool measure(double residual_norm) = 0;
+  /// Record the residual norm ||r^i|| of evaluation i = 0, 1, ... and the norm of the measured
+  /// quantity ||x~^i|| (for a round-off floor); true when converged.
+  virtual bool measure(double residual_norm, double magnitude) = 0;
   /// The number compared with the tolerance at the last measure() (for messages).
   virtual double value() const = 0;
   /// One-line description of the criterion, e.g. "||r||/||r0|| < 1e-4".

@@ -9,7 +9,7 @@ public:
   explicit AbsoluteConvergence(double tolerance) : tolerance_(tolerance) {}
   std::string_view name() const override { return "absolute"; }
   void begin_step() override {}
-  bool measure(double residual_norm) override {
+  bool measure(double residual_norm, double /*magnitude*/) override {
     value_ = residual_norm;
     return residual_norm < tolerance_;
   }
