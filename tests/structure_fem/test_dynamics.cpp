@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "cantilever.hpp"
+#include "fsi/core/error.hpp"
 #include "fsi/core/parallel.hpp"
 
 using namespace fem_test;
@@ -147,4 +148,20 @@ TEST_CASE("save/restore re-runs a step bit for bit; predictor follows eqs. 63-65
   // mass couples the clamped dofs, so only up to a tiny decaying correction).
   Structure fresh(beam_mesh(b), o);
   CHECK_THAT(fresh.acceleration()[2 * k + 1], WithinRel(-9.81, 1e-6));
+}
+
+TEST_CASE("options out of range are InputErrors naming the field", "[structure_fem][options]") {
+  const Beam b;
+  auto bad = beam_options(b);
+  bad.material.poisson_ratio = 0.5;
+  CHECK_THROWS_WITH(Structure(beam_mesh(b), bad), Catch::Contains("poisson_ratio"));
+  bad = beam_options(b);
+  bad.newmark.gamma = 0.4;
+  CHECK_THROWS_WITH(Structure(beam_mesh(b), bad), Catch::Contains("gamma"));
+  bad = beam_options(b);
+  bad.clamped = {{"root", true, true, {}}};
+  CHECK_THROWS_WITH(Structure(beam_mesh(b), bad), Catch::Contains("root"));
+  Structure s(beam_mesh(b), beam_options(b));
+  CHECK_THROWS_AS(s.set_external_forces(Vector::Zero(3)), fsi::InputError);
+  CHECK_THROWS_AS(s.advance(0.0), fsi::InputError);
 }

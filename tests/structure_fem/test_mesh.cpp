@@ -44,3 +44,13 @@ TEST_CASE("validation rejects a mid-node that inverts the Jacobian", "[structure
   mesh.X[1] = {0.5, 0.6};
   CHECK_THROWS_WITH(validate_mesh(mesh), Contains("element 1") && Contains("det J"));
 }
+
+TEST_CASE("validation rejects a zero-area element", "[structure_fem][mesh]") {
+  Mesh mesh;
+  mesh.source = "hand-made";
+  mesh.X = {{0.0, 0.0}, {1.0, 0.0}, {3.0, 0.0}, {0.5, 0.0}, {2.0, 0.0}, {1.5, 0.0}};
+  mesh.elements = {{0, 1, 2, 3, 4, 5}};
+  mesh.element_label = {7};
+  CHECK_THROWS_WITH(validate_mesh(mesh),
+                    Contains("hand-made") && Contains("element 7") && Contains("zero-area"));
+}
