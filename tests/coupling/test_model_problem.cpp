@@ -163,7 +163,8 @@ bool css_unstable(double mu, int steps) {
 
 } // namespace
 
-TEST_CASE("CSS goes unstable above m_a/m = 1; accelerated BGS stays stable", "[coupling][model]") {
+TEST_CASE("CSS goes unstable above m_a/m = 1 while accelerated BGS stays stable",
+          "[coupling][model]") {
   const int steps = 5000;
   const std::vector<double> mu = sweep();
   // Sweep: first unstable ratio on the grid.

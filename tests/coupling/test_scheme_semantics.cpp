@@ -290,7 +290,7 @@ TEST_CASE("second-order predictor (eqs. 63-65)", "[coupling][scheme]") {
   }
 }
 
-TEST_CASE("sub-cycling: fluid sees linear interpolation, structure gets averaged loads",
+TEST_CASE("sub-cycling: fluid sees linear interpolation and structure gets averaged loads",
           "[coupling][scheme]") {
   RecordingFluid fluid;
   PrescribedStructure structure;
@@ -373,7 +373,8 @@ TEST_CASE("one-way structure: prescribed loads at the end of each step", "[coupl
   require_equal(scheme->interface_motion(), g(0.5), 1e-15);
 }
 
-TEST_CASE("registry: components by name, option checks, plugging in", "[coupling][registry]") {
+TEST_CASE("registry: components by name and option checks and plugging in",
+          "[coupling][registry]") {
   Calls calls;
   CountingFluid fluid(calls);
   CountingStructure structure(calls);
