@@ -76,11 +76,25 @@ template <class Point> void GridLocator::run(std::size_t n, Point&& point, WallH
         // Outside the grid by more than one cell (or NaN): no segment within r_e <= h.
         if (!(fi >= -1.0 && fi <= nx_ && fj >= -1.0 && fj <= ny_)) return;
         const int ci = static_cast<int>(fi), cj = static_cast<int>(fj);
+        const auto scan = [&](int i, int j) {
+          const auto c = static_cast<std::size_t>(j * nx_ + i);
+          for (int k = cell_begin_[c]; k < cell_begin_[c + 1]; ++k)
+            detail::consider_segment(cell_segment_[static_cast<std::size_t>(k)], p, best);
+        };
+        // Own cell first; then a neighbour only if its box (grown by a rounding margin) is not
+        // farther than the best segment so far: the nearest point of a segment lies in one of
+        // the cells it is binned in.
+        const bool own = ci >= 0 && ci < nx_ && cj >= 0 && cj < ny_;
+        if (own) scan(ci, cj);
+        const double margin = 1e-9 * h_;
         for (int j = std::max(cj - 1, 0); j <= std::min(cj + 1, ny_ - 1); ++j)
           for (int i = std::max(ci - 1, 0); i <= std::min(ci + 1, nx_ - 1); ++i) {
             const auto c = static_cast<std::size_t>(j * nx_ + i);
-            for (int k = cell_begin_[c]; k < cell_begin_[c + 1]; ++k)
-              detail::consider_segment(cell_segment_[static_cast<std::size_t>(k)], p, best);
+            if ((own && i == ci && j == cj) || cell_begin_[c] == cell_begin_[c + 1]) continue;
+            const double x0 = lo_.x() + i * h_ - margin, y0 = lo_.y() + j * h_ - margin;
+            const double dx = std::max(std::max(x0 - p.x(), p.x() - (x0 + h_ + 2.0 * margin)), 0.0);
+            const double dy = std::max(std::max(y0 - p.y(), p.y() - (y0 + h_ + 2.0 * margin)), 0.0);
+            if (dx * dx + dy * dy <= best.d2) scan(i, j);
           }
       },
       hits);
