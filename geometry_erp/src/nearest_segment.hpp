@@ -28,9 +28,9 @@ inline SegmentGeometry segment_geometry(const WallSet& walls, int s) {
 }
 
 /// Nearest point of a segment to p; replaces `best` if strictly nearer, or equally near with a
-/// lower segment index. The projection is compared with |ab|^2 before dividing, so a particle on
+/// lower segment index. The projection is compared with |ab|^2 before scaling, so a particle on
 /// node b gets t = 1 exactly (p - a and ab are then the same numbers), and on node a t = 0.
-/// Written without branches: the candidates of one particle make them unpredictable.
+/// The update is written as selects (conditional moves): which candidate wins is unpredictable.
 inline void consider_segment(const SegmentGeometry& g, const Vec2& p, Nearest& best) {
   const double along = (p - g.a).dot(g.ab);
   const double t = along >= g.length2 ? 1.0 : std::max(along * g.inv_length2, 0.0);
