@@ -1,6 +1,7 @@
 // Cost of one Newton iteration of the T6 solid, split into assembly (internal force + tangent),
-// factorisation and solve (CHOLMOD), or preconditioner set-up and CG solve (IncompleteCholesky),
-// for about 200, 2k and 20k elements, on 1 and 2 threads.
+// factorisation and solve (CHOLMOD; Eigen's SimplicialLDLT factorisation for comparison), or
+// preconditioner set-up and CG solve (IncompleteCholesky), for about 200, 2k and 20k elements,
+// on 1 and 2 threads (omp_set_num_threads; only the assembly loop is OpenMP-parallel).
 #include <benchmark/benchmark.h>
 
 #include <map>
@@ -89,6 +90,15 @@ void BM_CholmodSolve(benchmark::State& state) {
   set_counters(state, p);
 }
 
+void BM_LdltFactorize(benchmark::State& state) {
+  Problem& p = problem(static_cast<int>(state.range(0)));
+  omp_set_num_threads(static_cast<int>(state.range(1)));
+  auto solver = make_linear_solver({LinearSolverKind::simplicial_ldlt, 1e-10, 0});
+  solver->analyze(p.K_eff);
+  for (auto _ : state) solver->factorize(p.K_eff);
+  set_counters(state, p);
+}
+
 void BM_CgSetup(benchmark::State& state) {
   Problem& p = problem(static_cast<int>(state.range(0)));
   omp_set_num_threads(static_cast<int>(state.range(1)));
@@ -121,6 +131,7 @@ void sizes(benchmark::internal::Benchmark* b) {
 BENCHMARK(BM_Assembly)->Apply(sizes);
 BENCHMARK(BM_CholmodFactorize)->Apply(sizes);
 BENCHMARK(BM_CholmodSolve)->Apply(sizes);
+BENCHMARK(BM_LdltFactorize)->Apply(sizes);
 BENCHMARK(BM_CgSetup)->Apply(sizes);
 BENCHMARK(BM_CgSolve)->Apply(sizes);
 
