@@ -240,3 +240,21 @@ TEST_CASE("nearest wall: SoA overload, thread count and refit give the same answ
     }
   }
 }
+
+TEST_CASE("nearest wall: an empty wall set or a far particle gives no hit", "[nearest]") {
+  WallSet empty;
+  WallSet one;
+  one.add_polyline(std::vector<Vec2>{{0.0, 0.0}, {1.0, 0.0}}, false, 0);
+  const std::vector<Vec2> p{{0.5, 0.2}, {0.5, 5.0}, {-1e300, 1e300}};
+  for (const LocatorKind kind : {LocatorKind::grid, LocatorKind::aabb_tree}) {
+    WallHits hits;
+    make_wall_locator(empty, 0.3, kind)->query(p, hits);
+    for (std::size_t i = 0; i < p.size(); ++i) CHECK(hits.segment[i] == -1);
+    make_wall_locator(one, 0.3, kind)->query(p, hits);
+    CHECK(hits.segment[0] == 0);
+    CHECK_THAT(hits.r[0], WithinAbs(0.2, 1e-15));
+    CHECK(hits.segment[1] == -1);
+    CHECK(std::isinf(hits.r[1]));
+    CHECK(hits.segment[2] == -1);
+  }
+}
