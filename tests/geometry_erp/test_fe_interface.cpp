@@ -24,7 +24,7 @@ struct Block {
 
 } // namespace
 
-TEST_CASE("edge shape functions: partition of unity, nodal values, 1/6 2/3 1/6 split",
+TEST_CASE("erp: edge shape functions: partition of unity, nodal values, 1/6 2/3 1/6 split",
           "[fe_interface]") {
   for (const double xi : {-1.0, -0.4, 0.0, 0.3, 1.0}) {
     const auto N = edge_shape_functions(xi);
@@ -47,7 +47,7 @@ TEST_CASE("edge shape functions: partition of unity, nodal values, 1/6 2/3 1/6 s
   CHECK_THAT(share[2], WithinAbs(1.0 / 6.0, 1e-15));
 }
 
-TEST_CASE("FE interface: NCR round trip, positions, fluid side, parent coordinates",
+TEST_CASE("erp: FE interface: NCR round trip, positions, fluid side, parent coordinates",
           "[fe_interface]") {
   const Block block;
   WallSet walls;
@@ -101,7 +101,7 @@ TEST_CASE("FE interface: NCR round trip, positions, fluid side, parent coordinat
   }
 }
 
-TEST_CASE("FE interface: nodes follow the FE displacement, velocity, acceleration",
+TEST_CASE("erp: FE interface: nodes follow the FE displacement, velocity, acceleration",
           "[fe_interface]") {
   const Block block;
   WallSet walls;
@@ -120,7 +120,7 @@ TEST_CASE("FE interface: nodes follow the FE displacement, velocity, acceleratio
   }
 }
 
-TEST_CASE("FE interface: a node index outside the mesh is an input error", "[fe_interface]") {
+TEST_CASE("erp: FE interface: a node index outside the mesh is an input error", "[fe_interface]") {
   const Block block;
   WallSet walls;
   const std::vector<std::array<int, 3>> bad{{1, 2, 30}};

@@ -30,7 +30,7 @@ Polygon rectangle(double x0, double y0, double x1, double y1) {
 
 } // namespace
 
-TEST_CASE("fill: a rectangle gets the analytic lattice count", "[fill]") {
+TEST_CASE("erp: fill: a rectangle gets the analytic lattice count", "[fill]") {
   const double l0 = 1.46e-3;
   // The dam-break water column 0.146 x 0.292 m: 100 x 200 particles.
   const auto water = fill_lattice(Vec2(0, 0), l0, {rectangle(0.0, 0.0, 100 * l0, 200 * l0)});
@@ -45,7 +45,7 @@ TEST_CASE("fill: a rectangle gets the analytic lattice count", "[fill]") {
   CHECK(clockwise.size() == block.size());
 }
 
-TEST_CASE("fill: holes and walls are excluded with l0/2 clearance", "[fill]") {
+TEST_CASE("erp: fill: holes and walls are excluded with l0/2 clearance", "[fill]") {
   const double l0 = 0.01;
   const Polygon tank = rectangle(0.0, 0.0, 1.0, 0.6);
   Polygon hole;

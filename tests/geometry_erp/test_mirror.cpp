@@ -11,7 +11,7 @@ using namespace fsi;
 using namespace fsi::erp;
 using Catch::Matchers::WithinAbs;
 
-TEST_CASE("R_ref is an involution that flips n and keeps the tangent", "[mirror]") {
+TEST_CASE("erp: R_ref is an involution that flips n and keeps the tangent", "[mirror]") {
   for (const double angle : {0.0, 0.3, 1.7, -2.9}) {
     const Vec2 n(std::cos(angle), std::sin(angle)), tangent(-n.y(), n.x());
     const Mat2 R = R_ref(n);
@@ -23,7 +23,7 @@ TEST_CASE("R_ref is an involution that flips n and keeps the tangent", "[mirror]
   CHECK((R_inv() + Mat2::Identity()).norm() == 0.0);
 }
 
-TEST_CASE("mirror of a point across a segment: other side, same distance", "[mirror]") {
+TEST_CASE("erp: mirror of a point across a segment: other side, same distance", "[mirror]") {
   WallSet walls;
   const std::vector<Vec2> wall{{0.2, 0.1}, {1.3, 0.6}};
   walls.add_polyline(wall, false, 0);
@@ -48,7 +48,8 @@ TEST_CASE("mirror of a point across a segment: other side, same distance", "[mir
   }
 }
 
-TEST_CASE("mirrored velocities: no-slip averages to the wall's tangential velocity", "[mirror]") {
+TEST_CASE("erp: mirrored velocities: no-slip averages to the wall's tangential velocity",
+          "[mirror]") {
   const Vec2 n = Vec2(0.6, 0.8), tangent(-0.8, 0.6);
   const Vec2 v_wall(0.3, -1.2), v_i(2.0, 0.7);
   const Vec2 no_slip = mirror_velocity_no_slip(v_i, v_wall, n);

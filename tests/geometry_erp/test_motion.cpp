@@ -43,14 +43,15 @@ std::string data(const char* name) {
 
 } // namespace
 
-TEST_CASE("sinusoidal translation plus rotation: v and a are the derivatives of x", "[motion]") {
+TEST_CASE("erp: sinusoidal translation plus rotation: v and a are the derivatives of x",
+          "[motion]") {
   const SumMotion motion(
       {std::make_shared<SinusoidTranslation>(Vec2(0.05, -0.02), 0.9, 0.4),
        std::make_shared<SinusoidRotation>(4.0 * std::numbers::pi / 180.0, 1.211, 0.1)});
   for (const double t : {0.0, 0.37, 1.9}) check_second_order(motion, t, 1e-2);
 }
 
-TEST_CASE("sinusoid: value at a quarter period is the amplitude", "[motion]") {
+TEST_CASE("erp: sinusoid: value at a quarter period is the amplitude", "[motion]") {
   const SinusoidRotation rotation(0.07, 2.0, 0.0);
   CHECK_THAT(rotation.at(0.5).theta, Catch::Matchers::WithinAbs(0.07, 1e-15));
   CHECK_THAT(rotation.at(0.5).omega, Catch::Matchers::WithinAbs(0.0, 1e-15));
@@ -59,7 +60,7 @@ TEST_CASE("sinusoid: value at a quarter period is the amplitude", "[motion]") {
              Catch::Matchers::WithinRel(-0.2 * std::numbers::pi * std::numbers::pi, 1e-14));
 }
 
-TEST_CASE("CSV tables: spline through the rows, v and a second-order consistent", "[motion]") {
+TEST_CASE("erp: CSV tables: spline through the rows, v and a second-order consistent", "[motion]") {
   const auto rotation = std::make_shared<TableRotation>(data("motion_rotation.csv"));
   const auto translation = std::make_shared<TableTranslation>(data("motion_translation.csv"));
   // Row t = 0.5 of the rotation table.
@@ -79,7 +80,7 @@ TEST_CASE("CSV tables: spline through the rows, v and a second-order consistent"
              Catch::Matchers::WithinRel(theta_row * std::numbers::pi / 180.0, 1e-14));
 }
 
-TEST_CASE("CSV tables: a bad line names file and line", "[motion]") {
+TEST_CASE("erp: CSV tables: a bad line names file and line", "[motion]") {
   const std::string bad = data("motion_bad_line.csv");
   CHECK_THROWS_WITH(TableRotation(bad), Catch::Matchers::StartsWith(bad + ":5: "));
   const std::string decreasing = data("motion_time_decreasing.csv");
@@ -89,7 +90,7 @@ TEST_CASE("CSV tables: a bad line names file and line", "[motion]") {
   CHECK_THROWS_AS(TableRotation(data("no_such_file.csv")), InputError);
 }
 
-TEST_CASE("rigid polyline nodes follow the motion", "[motion]") {
+TEST_CASE("erp: rigid polyline nodes follow the motion", "[motion]") {
   WallSet walls;
   const std::vector<Vec2> points{{0.0, 0.0}, {1.0, 0.0}, {1.0, 1.0}};
   const Vec2 pivot(0.5, 0.0);

@@ -68,7 +68,8 @@ Vec2 left_normal(const Vec2& a, const Vec2& b) {
 
 } // namespace
 
-TEST_CASE("nearest wall: both back-ends agree with brute force on random polygons", "[nearest]") {
+TEST_CASE("erp: nearest wall: both back-ends agree with brute force on random polygons",
+          "[nearest]") {
   std::mt19937 rng(12345);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   int checked = 0, crossed_checked = 0, on_vertex = 0, on_segment = 0;
@@ -165,7 +166,7 @@ TEST_CASE("nearest wall: both back-ends agree with brute force on random polygon
   CHECK(on_segment > 40000);
 }
 
-TEST_CASE("nearest wall: convex and concave corners of a tank", "[nearest]") {
+TEST_CASE("erp: nearest wall: convex and concave corners of a tank", "[nearest]") {
   // Counter-clockwise L-shaped tank: fluid inside; the corner (1, 1) is concave seen from the
   // fluid.
   WallSet walls;
@@ -195,7 +196,8 @@ TEST_CASE("nearest wall: convex and concave corners of a tank", "[nearest]") {
   }
 }
 
-TEST_CASE("nearest wall: SoA overload, thread count and refit give the same answer", "[nearest]") {
+TEST_CASE("erp: nearest wall: SoA overload, thread count and refit give the same answer",
+          "[nearest]") {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   WallSet walls;
@@ -241,7 +243,7 @@ TEST_CASE("nearest wall: SoA overload, thread count and refit give the same answ
   }
 }
 
-TEST_CASE("nearest wall: an empty wall set or a far particle gives no hit", "[nearest]") {
+TEST_CASE("erp: nearest wall: an empty wall set or a far particle gives no hit", "[nearest]") {
   WallSet empty;
   WallSet one;
   one.add_polyline(std::vector<Vec2>{{0.0, 0.0}, {1.0, 0.0}}, false, 0);

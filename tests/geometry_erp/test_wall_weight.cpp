@@ -24,7 +24,7 @@ double block_pnd(int k, int rows, int half, double l0, const WeightFunction& w) 
 
 } // namespace
 
-TEST_CASE("n0 and lambda0 of the quadratic weight for r_e = 1.5 l0", "[wall_weight]") {
+TEST_CASE("erp: n0 and lambda0 of the quadratic weight for r_e = 1.5 l0", "[wall_weight]") {
   // Neighbours within r_e: 4 at l0, 4 at sqrt(2) l0.
   const double l0 = 0.01, r_e = 1.5 * l0;
   const QuadraticWeight w{r_e};
@@ -35,7 +35,7 @@ TEST_CASE("n0 and lambda0 of the quadratic weight for r_e = 1.5 l0", "[wall_weig
              WithinRel((4.0 * w1 * l0 * l0 + 8.0 * w2 * l0 * l0) / n0, 1e-14));
 }
 
-TEST_CASE("z(r) table matches the direct lattice sum", "[wall_weight]") {
+TEST_CASE("erp: z(r) table matches the direct lattice sum", "[wall_weight]") {
   const double l0 = 1.46e-3, r_e = 3.1 * l0;
   const QuadraticWeight w{r_e};
   const WallWeightTable z(l0, r_e, w);
@@ -53,7 +53,7 @@ TEST_CASE("z(r) table matches the direct lattice sum", "[wall_weight]") {
   CHECK(z(r_e - 0.5 * l0 + 1e-9 * l0) == 0.0);
 }
 
-TEST_CASE("n_i + z(r_i) = n0 for every fluid row next to a flat wall", "[wall_weight]") {
+TEST_CASE("erp: n_i + z(r_i) = n0 for every fluid row next to a flat wall", "[wall_weight]") {
   const double l0 = 1.0;
   for (const double r_e : {2.1, 3.1, 4.0}) {
     const QuadraticWeight quadratic{r_e};
