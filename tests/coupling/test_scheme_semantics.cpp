@@ -433,3 +433,22 @@ TEST_CASE("registry: components by name and option checks and plugging in",
   REQUIRE(scheme->last_step().omega.has_value());
   CHECK(*scheme->last_step().omega == 0.25);
 }
+
+TEST_CASE("option declarations cover every field with its default and range",
+          "[coupling][registry]") {
+  const auto decl = option_declarations(builtin_registry());
+  REQUIRE(decl.size() == 13);
+  auto find = [&](const std::string& key) {
+    for (const auto& d : decl)
+      if (d.key == key) return d;
+    FAIL("no declaration " << key);
+    return OptionDeclaration{};
+  };
+  CHECK(find("tolerance").default_value == "0.0001");
+  CHECK(find("tolerance").range == "(0, inf)");
+  CHECK(find("max_iterations").default_value == "200");
+  CHECK(find("omega").range == "(0, 2]");
+  CHECK(find("acceleration").range == "one of: aitken constant iqn-ils none");
+  CHECK(find("stop_on_unconverged").default_value == "false");
+  CHECK_NOTHROW(validate_options(CouplingOptions{}, builtin_registry()));
+}

@@ -1,7 +1,9 @@
 #pragma once
-// Coupling options: a plain struct filled by the config layer (no YAML here). Every field is
-// declared once with its default, allowed range and meaning; validate_options() checks them.
+// Coupling options: a plain struct filled by the config layer (no YAML here). Defaults are the
+// member initialisers; allowed ranges and one-line docs are declared once in options.cpp, where
+// both validate_options() and option_declarations() (for the generated scene reference) read them.
 #include <string>
+#include <vector>
 
 namespace fsi::coupling {
 
@@ -36,6 +38,14 @@ struct CouplingOptions {
   /// [1, 100000]: fluid sub-steps per coupling (structure) step.
   int substeps = 1;
 };
+
+/// One option as declared: scene key coupling.<key>, default, allowed range, one-line doc.
+struct OptionDeclaration {
+  std::string key, default_value, range, doc;
+};
+
+/// Every CouplingOptions field in declaration order; name ranges list the registry's names.
+std::vector<OptionDeclaration> option_declarations(const Registry& registry);
 
 /// Throws fsi::InputError (`coupling.KEY: value V is out of range R` or `unknown name`) for the
 /// first invalid field. Component names are checked against `registry`.
