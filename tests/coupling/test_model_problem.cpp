@@ -105,6 +105,23 @@ TEST_CASE("BGS converges to the monolithic solution", "[coupling][model]") {
   }
 }
 
+TEST_CASE("BGS with velocity measure and with the absolute measure", "[coupling][model]") {
+  model::Parameters p;
+  p.ma = 2.0 * p.m;
+  p.f = [](double t) { return Vec2(5.0 * std::sin(3.0 * t), 0.0); };
+  CouplingOptions o = bgs("iqn-ils", 1e-6);
+  o.converge_velocities = true;
+  RunResult r = run(p, o, 1e-3, 500);
+  CHECK(r.unconverged == 0);
+  CHECK(r.max_error_monolithic < 1e-8);
+  o = bgs("aitken");
+  o.convergence = "absolute";
+  o.tolerance = 1e-13; // [m]
+  r = run(p, o, 1e-3, 500);
+  CHECK(r.unconverged == 0);
+  CHECK(r.max_error_monolithic < 1e-9);
+}
+
 TEST_CASE("plain BGS diverges above m_a/m = 1 + k dt^2/4m", "[coupling][model]") {
   model::Parameters p;
   p.ma = 1.2 * p.m;
