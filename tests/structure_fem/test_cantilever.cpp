@@ -93,3 +93,29 @@ TEST_CASE("CHOLMOD refuses an indefinite matrix", "[structure_fem][solver]") {
   const Vector x = umfpack->solve(Vector::Ones(3));
   CHECK_THAT(x[1], Catch::Matchers::WithinAbs(-0.5, 1e-15));
 }
+
+TEST_CASE("past the buckling load CHOLMOD stops and UMFPACK follows the straight path",
+          "[structure_fem][solver]") {
+  // Slender plane-stress column, EI = 1, Euler load of a cantilever pi^2 EI / (4 L^2) = 2.47;
+  // an axial dead load of 4 on the perfect column leaves it straight with an indefinite K_T.
+  Beam b;
+  b.L = 1.0, b.h = 0.01, b.nu = 0.0, b.E = 12.0 / (b.h * b.h * b.h), b.ex = 40, b.ey = 2;
+  b.plane = PlaneModel::plane_stress;
+  const double P = 4.0;
+  auto solve = [&](LinearSolverKind kind) {
+    auto o = beam_options(b);
+    o.linear_solver.kind = kind;
+    Structure s(beam_mesh(b), o);
+    s.set_external_forces(edge_traction_forces(s.mesh(), "right", {-P / b.h, 0.0}));
+    s.solve_static({4});
+    return Vector(s.displacement());
+  };
+  CHECK_THROWS_WITH(solve(LinearSolverKind::cholmod), Catch::Contains("cholmod") &&
+                                                          Catch::Contains("factorisation failed") &&
+                                                          Catch::Contains("load step"));
+  const Vector u = solve(LinearSolverKind::umfpack);
+  const Beam& c = b;
+  const int tip = tip_node(beam_mesh(c), c);
+  CHECK_THAT(u[2 * tip], Catch::Matchers::WithinRel(-P * b.L / (b.E * b.h), 1e-3));
+  CHECK(std::abs(u[2 * tip + 1]) < 1e-12);
+}
