@@ -8,7 +8,7 @@
 
 using namespace fem_test;
 
-TEST_CASE("cantilever tip deflection agrees with CalculiX", "[structure_fem][calculix]") {
+TEST_CASE("fem: cantilever tip deflection agrees with CalculiX", "[structure_fem][calculix]") {
   if (!ccx_available()) {
     WARN("ccx not found: skipped");
     return;

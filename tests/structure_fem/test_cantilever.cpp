@@ -8,7 +8,7 @@
 
 using namespace fem_test;
 
-TEST_CASE("cantilever tip deflection matches Timoshenko beam theory",
+TEST_CASE("fem: cantilever tip deflection matches Timoshenko beam theory",
           "[structure_fem][cantilever]") {
   const Beam b;           // L = 1, h = 0.1, plane strain, nu = 0.3, 40 x 4 quads
   const double P = 1.0e4; // deflection ~ 2e-4 L: linear regime
@@ -19,7 +19,7 @@ TEST_CASE("cantilever tip deflection matches Timoshenko beam theory",
   CHECK_THAT(fem, Catch::Matchers::WithinRel(beam, 0.01));
 }
 
-TEST_CASE("cantilever tip error converges at the rate of quadratic elements",
+TEST_CASE("fem: cantilever tip error converges at the rate of quadratic elements",
           "[structure_fem][convergence]") {
   // A full clamp has corner singularities that cap any element's rate on uniform meshes (see
   // docs/structure_fem.md). Here the root is a symmetry plane (roller u_x = 0, u_y = 0 at its
@@ -54,7 +54,7 @@ TEST_CASE("cantilever tip error converges at the rate of quadratic elements",
   CHECK(p2 > 3.0);
 }
 
-TEST_CASE("linear solvers give the same solution", "[structure_fem][solver]") {
+TEST_CASE("fem: linear solvers give the same solution", "[structure_fem][solver]") {
   Beam b;
   b.ex = 20, b.ey = 4;
   auto solve = [&](LinearSolverKind kind) {
@@ -78,7 +78,7 @@ TEST_CASE("linear solvers give the same solution", "[structure_fem][solver]") {
   }
 }
 
-TEST_CASE("CHOLMOD refuses an indefinite matrix", "[structure_fem][solver]") {
+TEST_CASE("fem: CHOLMOD refuses an indefinite matrix", "[structure_fem][solver]") {
   SparseMatrix A(3, 3);
   A.insert(0, 0) = 1.0;
   A.insert(1, 1) = -2.0;
@@ -94,7 +94,7 @@ TEST_CASE("CHOLMOD refuses an indefinite matrix", "[structure_fem][solver]") {
   CHECK_THAT(x[1], Catch::Matchers::WithinAbs(-0.5, 1e-15));
 }
 
-TEST_CASE("past the buckling load CHOLMOD stops and UMFPACK follows the straight path",
+TEST_CASE("fem: past the buckling load CHOLMOD stops and UMFPACK follows the straight path",
           "[structure_fem][solver]") {
   // Slender plane-stress column, EI = 1, Euler load of a cantilever pi^2 EI / (4 L^2) = 2.47;
   // an axial dead load of 4 on the perfect column leaves it straight with an indefinite K_T.

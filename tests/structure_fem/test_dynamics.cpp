@@ -52,7 +52,7 @@ std::vector<double> upward_crossings(Structure& s, int tip, double dt, int steps
 
 } // namespace
 
-TEST_CASE("first natural frequency from a free-vibration time history",
+TEST_CASE("fem: first natural frequency from a free-vibration time history",
           "[structure_fem][dynamics]") {
   const Sequential sequential;
   Beam b;
@@ -69,7 +69,7 @@ TEST_CASE("first natural frequency from a free-vibration time history",
   CHECK_THAT(period, WithinRel(T, 0.02));
 }
 
-TEST_CASE("Newmark energy: conserved with beta = 1/4, decaying with the paper's default",
+TEST_CASE("fem: Newmark energy: conserved with beta = 1/4, decaying with the paper's default",
           "[structure_fem][dynamics][energy]") {
   const Sequential sequential;
   Beam b;
@@ -110,7 +110,7 @@ TEST_CASE("Newmark energy: conserved with beta = 1/4, decaying with the paper's 
   for (std::size_t p = 1; p < damped.size(); ++p) CHECK(damped[p] <= damped[p - 1] * (1 + 1e-12));
 }
 
-TEST_CASE("save/restore re-runs a step bit for bit; predictor follows eqs. 63-65",
+TEST_CASE("fem: save/restore re-runs a step bit for bit; predictor follows eqs. 63-65",
           "[structure_fem][dynamics]") {
   Beam b;
   b.h = 0.1, b.E = 1.0e7, b.rho = 1000.0, b.ex = 10, b.ey = 2;
@@ -150,7 +150,8 @@ TEST_CASE("save/restore re-runs a step bit for bit; predictor follows eqs. 63-65
   CHECK_THAT(fresh.acceleration()[2 * k + 1], WithinRel(-9.81, 1e-6));
 }
 
-TEST_CASE("options out of range are InputErrors naming the field", "[structure_fem][options]") {
+TEST_CASE("fem: options out of range are InputErrors naming the field",
+          "[structure_fem][options]") {
   const Beam b;
   auto bad = beam_options(b);
   bad.material.poisson_ratio = 0.5;

@@ -59,7 +59,7 @@ Beam slender_beam() {
 
 } // namespace
 
-TEST_CASE("elastica reference reproduces Mattiasson's values", "[structure_fem][elastica]") {
+TEST_CASE("fem: elastica reference reproduces Mattiasson's values", "[structure_fem][elastica]") {
   const ElasticaTip k1 = elastica(1.0), k10 = elastica(10.0);
   CHECK_THAT(k1.v, WithinAbs(0.30172, 2e-5));
   CHECK_THAT(k1.u, WithinAbs(0.05643, 2e-5));
@@ -69,7 +69,7 @@ TEST_CASE("elastica reference reproduces Mattiasson's values", "[structure_fem][
   CHECK_THAT(k10.u, WithinAbs(0.55500, 2e-5));
 }
 
-TEST_CASE("slender cantilever under a dead end load follows the elastica",
+TEST_CASE("fem: slender cantilever under a dead end load follows the elastica",
           "[structure_fem][elastica]") {
   const Beam b = slender_beam();
   auto options = beam_options(b);
@@ -89,7 +89,8 @@ TEST_CASE("slender cantilever under a dead end load follows the elastica",
   }
 }
 
-TEST_CASE("Newton–Raphson converges quadratically in a nonlinear step", "[structure_fem][newton]") {
+TEST_CASE("fem: Newton–Raphson converges quadratically in a nonlinear step",
+          "[structure_fem][newton]") {
   // From equilibrium at k = 2 (large rotation), a 10 % load increment: Newton starts near the
   // solution, where the consistent tangent must give quadratic convergence.
   Beam b = slender_beam();
@@ -120,7 +121,7 @@ TEST_CASE("Newton–Raphson converges quadratically in a nonlinear step", "[stru
   CHECK(order > 1.8);
 }
 
-TEST_CASE("Newton failure is a RunError naming the step", "[structure_fem][newton]") {
+TEST_CASE("fem: Newton failure is a RunError naming the step", "[structure_fem][newton]") {
   Beam b = slender_beam();
   b.ex = 20;
   auto options = beam_options(b);

@@ -48,7 +48,7 @@ fsi::Mat2 first_piola(const Material& m, const fsi::Mat2& F) {
 
 } // namespace
 
-TEST_CASE("patch test: homogeneous finite deformation gives uniform SVK stress",
+TEST_CASE("fem: patch test: homogeneous finite deformation gives uniform SVK stress",
           "[structure_fem][patch]") {
   const Mesh mesh = distorted_patch();
   const StVenantKirchhoff material(steel());
@@ -84,7 +84,8 @@ TEST_CASE("patch test: homogeneous finite deformation gives uniform SVK stress",
   CHECK(((nodal.array() - vm).abs().maxCoeff()) / vm < 1e-10);
 }
 
-TEST_CASE("patch test: static solve reproduces a uniform biaxial state", "[structure_fem][patch]") {
+TEST_CASE("fem: patch test: static solve reproduces a uniform biaxial state",
+          "[structure_fem][patch]") {
   for (auto plane : {PlaneModel::plane_strain, PlaneModel::plane_stress}) {
     StructureOptions o;
     o.material = steel(plane);
@@ -109,7 +110,8 @@ TEST_CASE("patch test: static solve reproduces a uniform biaxial state", "[struc
   }
 }
 
-TEST_CASE("element tangent is the derivative of the internal force", "[structure_fem][element]") {
+TEST_CASE("fem: element tangent is the derivative of the internal force",
+          "[structure_fem][element]") {
   const ElementNodes X{fsi::Vec2(0.0, 0.0),  fsi::Vec2(1.0, 0.1),   fsi::Vec2(0.2, 0.9),
                        fsi::Vec2(0.5, 0.02), fsi::Vec2(0.62, 0.52), fsi::Vec2(0.08, 0.47)};
   const ElementT6 element(X);
@@ -136,7 +138,7 @@ TEST_CASE("element tangent is the derivative of the internal force", "[structure
   CHECK((K - K_fd).norm() / K.norm() < 1e-7);
 }
 
-TEST_CASE("consistent mass integrates rho exactly", "[structure_fem][element]") {
+TEST_CASE("fem: consistent mass integrates rho exactly", "[structure_fem][element]") {
   const ElementNodes X{fsi::Vec2(0.0, 0.0), fsi::Vec2(2.0, 0.0), fsi::Vec2(0.0, 1.0),
                        fsi::Vec2(1.0, 0.0), fsi::Vec2(1.0, 0.5), fsi::Vec2(0.0, 0.5)};
   const Mat12 M = t6_mass(X, 3.0);
@@ -148,7 +150,8 @@ TEST_CASE("consistent mass integrates rho exactly", "[structure_fem][element]") 
   CHECK_THAT(M(6, 6), WithinRel(3.0 * 8.0 / 45.0, 1e-12)); // mid-node: 8 rho A / 45
 }
 
-TEST_CASE("an inverted element stops the run with RunError naming it", "[structure_fem][element]") {
+TEST_CASE("fem: an inverted element stops the run with RunError naming it",
+          "[structure_fem][element]") {
   const Mesh mesh = make_rectangle_mesh({{0.0, 0.0}, 1.0, 1.0, 1, 1});
   const StVenantKirchhoff material({1.0e6, 0.3, 1000.0, PlaneModel::plane_strain});
   const DofMap dofs(mesh, {});
@@ -160,7 +163,7 @@ TEST_CASE("an inverted element stops the run with RunError naming it", "[structu
                     Catch::Contains("element 1") && Catch::Contains("det F"));
 }
 
-TEST_CASE("parallel assembly is bitwise identical to sequential", "[structure_fem][element]") {
+TEST_CASE("fem: parallel assembly is bitwise identical to sequential", "[structure_fem][element]") {
   const Mesh mesh = make_rectangle_mesh({{0.0, 0.0}, 1.0, 0.2, 20, 4});
   const StVenantKirchhoff material({1.0e6, 0.3, 1000.0, PlaneModel::plane_strain});
   const DofMap dofs(mesh, {{"left", true, true, {}}});

@@ -15,7 +15,8 @@ std::string fixture(const std::string& name) {
 }
 } // namespace
 
-TEST_CASE("Gmsh reader: valid second-order mesh with physical groups", "[structure_fem][gmsh]") {
+TEST_CASE("fem: Gmsh reader: valid second-order mesh with physical groups",
+          "[structure_fem][gmsh]") {
   const Mesh mesh = read_gmsh(fixture("valid.msh"), {"clamped", "interface", "solid"});
   CHECK(mesh.num_nodes() == 15);
   CHECK(mesh.num_elements() == 4);
@@ -31,7 +32,7 @@ TEST_CASE("Gmsh reader: valid second-order mesh with physical groups", "[structu
   CHECK(mesh.X[7].y() == 0.5);
 }
 
-TEST_CASE("Gmsh reader: malformed files throw InputError naming the problem",
+TEST_CASE("fem: Gmsh reader: malformed files throw InputError naming the problem",
           "[structure_fem][gmsh]") {
   CHECK_THROWS_AS(read_gmsh(fixture("inverted_element.msh")), fsi::InputError);
   CHECK_THROWS_WITH(read_gmsh(fixture("inverted_element.msh")), Contains("inverted_element.msh:") &&

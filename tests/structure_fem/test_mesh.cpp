@@ -9,7 +9,7 @@ using namespace fsi::fem;
 using Catch::Contains;
 using Catch::Matchers::WithinRel;
 
-TEST_CASE("rectangle mesher: counts, tags, orientation", "[structure_fem][mesh]") {
+TEST_CASE("fem: rectangle mesher: counts, tags, orientation", "[structure_fem][mesh]") {
   const Mesh mesh = make_rectangle_mesh({{1.0, 2.0}, 3.0, 0.5, 6, 2});
   CHECK(mesh.num_elements() == 2 * 6 * 2);
   CHECK(mesh.num_nodes() == 13 * 5);
@@ -35,7 +35,7 @@ TEST_CASE("rectangle mesher: counts, tags, orientation", "[structure_fem][mesh]"
   CHECK_THROWS_AS(make_rectangle_mesh({{0.0, 0.0}, -1.0, 1.0, 2, 2}), fsi::InputError);
 }
 
-TEST_CASE("validation rejects a mid-node that inverts the Jacobian", "[structure_fem][mesh]") {
+TEST_CASE("fem: validation rejects a mid-node that inverts the Jacobian", "[structure_fem][mesh]") {
   Mesh mesh = make_rectangle_mesh({{0.0, 0.0}, 1.0, 1.0, 1, 1});
   // Mid-node 1 (bottom edge) moved off the edge midpoint: allowed while det J > 0 ...
   mesh.X[1] = {0.5, 0.1};
@@ -45,7 +45,7 @@ TEST_CASE("validation rejects a mid-node that inverts the Jacobian", "[structure
   CHECK_THROWS_WITH(validate_mesh(mesh), Contains("element 1") && Contains("det J"));
 }
 
-TEST_CASE("validation rejects a zero-area element", "[structure_fem][mesh]") {
+TEST_CASE("fem: validation rejects a zero-area element", "[structure_fem][mesh]") {
   Mesh mesh;
   mesh.source = "hand-made";
   mesh.X = {{0.0, 0.0}, {1.0, 0.0}, {3.0, 0.0}, {0.5, 0.0}, {2.0, 0.0}, {1.5, 0.0}};
