@@ -1,16 +1,16 @@
 #include "fsi/core/error.hpp"
 #include "fsi_app/run.hpp"
+#include "fsi_app/structure_model.hpp"
 
 namespace fsi::app {
 
 std::vector<std::unique_ptr<Model>> build_models(const Scene& scene) {
-  std::vector<std::unique_ptr<Model>> models;
   if (scene.fluid)
     throw InputError(scene.path.string() +
-                     ": fluid: the EMPS fluid solver is not part of this build yet");
-  if (!scene.structures.empty())
-    throw InputError(scene.path.string() +
-                     ": structures: the FEM solver is not part of this build yet");
+                     ": fluid: the EMPS fluid is not part of this build yet");
+  std::vector<std::unique_ptr<Model>> models;
+  for (const auto& spec : scene.structures)
+    models.push_back(std::make_unique<StructureModel>(scene, spec));
   return models;
 }
 

@@ -200,6 +200,7 @@ MeshSpec read_mesh(Section s) {
 
 StructureSpec read_structure(Section s) {
   StructureSpec st;
+  st.line = s.line();
   st.name = s.text("name", "structure name (probes refer to it)");
   st.mesh = read_mesh(s.required_block("mesh", "the T6 mesh"));
   auto mat = s.required_block("material", "St. Venant-Kirchhoff material");
@@ -349,6 +350,10 @@ Scene read_scene(Section top) {
 }
 
 } // namespace
+
+void fail_at(const Scene& scene, int line, const std::string& key, const std::string& what) {
+  throw InputError(scene.path.string() + ":" + std::to_string(line) + ": " + key + ": " + what);
+}
 
 Scene load_scene(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
   ReadContext ctx;

@@ -15,7 +15,7 @@ int status_of(std::vector<std::string> args, std::string* err_text = nullptr) {
 }
 } // namespace
 
-TEST_CASE("help and version exit 0", "[apps][cli]") {
+TEST_CASE("apps: help and version exit 0", "[apps][cli]") {
   std::ostringstream out, err;
   CHECK(run_cli({"--help"}, out, err, false) == 0);
   CHECK(out.str().find("fsi run SCENE --out DIR") != std::string::npos);
@@ -24,7 +24,7 @@ TEST_CASE("help and version exit 0", "[apps][cli]") {
   CHECK(out.str().rfind("fsi 0.", 0) == 0);
 }
 
-TEST_CASE("malformed command lines exit 2 with one line", "[apps][cli]") {
+TEST_CASE("apps: malformed command lines exit 2 with one line", "[apps][cli]") {
   const std::string scene = FSI_TEST_DATA "/valid_structure.yaml";
   std::string err;
   CHECK(status_of({}, &err) == 2);

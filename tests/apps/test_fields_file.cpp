@@ -11,7 +11,7 @@
 using namespace fsi::app;
 namespace fs = std::filesystem;
 
-TEST_CASE("HDF5 frames round-trip and the XDMF references exist", "[apps][output]") {
+TEST_CASE("apps: HDF5 frames round-trip and the XDMF references exist", "[apps][output]") {
   const fs::path dir = fs::temp_directory_path() / "fsi_test_fields";
   fs::remove_all(dir);
   fs::create_directories(dir);

@@ -27,7 +27,7 @@ CliResult cli(std::vector<std::string> args) {
 
 } // namespace
 
-TEST_CASE("a valid scene reads back its values", "[apps][scene]") {
+TEST_CASE("apps: a valid scene reads back its values", "[apps][scene]") {
   const Scene s = load_scene(data + "valid_structure.yaml", {});
   CHECK(s.name == "valid_structure");
   CHECK(s.gravity.y() == -10.0);
@@ -52,7 +52,7 @@ TEST_CASE("a valid scene reads back its values", "[apps][scene]") {
   CHECK_FALSE(s.fluid);
 }
 
-TEST_CASE("overrides replace entries before validation", "[apps][scene]") {
+TEST_CASE("apps: overrides replace entries before validation", "[apps][scene]") {
   const Scene s = load_scene(data + "valid_structure.yaml",
                              {"time.end=0.5", "structures[0].material.density=2000",
                               "structures[0].linear_solver=cg"});
@@ -61,7 +61,7 @@ TEST_CASE("overrides replace entries before validation", "[apps][scene]") {
   CHECK(s.structures[0].linear_solver == "cg");
 }
 
-TEST_CASE("each class of bad input names file, line and key, exit status 2", "[apps][scene]") {
+TEST_CASE("apps: each class of bad input names file, line and key, exit status 2", "[apps][scene]") {
   struct Case {
     std::string file, prefix, what;
   };
@@ -93,7 +93,7 @@ TEST_CASE("each class of bad input names file, line and key, exit status 2", "[a
   }
 }
 
-TEST_CASE("a bad override fails like a bad scene entry", "[apps][scene]") {
+TEST_CASE("apps: a bad override fails like a bad scene entry", "[apps][scene]") {
   const std::string scene = data + "valid_structure.yaml";
   auto r = cli({"check", scene, "--set", "structures[0].material.density=abc"});
   CHECK(r.status == 2);
@@ -110,7 +110,7 @@ TEST_CASE("a bad override fails like a bad scene entry", "[apps][scene]") {
   CHECK(r.err.find("expected key.path=value") != std::string::npos);
 }
 
-TEST_CASE("docs/scenes.md is the generated scene reference", "[apps][scene]") {
+TEST_CASE("apps: docs/scenes.md is the generated scene reference", "[apps][scene]") {
   std::ifstream in(FSI_SOURCE_DIR "/docs/scenes.md");
   REQUIRE(in);
   std::stringstream text;

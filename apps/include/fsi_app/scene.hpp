@@ -79,6 +79,7 @@ struct PointLoadSpec {
 
 struct StructureSpec {
   std::string name;
+  int line = 0;                    ///< scene line of this entry, for messages after parsing
   MeshSpec mesh;
   double youngs_modulus = 0.0, poisson_ratio = 0.0, density = 0.0;
   std::string plane;               ///< strain | stress
@@ -90,6 +91,7 @@ struct StructureSpec {
   std::string linear_solver;       ///< cg | cholmod | umfpack | ldlt
   std::vector<PointLoadSpec> loads;
 };
+
 
 struct CouplingSpec {
   std::string scheme;              ///< css | bgs | one_way
@@ -115,6 +117,10 @@ struct Scene {
   std::optional<CouplingSpec> coupling;
   std::vector<std::string> overrides; ///< `key=value` as given on the command line
 };
+
+/// `FILE:LINE: KEY: what` for problems found after parsing (e.g. while building a mesh).
+[[noreturn]] void fail_at(const Scene& scene, int line, const std::string& key,
+                          const std::string& what);
 
 /// Reads and validates a scene file with `--set key.path=value` overrides applied first.
 /// Throws fsi::InputError (`FILE:LINE: KEY: what`) on the first problem.

@@ -1,0 +1,34 @@
+#pragma once
+// A structure alone (no fluid): the T6 FEM solid under gravity and the scene's constant loads.
+#include "fsi_app/model.hpp"
+#include "structure_fem/structure.hpp"
+
+#include <memory>
+
+namespace fsi::app {
+
+/// The FEM structure of one scene entry: mesh built, options mapped, probes resolved to nodes.
+/// Throws InputError (scene file and line) for tags, probes or meshes that do not fit.
+std::unique_ptr<fem::Structure> build_structure(const Scene& scene, const StructureSpec& spec);
+
+/// The FE node a displacement probe names (by index, or by reference position).
+int probe_node(const Scene& scene, const fem::Mesh& mesh, const ProbeSpec& probe);
+
+class StructureModel final : public Model {
+public:
+  StructureModel(const Scene& scene, const StructureSpec& spec);
+  void advance(double time, double dt) override;
+  void declare(FieldsFile& file) const override;
+  void write_frame(FieldsFile& file, const std::vector<std::string>& fields) const override;
+  std::optional<double> probe(const ProbeSpec& probe) const override;
+  void report(JsonObject& run) const override;
+
+private:
+  std::string name_;
+  std::unique_ptr<fem::Structure> structure_;
+  std::vector<std::pair<std::string, int>> probe_nodes_; // probe name -> node
+  long newton_iterations_ = 0, steps_ = 0;
+  int newton_max_ = 0;
+};
+
+} // namespace fsi::app

@@ -1,0 +1,166 @@
+#include "fsi_app/structure_model.hpp"
+
+#include "fsi/core/error.hpp"
+#include "structure_fem/gmsh_reader.hpp"
+#include "structure_fem/loads.hpp"
+#include "structure_fem/rectangle_mesher.hpp"
+
+#include <algorithm>
+#include <sstream>
+
+namespace fsi::app {
+
+namespace {
+
+fem::Mesh build_mesh(const Scene& scene, const StructureSpec& spec) {
+  if (spec.mesh.kind == "rectangle") {
+    fem::RectangleMeshOptions r;
+    r.origin = spec.mesh.origin;
+    r.width = spec.mesh.width;
+    r.height = spec.mesh.height;
+    r.elements_x = spec.mesh.elements_x;
+    r.elements_y = spec.mesh.elements_y;
+    return fem::make_rectangle_mesh(r);
+  }
+  std::vector<std::string> groups = spec.clamped;
+  groups.insert(groups.end(), spec.interface.begin(), spec.interface.end());
+  for (const auto& l : spec.loads) groups.push_back(l.boundary);
+  try {
+    return fem::read_gmsh(spec.mesh.file.string(), groups);
+  } catch (const InputError& e) {
+    fail_at(scene, spec.line, "structures." + spec.name + ".mesh", e.what());
+  }
+}
+
+fem::LinearSolverKind solver_kind(const std::string& name) {
+  if (name == "cg") return fem::LinearSolverKind::cg_incomplete_cholesky;
+  if (name == "umfpack") return fem::LinearSolverKind::umfpack;
+  if (name == "ldlt") return fem::LinearSolverKind::simplicial_ldlt;
+  return fem::LinearSolverKind::cholmod;
+}
+
+double edge_length(const fem::Mesh& mesh, const std::string& tag) {
+  double length = 0.0;
+  for (const auto& e : mesh.edges_with_tag(tag))
+    length += (mesh.X[static_cast<std::size_t>(e.nodes[2])] -
+               mesh.X[static_cast<std::size_t>(e.nodes[0])])
+                  .norm();
+  return length;
+}
+
+} // namespace
+
+int probe_node(const Scene& scene, const fem::Mesh& mesh, const ProbeSpec& probe) {
+  const int count = static_cast<int>(mesh.num_nodes());
+  if (probe.node) {
+    if (*probe.node >= count)
+      fail_at(scene, probe.line, "output.probes." + probe.name + ".node",
+              "node " + std::to_string(*probe.node) + " does not exist (the mesh has " +
+                  std::to_string(count) + " nodes)");
+    return *probe.node;
+  }
+  Vec2 lo = mesh.X.front(), hi = mesh.X.front();
+  for (const auto& x : mesh.X) lo = lo.cwiseMin(x), hi = hi.cwiseMax(x);
+  const double tolerance = 1e-6 * (hi - lo).norm();
+  int best = 0;
+  for (int k = 1; k < count; ++k)
+    if ((mesh.X[static_cast<std::size_t>(k)] - *probe.point).norm() <
+        (mesh.X[static_cast<std::size_t>(best)] - *probe.point).norm())
+      best = k;
+  if ((mesh.X[static_cast<std::size_t>(best)] - *probe.point).norm() > tolerance) {
+    std::ostringstream msg;
+    msg << "no node of structure '" << probe.structure << "' at (" << probe.point->x() << ", "
+        << probe.point->y() << ")";
+    fail_at(scene, probe.line, "output.probes." + probe.name + ".point", msg.str());
+  }
+  return best;
+}
+
+std::unique_ptr<fem::Structure> build_structure(const Scene& scene, const StructureSpec& spec) {
+  fem::Mesh mesh = build_mesh(scene, spec);
+  const std::string key = "structures." + spec.name;
+  for (const auto& tag : spec.clamped)
+    if (!mesh.has_tag(tag)) fail_at(scene, spec.line, key + ".clamped", "no boundary '" + tag + "'");
+  for (const auto& tag : spec.interface)
+    if (!mesh.has_tag(tag))
+      fail_at(scene, spec.line, key + ".interface", "no boundary '" + tag + "'");
+  fem::StructureOptions o;
+  o.material.youngs_modulus = spec.youngs_modulus;
+  o.material.poisson_ratio = spec.poisson_ratio;
+  o.material.density = spec.density;
+  o.material.plane =
+      spec.plane == "stress" ? fem::PlaneModel::plane_stress : fem::PlaneModel::plane_strain;
+  o.gravity = scene.gravity;
+  for (const auto& tag : spec.clamped) o.clamped.push_back({tag, true, true, {}});
+  o.newmark.beta = spec.newmark_beta;
+  o.newmark.gamma = spec.newmark_gamma;
+  o.newton.residual_rtol = spec.newton_tolerance;
+  o.newton.increment_rtol = spec.increment_tolerance;
+  o.newton.max_iterations = spec.newton_max_iterations;
+  o.linear_solver.kind = solver_kind(spec.linear_solver);
+  fem::Vector loads = fem::Vector::Zero(2 * static_cast<Eigen::Index>(mesh.num_nodes()));
+  for (const auto& l : spec.loads) {
+    if (!mesh.has_tag(l.boundary))
+      fail_at(scene, spec.line, key + ".loads", "no boundary '" + l.boundary + "'");
+    loads += fem::edge_traction_forces(mesh, l.boundary, l.force / edge_length(mesh, l.boundary));
+  }
+  auto structure = std::make_unique<fem::Structure>(std::move(mesh), o);
+  if (!spec.loads.empty()) {
+    structure->set_external_forces(loads);
+    structure->update_acceleration();
+  }
+  return structure;
+}
+
+StructureModel::StructureModel(const Scene& scene, const StructureSpec& spec)
+    : name_(spec.name), structure_(build_structure(scene, spec)) {
+  for (const auto& p : scene.output.probes)
+    if (p.structure == spec.name)
+      probe_nodes_.emplace_back(p.name, probe_node(scene, structure_->mesh(), p));
+}
+
+void StructureModel::advance(double /*time*/, double dt) {
+  const auto& report = structure_->advance(dt);
+  newton_iterations_ += report.iterations;
+  newton_max_ = std::max(newton_max_, report.iterations);
+  ++steps_;
+}
+
+void StructureModel::declare(FieldsFile& file) const {
+  std::vector<std::int64_t> t6;
+  for (const auto& e : structure_->mesh().elements) t6.insert(t6.end(), e.begin(), e.end());
+  file.add_mesh(name_, t6);
+}
+
+void StructureModel::write_frame(FieldsFile& file, const std::vector<std::string>& fields) const {
+  const auto x = structure_->positions();
+  std::vector<double> xy;
+  xy.reserve(2 * x.size());
+  for (const auto& p : x) xy.push_back(p.x()), xy.push_back(p.y());
+  const fem::Vector von_mises = structure_->von_mises();
+  auto wanted = [&](const char* f) { return std::find(fields.begin(), fields.end(), f) != fields.end(); };
+  std::vector<GridField> out;
+  if (wanted("displacement")) out.push_back({"displacement", 2, structure_->displacement().data()});
+  if (wanted("velocity")) out.push_back({"velocity", 2, structure_->velocity().data()});
+  if (wanted("von_mises")) out.push_back({"von_mises", 1, von_mises.data()});
+  file.write_grid(name_, xy, out);
+}
+
+std::optional<double> StructureModel::probe(const ProbeSpec& probe) const {
+  for (const auto& [name, node] : probe_nodes_)
+    if (name == probe.name)
+      return structure_->displacement()[2 * node + (probe.quantity == "displacement_y" ? 1 : 0)];
+  return std::nullopt;
+}
+
+void StructureModel::report(JsonObject& run) const {
+  JsonObject s;
+  s.add("nodes", static_cast<long long>(structure_->mesh().num_nodes()))
+      .add("elements", static_cast<long long>(structure_->mesh().num_elements()))
+      .add("newton_iterations_mean",
+           steps_ ? static_cast<double>(newton_iterations_) / static_cast<double>(steps_) : 0.0)
+      .add("newton_iterations_max", newton_max_);
+  run.add("structure_" + name_, s);
+}
+
+} // namespace fsi::app
