@@ -27,7 +27,8 @@ std::vector<Step> parse_path(const std::string& path, const std::string& text) {
     steps.push_back({path.substr(i, j - i)});
     while (j < path.size() && path[j] == '[') {
       const std::size_t close = path.find(']', j);
-      const std::string digits = close == std::string::npos ? "" : path.substr(j + 1, close - j - 1);
+      const std::string digits =
+          close == std::string::npos ? "" : path.substr(j + 1, close - j - 1);
       if (digits.empty() || digits.size() > 6 ||
           !std::all_of(digits.begin(), digits.end(), [](char c) { return std::isdigit(c); }))
         throw bad("malformed list index");
@@ -62,8 +63,8 @@ void apply_override(YAML::Node& root, const std::string& text, ReadContext& ctx)
     const bool last = k + 1 == steps.size();
     if (s.index >= 0) {
       if (!node.IsSequence() || s.index >= static_cast<long>(node.size()))
-        throw InputError("--set " + text + ": " + path + ": list index " +
-                         std::to_string(s.index) + " does not exist");
+        throw InputError("--set " + text + ": " + path + ": list index " + std::to_string(s.index) +
+                         " does not exist");
       if (last) {
         node[static_cast<std::size_t>(s.index)] = value;
         break;

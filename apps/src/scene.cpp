@@ -31,8 +31,8 @@ TimeSpec read_time(Section s) {
   return t;
 }
 
-const std::vector<std::string> kFieldNames = {"velocity", "pressure", "pnd", "free_surface",
-                                              "displacement", "von_mises"};
+const std::vector<std::string> kFieldNames = {"velocity",     "pressure",     "pnd",
+                                              "free_surface", "displacement", "von_mises"};
 const std::vector<std::string> kProbeQuantities = {"displacement_x", "displacement_y",
                                                    "surge_front", "pressure"};
 
@@ -67,8 +67,9 @@ OutputSpec read_output(Section s, double end_time, std::vector<Section>& probe_s
                      "fields written to fields.h5 (particle positions and mesh geometry always)");
   for (const auto& f : o.fields)
     if (std::find(kFieldNames.begin(), kFieldNames.end(), f) == kFieldNames.end())
-      s.fail("fields", "unknown field '" + f + "' (known: velocity, pressure, pnd, free_surface, "
-                       "displacement, von_mises)");
+      s.fail("fields", "unknown field '" + f +
+                           "' (known: velocity, pressure, pnd, free_surface, "
+                           "displacement, von_mises)");
   std::set<std::string> names;
   probe_sections = s.list("probes", "sampled every frame into probes.csv");
   for (auto& probe : probe_sections) {
@@ -109,8 +110,8 @@ MotionSpec read_motion(Section s) {
 WallSpec read_wall(Section s) {
   WallSpec w;
   w.name = s.text("name", "wall name, for messages");
-  w.polyline = s.points("polyline", 2,
-                        "vertices; the fluid lies on the left of each directed segment");
+  w.polyline =
+      s.points("polyline", 2, "vertices; the fluid lies on the left of each directed segment");
   w.closed = s.boolean("closed", false, "join the last vertex to the first");
   if (auto m = s.block("motion", "prescribed rigid motion; absent: the wall is static"))
     w.motion = read_motion(*m);
@@ -148,10 +149,10 @@ FluidSpec read_fluid(Section s) {
   f.re_over_l0 = s.real("re_over_l0", 3.1, Range::closed(2.0, 5.0), "effective radius r_e / l0");
   f.sound_speed = s.real("sound_speed", Range::positive(), "c of eq. 15, m/s");
   f.beta = s.real("beta", 1.0, Range::left_open(0.0, 1.5), "free-surface threshold, eq. 17");
-  f.alpha_rep = s.real("alpha_rep", 0.0, Range::non_negative(),
-                       "repulsive coefficient of eq. 27, N/m^3");
-  f.wall_condition = s.choice("wall_condition", {"no_slip", "slip"}, "no_slip",
-                              "viscous wall condition (eq. 24)");
+  f.alpha_rep =
+      s.real("alpha_rep", 0.0, Range::non_negative(), "repulsive coefficient of eq. 27, N/m^3");
+  f.wall_condition =
+      s.choice("wall_condition", {"no_slip", "slip"}, "no_slip", "viscous wall condition (eq. 24)");
   f.damping_time = s.real("damping_time", 0.0, Range::non_negative(),
                           "initial phase over which velocities are damped to rest, s");
   for (auto& region : s.list("regions", "areas filled with particles at spacing l0"))
@@ -214,7 +215,8 @@ StructureSpec read_structure(Section s) {
   if (auto nb = s.block("newmark", "Newmark-beta coefficients (eqs. 40-41)")) {
     st.newmark_beta = nb->real("beta", 0.3025, Range::left_open(0.0, 0.5), "beta_NB");
     st.newmark_gamma = nb->real("gamma", 0.6, Range::closed(0.5, 1.0), "gamma_NB");
-    if (!s.context().documenting() && st.newmark_beta < 0.25 * std::pow(st.newmark_gamma + 0.5, 2) - 1e-12)
+    if (!s.context().documenting() &&
+        st.newmark_beta < 0.25 * std::pow(st.newmark_gamma + 0.5, 2) - 1e-12)
       nb->fail("beta", "must be >= (gamma + 1/2)^2 / 4 for unconditional stability");
     nb->finish();
   }
@@ -250,15 +252,14 @@ CouplingSpec read_coupling(Section s) {
   c.acceleration = s.choice("acceleration", {"none", "constant", "aitken", "iqn-ils"}, "aitken",
                             "BGS relaxation");
   c.tolerance = s.real("tolerance", 1e-4, Range::open(0.0, 1.0), "epsilon of eq. 69");
-  c.max_iterations = s.integer("max_iterations", 200, Range::closed(1, 100000),
-                               "BGS iterations per step");
+  c.max_iterations =
+      s.integer("max_iterations", 200, Range::closed(1, 100000), "BGS iterations per step");
   c.omega = s.real("omega", 0.5, Range::left_open(0.0, 1.0),
                    "constant relaxation factor, or Aitken's first");
   c.reuse = s.integer("reuse", 8, Range::closed(0, 100), "IQN-ILS: past steps kept");
-  c.stop_on_unconverged = s.boolean("stop_on_unconverged", false,
-                                    "stop the run at the first unconverged BGS step");
-  c.substeps = s.integer("substeps", 1, Range::closed(1, 10000),
-                         "fluid steps per structure step");
+  c.stop_on_unconverged =
+      s.boolean("stop_on_unconverged", false, "stop the run at the first unconverged BGS step");
+  c.substeps = s.integer("substeps", 1, Range::closed(1, 10000), "fluid steps per structure step");
   s.finish();
   return c;
 }
@@ -336,8 +337,7 @@ Scene read_scene(Section top) {
   std::vector<Section> probe_sections;
   scene.output = read_output(top.required_block("output", "what is written, and how often"),
                              scene.time.end, probe_sections);
-  if (auto f = top.block("fluid", "EMPS fluid; absent: no fluid"))
-    scene.fluid = read_fluid(*f);
+  if (auto f = top.block("fluid", "EMPS fluid; absent: no fluid")) scene.fluid = read_fluid(*f);
   for (auto& w : top.list("walls", "polygon walls (ERP), static or with prescribed motion"))
     scene.walls.push_back(read_wall(w));
   auto structure_sections = top.list("structures", "FE structures (T6, St. Venant-Kirchhoff)");

@@ -146,8 +146,7 @@ double Section::real(const std::string& key, Range range, const std::string& doc
   return *value;
 }
 
-double Section::real(const std::string& key, double fallback, Range range,
-                     const std::string& doc) {
+double Section::real(const std::string& key, double fallback, Range range, const std::string& doc) {
   const auto value = optional_real(key, range, doc);
   if (ctx_->documenting()) ctx_->collector->back().fallback = format_number(fallback);
   return value.value_or(fallback);
@@ -159,13 +158,12 @@ std::optional<double> Section::optional_real(const std::string& key, Range range
   if (!node.IsDefined()) return std::nullopt;
   double v = 0.0;
   if (!parse_real(node, v)) fail(key, "expected a real number, got '" + scalar_text(node) + "'");
-  if (!range.contains(v))
-    fail(key, "must be " + range.describe() + ", got " + format_number(v));
+  if (!range.contains(v)) fail(key, "must be " + range.describe() + ", got " + format_number(v));
   return v;
 }
 
 std::optional<int> Section::optional_integer(const std::string& key, Range range,
-                                            const std::string& doc) {
+                                             const std::string& doc) {
   const YAML::Node node = get(key, "integer", "optional", range.describe(), doc);
   if (!node.IsDefined()) return std::nullopt;
   double v = 0.0;
@@ -219,9 +217,8 @@ std::string Section::text(const std::string& key, const std::string& doc) {
 
 std::string Section::choice(const std::string& key, const std::vector<std::string>& choices,
                             const std::string& fallback, const std::string& doc) {
-  const YAML::Node node =
-      get(key, "one of " + join(choices, " \\| "), fallback.empty() ? "required" : fallback, "",
-          doc);
+  const YAML::Node node = get(key, "one of " + join(choices, " \\| "),
+                              fallback.empty() ? "required" : fallback, "", doc);
   if (ctx_->documenting()) return fallback.empty() ? choices.front() : fallback;
   if (!node.IsDefined()) {
     if (fallback.empty()) missing(key);
@@ -250,10 +247,9 @@ Vec2 Section::vec2(const std::string& key, const std::string& doc) {
 }
 
 Vec2 Section::vec2(const std::string& key, const Vec2& fallback, const std::string& doc) {
-  const YAML::Node node = get(key, "[x, y]",
-                              "[" + format_number(fallback.x()) + ", " +
-                                  format_number(fallback.y()) + "]",
-                              "", doc);
+  const YAML::Node node =
+      get(key, "[x, y]",
+          "[" + format_number(fallback.x()) + ", " + format_number(fallback.y()) + "]", "", doc);
   if (!node.IsDefined()) return fallback;
   Vec2 v;
   if (!parse_vec2(node, v)) fail(key, "expected a pair of real numbers [x, y]");
@@ -312,8 +308,7 @@ std::filesystem::path Section::file(const std::string& key, const std::string& d
   std::filesystem::path p = node.Scalar();
   if (p.is_relative()) p = ctx_->dir / p;
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(p, ec))
-    fail(key, "file not found: " + p.string());
+  if (!std::filesystem::is_regular_file(p, ec)) fail(key, "file not found: " + p.string());
   return p;
 }
 

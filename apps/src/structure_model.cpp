@@ -80,7 +80,8 @@ std::unique_ptr<fem::Structure> build_structure(const Scene& scene, const Struct
   fem::Mesh mesh = build_mesh(scene, spec);
   const std::string key = "structures." + spec.name;
   for (const auto& tag : spec.clamped)
-    if (!mesh.has_tag(tag)) fail_at(scene, spec.line, key + ".clamped", "no boundary '" + tag + "'");
+    if (!mesh.has_tag(tag))
+      fail_at(scene, spec.line, key + ".clamped", "no boundary '" + tag + "'");
   for (const auto& tag : spec.interface)
     if (!mesh.has_tag(tag))
       fail_at(scene, spec.line, key + ".interface", "no boundary '" + tag + "'");
@@ -138,7 +139,9 @@ void StructureModel::write_frame(FieldsFile& file, const std::vector<std::string
   xy.reserve(2 * x.size());
   for (const auto& p : x) xy.push_back(p.x()), xy.push_back(p.y());
   const fem::Vector von_mises = structure_->von_mises();
-  auto wanted = [&](const char* f) { return std::find(fields.begin(), fields.end(), f) != fields.end(); };
+  auto wanted = [&](const char* f) {
+    return std::find(fields.begin(), fields.end(), f) != fields.end();
+  };
   std::vector<GridField> out;
   if (wanted("displacement")) out.push_back({"displacement", 2, structure_->displacement().data()});
   if (wanted("velocity")) out.push_back({"velocity", 2, structure_->velocity().data()});

@@ -28,20 +28,21 @@ struct SegmentPrimitive {
 using Traits = CGAL::AABB_traits<Kernel, SegmentPrimitive>;
 using Node = CGAL::AABB_node<Traits>;
 
-/// Traversal that visits only boxes within the current best distance (ties included, so the
-/// lower-index rule of consider_segment sees every equally near segment).
-struct NearestWithin {
+/// Traversal that visits only boxes within the current bound (ties included, so the lower-index
+/// rule of the consider functions sees every equally near segment).
+template <class Consider> struct NearestWithin {
   Vec2 p;
-  detail::Nearest& best;
+  const double& bound;
+  Consider& consider;
   bool go_further() const { return true; }
   template <class Query> void intersection(const Query&, const SegmentPrimitive& primitive) {
-    detail::consider_segment(primitive.geometry, p, best);
+    consider(primitive.geometry);
   }
   template <class Query> bool do_intersect(const Query&, const Node& node) const {
     const CGAL::Bbox_3& box = node.bbox();
     const double dx = std::max({box.xmin() - p.x(), 0.0, p.x() - box.xmax()});
     const double dy = std::max({box.ymin() - p.y(), 0.0, p.y() - box.ymax()});
-    return dx * dx + dy * dy <= best.d2;
+    return dx * dx + dy * dy <= bound;
   }
 };
 
@@ -72,9 +73,9 @@ template <class Point> void AabbLocator::run(std::size_t n, Point&& point, WallH
   const WallSet& walls = *walls_;
   const auto& tree = tree_->tree;
   detail::batch_query(
-      walls, r_e_, n, point,
-      [&](const Vec2& p, detail::Nearest& best) {
-        NearestWithin traits{p, best};
+      walls, r_e_, second_face_, n, point,
+      [&](const Vec2& p, const double& bound, auto&& consider) {
+        NearestWithin<std::remove_reference_t<decltype(consider)>> traits{p, bound, consider};
         tree.traversal(0, traits);
       },
       hits);

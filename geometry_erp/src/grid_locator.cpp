@@ -69,8 +69,8 @@ void GridLocator::update() {
 template <class Point> void GridLocator::run(std::size_t n, Point&& point, WallHits& hits) const {
   const WallSet& walls = *walls_;
   detail::batch_query(
-      walls, r_e_, n, point,
-      [&](const Vec2& p, detail::Nearest& best) {
+      walls, r_e_, second_face_, n, point,
+      [&](const Vec2& p, const double& bound, auto&& consider) {
         const double fi = std::floor((p.x() - lo_.x()) / h_),
                      fj = std::floor((p.y() - lo_.y()) / h_);
         // Outside the grid by more than one cell (or NaN): no segment within r_e <= h.
@@ -79,7 +79,7 @@ template <class Point> void GridLocator::run(std::size_t n, Point&& point, WallH
         const auto scan = [&](int i, int j) {
           const auto c = static_cast<std::size_t>(j * nx_ + i);
           for (int k = cell_begin_[c]; k < cell_begin_[c + 1]; ++k)
-            detail::consider_segment(cell_segment_[static_cast<std::size_t>(k)], p, best);
+            consider(cell_segment_[static_cast<std::size_t>(k)]);
         };
         // Own cell first; then a neighbour only if its box (grown by a rounding margin) is not
         // farther than the best segment so far: the nearest point of a segment lies in one of
@@ -94,7 +94,7 @@ template <class Point> void GridLocator::run(std::size_t n, Point&& point, WallH
             const double x0 = lo_.x() + i * h_ - margin, y0 = lo_.y() + j * h_ - margin;
             const double dx = std::max(std::max(x0 - p.x(), p.x() - (x0 + h_ + 2.0 * margin)), 0.0);
             const double dy = std::max(std::max(y0 - p.y(), p.y() - (y0 + h_ + 2.0 * margin)), 0.0);
-            if (dx * dx + dy * dy <= best.d2) scan(i, j);
+            if (dx * dx + dy * dy <= bound) scan(i, j);
           }
       },
       hits);

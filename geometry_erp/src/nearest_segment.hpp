@@ -41,6 +41,38 @@ inline void consider_segment(const SegmentGeometry& g, const Vec2& p, Nearest& b
   best.d2 = nearer ? d2 : best.d2;
 }
 
+/// Second-face candidate (wall_locator.hpp): nearest point strictly inside the segment, particle
+/// on its fluid (left) side, normal turned by more than 30 degrees from n1, not segment s1.
+inline void consider_face(const SegmentGeometry& g, const Vec2& p, const Vec2& n1, int s1,
+                          Nearest& best) {
+  if (g.id == s1) return;
+  const double along = (p - g.a).dot(g.ab);
+  if (along <= 0.0 || along >= g.length2) return;
+  const double t = along * g.inv_length2;
+  const Vec2 d = p - (g.a + t * g.ab);
+  const double d2 = d.squaredNorm();
+  if (!(d2 < best.d2 || (d2 == best.d2 && g.id < best.segment))) return;
+  const double side = g.ab.x() * d.y() - g.ab.y() * d.x(); // (b - a) x d > 0: fluid side
+  if (side <= 0.0 || d.dot(n1) > second_face_max_cos * std::sqrt(d2)) return;
+  best = {g.id, t, d2};
+}
+
+/// Writes particle i's second-face record.
+inline void write_second(const WallSet& walls, const Vec2& p, const Nearest& face, WallHits& hits,
+                         std::size_t i) {
+  hits.segment2[i] = face.segment;
+  if (face.segment < 0) return;
+  const auto& [a, b] = walls.segments().node[static_cast<std::size_t>(face.segment)];
+  const auto ua = static_cast<std::size_t>(a), ub = static_cast<std::size_t>(b);
+  const Vec2 x_wall = walls.nodes().x[ua] + face.t * (walls.nodes().x[ub] - walls.nodes().x[ua]);
+  const double r = std::sqrt(face.d2);
+  hits.t2[i] = face.t;
+  hits.r2[i] = r;
+  hits.x_wall2[i] = x_wall;
+  hits.n_wall2[i] = (p - x_wall) / r;
+  hits.v_wall2[i] = (1.0 - face.t) * walls.nodes().v[ua] + face.t * walls.nodes().v[ub];
+}
+
 /// Writes particle i's record from its nearest segment (see wall_locator.hpp for the rules).
 inline void write_hit(const WallSet& walls, double r_e, const Vec2& p, const Nearest& best,
                       WallHits& hits, std::size_t i) {
@@ -74,16 +106,25 @@ inline void write_hit(const WallSet& walls, double r_e, const Vec2& p, const Nea
   hits.a_wall[i] = (1.0 - t) * walls.nodes().a[ua] + t * walls.nodes().a[ub];
 }
 
-/// Runs nearest(p, best) for every particle in parallel and writes the records.
-template <class Point, class Find>
-void batch_query(const WallSet& walls, double r_e, std::size_t n, Point&& point, Find&& nearest,
-                 WallHits& hits) {
+/// For every particle in parallel: visit(p, bound, consider) calls consider(segment geometry) for
+/// every segment that may lie within sqrt(bound) of p (bound shrinks as consider finds nearer
+/// ones). Writes the nearest-wall record and, if asked, the second face.
+template <class Point, class Visit>
+void batch_query(const WallSet& walls, double r_e, bool second_face, std::size_t n, Point&& point,
+                 Visit&& visit, WallHits& hits) {
   hits.resize(n);
   parallel_for(n, [&](std::size_t i) {
     const Vec2 p = point(i);
     Nearest best{-1, 0.0, r_e * r_e};
-    nearest(p, best);
+    visit(p, best.d2, [&](const SegmentGeometry& g) { consider_segment(g, p, best); });
     write_hit(walls, r_e, p, best, hits, i);
+    hits.segment2[i] = -1;
+    if (!second_face || best.segment < 0) return;
+    Nearest face{-1, 0.0, r_e * r_e};
+    const Vec2 n1 = hits.n_wall[i];
+    visit(p, face.d2,
+          [&](const SegmentGeometry& g) { consider_face(g, p, n1, best.segment, face); });
+    write_second(walls, p, face, hits, i);
   });
 }
 

@@ -14,6 +14,12 @@ void WallHits::resize(std::size_t n) {
   v_wall.resize(n);
   a_wall.resize(n);
   crossed.resize(n);
+  segment2.resize(n);
+  t2.resize(n);
+  r2.resize(n);
+  x_wall2.resize(n);
+  n_wall2.resize(n);
+  v_wall2.resize(n);
 }
 
 std::unique_ptr<WallLocator> make_wall_locator(const WallSet& walls, double r_e, LocatorKind kind) {

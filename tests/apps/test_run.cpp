@@ -33,8 +33,8 @@ TEST_CASE("apps: a structure-only run writes the FE solution at the probed node"
   const fs::path out = fs::temp_directory_path() / "fsi_test_run";
   fs::remove_all(out);
   std::ostringstream sout, serr;
-  REQUIRE(run_cli({"run", scene_file, "--out", out.string(), "--set", "time.end=0.02"}, sout,
-                  serr, false) == 0);
+  REQUIRE(run_cli({"run", scene_file, "--out", out.string(), "--set", "time.end=0.02"}, sout, serr,
+                  false) == 0);
 
   std::string header;
   const auto rows = read_csv(out / "probes.csv", header);
@@ -51,7 +51,8 @@ TEST_CASE("apps: a structure-only run writes the FE solution at the probed node"
       for (int s = 0; s < 5; ++s) structure->advance(1e-3);
     CHECK(rows[k][0] == Approx(0.005 * static_cast<double>(k)).margin(1e-12));
     CHECK(rows[k][1] == Approx(structure->displacement()[2 * node + 1]).epsilon(1e-9));
-    const auto u = read_dataset(out / "fields.h5", "frames/" + std::to_string(k) + "/beam/displacement");
+    const auto u =
+        read_dataset(out / "fields.h5", "frames/" + std::to_string(k) + "/beam/displacement");
     CHECK(u.values[static_cast<std::size_t>(2 * node + 1)] == Approx(rows[k][1]).epsilon(1e-9));
   }
   CHECK(rows.back()[1] < -1e-5); // the beam sags under gravity
@@ -67,9 +68,9 @@ TEST_CASE("apps: a structure-only run writes the FE solution at the probed node"
 
 TEST_CASE("apps: a boundary tag the mesh lacks is refused before the run", "[apps][run]") {
   std::ostringstream out, err;
-  const int status = run_cli({"check", FSI_TEST_DATA "/valid_structure.yaml", "--set",
-                              "structures[0].clamped=[nowhere]"},
-                             out, err, false);
+  const int status = run_cli(
+      {"check", FSI_TEST_DATA "/valid_structure.yaml", "--set", "structures[0].clamped=[nowhere]"},
+      out, err, false);
   CHECK(status == 2);
   CHECK(err.str().find("structures[0].clamped: unknown boundary tag 'nowhere'") !=
         std::string::npos);

@@ -41,27 +41,28 @@ TEST_CASE("apps: a valid scene reads back its values", "[apps][scene]") {
   CHECK(b.mesh.elements_x == 4);
   CHECK(b.youngs_modulus == 2e6);
   CHECK(b.poisson_ratio == 0.25);
-  CHECK(b.plane == "strain");            // default
+  CHECK(b.plane == "strain"); // default
   CHECK(b.newmark_beta == 0.25);
   CHECK(b.newmark_gamma == 0.5);
-  CHECK(b.linear_solver == "cholmod");   // default
+  CHECK(b.linear_solver == "cholmod"); // default
   CHECK(b.clamped == std::vector<std::string>{"left"});
   REQUIRE(s.output.probes.size() == 1);
   CHECK(s.output.probes[0].point->y() == 0.1);
-  CHECK(s.output.fields.size() == 6);    // default: all fields
+  CHECK(s.output.fields.size() == 6); // default: all fields
   CHECK_FALSE(s.fluid);
 }
 
 TEST_CASE("apps: overrides replace entries before validation", "[apps][scene]") {
-  const Scene s = load_scene(data + "valid_structure.yaml",
-                             {"time.end=0.5", "structures[0].material.density=2000",
-                              "structures[0].linear_solver=cg"});
+  const Scene s = load_scene(
+      data + "valid_structure.yaml",
+      {"time.end=0.5", "structures[0].material.density=2000", "structures[0].linear_solver=cg"});
   CHECK(s.time.end == 0.5);
   CHECK(s.structures[0].density == 2000.0);
   CHECK(s.structures[0].linear_solver == "cg");
 }
 
-TEST_CASE("apps: each class of bad input names file, line and key, exit status 2", "[apps][scene]") {
+TEST_CASE("apps: each class of bad input names file, line and key, exit status 2",
+          "[apps][scene]") {
   struct Case {
     std::string file, prefix, what;
   };
@@ -69,13 +70,13 @@ TEST_CASE("apps: each class of bad input names file, line and key, exit status 2
       {"bad_unknown_key.yaml", ":25: structures[0].material.colour: ", "unknown key"},
       {"bad_misspelt_key.yaml", ":21: structures[0].material.density: ", "'densty' on line 24"},
       {"bad_wrong_type.yaml", ":4: time.end: ", "expected a real number, got 'soon'"},
-      {"bad_missing_key.yaml", ":21: structures[0].material.youngs_modulus: ",
-       "required key missing"},
+      {"bad_missing_key.yaml",
+       ":21: structures[0].material.youngs_modulus: ", "required key missing"},
       {"bad_density.yaml", ":24: structures[0].material.density: ", "must be > 0, got -1200"},
       {"bad_youngs.yaml", ":22: structures[0].material.youngs_modulus: ", "must be > 0, got 0"},
       {"bad_dt.yaml", ":5: time.dt: ", "must be > 0, got 0"},
-      {"bad_poisson.yaml", ":23: structures[0].material.poisson_ratio: ",
-       "must be in (-1, 0.5), got 0.5"},
+      {"bad_poisson.yaml",
+       ":23: structures[0].material.poisson_ratio: ", "must be in (-1, 0.5), got 0.5"},
       {"bad_spacing.yaml", ":9: fluid.l0: ", "larger than fluid region 0"},
       {"bad_mesh_missing.yaml", ":17: structures[0].mesh.file: ", "file not found"},
       {"bad_probe_node.yaml", ":12: output.probes[0].node: ", "node 45 does not exist"},

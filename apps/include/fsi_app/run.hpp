@@ -11,8 +11,8 @@
 namespace fsi::app {
 
 struct RunOptions {
-  std::filesystem::path out;  ///< output directory, created if missing
-  bool terminal = false;      ///< live progress line instead of periodic log lines
+  std::filesystem::path out; ///< output directory, created if missing
+  bool terminal = false;     ///< live progress line instead of periodic log lines
   std::ostream* log = nullptr;
 };
 

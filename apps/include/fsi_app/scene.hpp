@@ -11,18 +11,18 @@
 namespace fsi::app {
 
 struct TimeSpec {
-  double end = 0.0;                ///< s
-  std::optional<double> dt;        ///< fixed step, s
-  std::optional<double> courant;   ///< adaptive step from a Courant number (fluid scenes)
+  double end = 0.0;              ///< s
+  std::optional<double> dt;      ///< fixed step, s
+  std::optional<double> courant; ///< adaptive step from a Courant number (fluid scenes)
 };
 
 struct ProbeSpec {
   std::string name;
-  std::string quantity;            ///< displacement_x | displacement_y | surge_front | pressure
-  std::string structure;           ///< for displacement probes
-  std::optional<int> node;         ///< FE node index, or
-  std::optional<Vec2> point;       ///< reference position of a node / a fluid point
-  int line = 0;                    ///< scene line, for late messages
+  std::string quantity;      ///< displacement_x | displacement_y | surge_front | pressure
+  std::string structure;     ///< for displacement probes
+  std::optional<int> node;   ///< FE node index, or
+  std::optional<Vec2> point; ///< reference position of a node / a fluid point
+  int line = 0;              ///< scene line, for late messages
 };
 
 struct OutputSpec {
@@ -32,14 +32,14 @@ struct OutputSpec {
 };
 
 struct MotionSpec {
-  std::string kind;                ///< sinusoid | table
-  std::string dof;                 ///< rotation | x | y
-  Vec2 pivot = Vec2::Zero();       ///< rotation centre (reference configuration)
-  double amplitude = 0.0;          ///< rad for rotation, m for translation
-  double period = 1.0;             ///< s
-  double phase = 0.0;              ///< rad
-  std::filesystem::path table;     ///< CSV time,value (value in the unit of `unit`)
-  double table_scale = 1.0;        ///< multiplies the table values into rad or m
+  std::string kind;            ///< sinusoid | table
+  std::string dof;             ///< rotation | x | y
+  Vec2 pivot = Vec2::Zero();   ///< rotation centre (reference configuration)
+  double amplitude = 0.0;      ///< rad for rotation, m for translation
+  double period = 1.0;         ///< s
+  double phase = 0.0;          ///< rad
+  std::filesystem::path table; ///< CSV time,value (value in the unit of `unit`)
+  double table_scale = 1.0;    ///< multiplies the table values into rad or m
 };
 
 struct WallSpec {
@@ -50,22 +50,22 @@ struct WallSpec {
 };
 
 struct FluidSpec {
-  double density = 1000.0;         ///< kg/m^3
-  double viscosity = 0.0;          ///< kinematic, m^2/s; 0 skips the viscous loop
-  double l0 = 0.0;                 ///< initial particle spacing, m
-  double re_over_l0 = 3.1;         ///< effective radius r_e / l0
-  double sound_speed = 0.0;        ///< c of eq. 15, m/s
-  double beta = 1.0;               ///< free-surface threshold of eq. 17
-  double alpha_rep = 0.0;          ///< repulsive coefficient of eq. 27, N/m^3
-  std::string wall_condition;      ///< no_slip | slip
+  double density = 1000.0;                ///< kg/m^3
+  double viscosity = 0.0;                 ///< kinematic, m^2/s; 0 skips the viscous loop
+  double l0 = 0.0;                        ///< initial particle spacing, m
+  double re_over_l0 = 3.1;                ///< effective radius r_e / l0
+  double sound_speed = 0.0;               ///< c of eq. 15, m/s
+  double beta = 1.0;                      ///< free-surface threshold of eq. 17
+  double alpha_rep = 0.0;                 ///< repulsive coefficient of eq. 27, N/m^3
+  std::string wall_condition;             ///< no_slip | slip
   std::vector<std::vector<Vec2>> regions; ///< closed polygons filled with particles
-  Vec2 domain_min = Vec2::Zero();  ///< particles leaving this box are removed (and counted)
+  Vec2 domain_min = Vec2::Zero();         ///< particles leaving this box are removed (and counted)
   Vec2 domain_max = Vec2::Zero();
-  double damping_time = 0.0;       ///< initial velocity damping phase (hydrostatic starts), s
+  double damping_time = 0.0; ///< initial velocity damping phase (hydrostatic starts), s
 };
 
 struct MeshSpec {
-  std::string kind;                ///< rectangle | gmsh
+  std::string kind; ///< rectangle | gmsh
   Vec2 origin = Vec2::Zero();
   double width = 0.0, height = 0.0;
   int elements_x = 0, elements_y = 0;
@@ -73,36 +73,35 @@ struct MeshSpec {
 };
 
 struct PointLoadSpec {
-  std::string boundary;            ///< boundary tag whose nodes share the force equally
-  Vec2 force = Vec2::Zero();       ///< N (per unit thickness) in total
+  std::string boundary;      ///< boundary tag whose nodes share the force equally
+  Vec2 force = Vec2::Zero(); ///< N (per unit thickness) in total
 };
 
 struct StructureSpec {
   std::string name;
-  int line = 0;                    ///< scene line of this entry, for messages after parsing
+  int line = 0; ///< scene line of this entry, for messages after parsing
   MeshSpec mesh;
   double youngs_modulus = 0.0, poisson_ratio = 0.0, density = 0.0;
-  std::string plane;               ///< strain | stress
+  std::string plane;                  ///< strain | stress
   std::vector<std::string> clamped;   ///< boundary tags held fixed
   std::vector<std::string> interface; ///< boundary tags wetted by the fluid
   double newmark_beta = 0.3025, newmark_gamma = 0.6;
   double newton_tolerance = 1e-8, increment_tolerance = 1e-10;
   int newton_max_iterations = 20;
-  std::string linear_solver;       ///< cg | cholmod | umfpack | ldlt
+  std::string linear_solver; ///< cg | cholmod | umfpack | ldlt
   std::vector<PointLoadSpec> loads;
 };
 
-
 struct CouplingSpec {
-  std::string scheme;              ///< css | bgs | one_way
-  std::string predictor;           ///< none | second_order
-  std::string acceleration;        ///< none | constant | aitken | iqn-ils
-  double tolerance = 1e-4;         ///< eq. 69
+  std::string scheme;       ///< css | bgs | one_way
+  std::string predictor;    ///< none | second_order
+  std::string acceleration; ///< none | constant | aitken | iqn-ils
+  double tolerance = 1e-4;  ///< eq. 69
   int max_iterations = 200;
-  double omega = 0.5;              ///< initial / constant relaxation
-  int reuse = 8;                   ///< IQN-ILS: past time steps kept
+  double omega = 0.5; ///< initial / constant relaxation
+  int reuse = 8;      ///< IQN-ILS: past time steps kept
   bool stop_on_unconverged = false;
-  int substeps = 1;                ///< fluid steps per structure step
+  int substeps = 1; ///< fluid steps per structure step
 };
 
 struct Scene {

@@ -46,10 +46,10 @@ struct KeyDoc {
 
 /// Shared state of one scene read: file name, overridden paths, documentation collector.
 struct ReadContext {
-  std::string file;                                ///< scene path as given, for messages
-  std::filesystem::path dir;                       ///< relative file paths resolve here
-  std::map<std::string, std::string> overrides;    ///< dotted path -> `--set` text
-  std::unique_ptr<std::vector<KeyDoc>> collector;  ///< non-null in documentation mode
+  std::string file;                               ///< scene path as given, for messages
+  std::filesystem::path dir;                      ///< relative file paths resolve here
+  std::map<std::string, std::string> overrides;   ///< dotted path -> `--set` text
+  std::unique_ptr<std::vector<KeyDoc>> collector; ///< non-null in documentation mode
 
   bool documenting() const { return collector != nullptr; }
 };

@@ -28,8 +28,7 @@ void write_array(hid_t parent, const std::string& name, hid_t mem_type, const vo
       H5Dcreate2(parent, name.c_str(), file_type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
   if (set < 0) h5_fail(file, "cannot create dataset " + name);
   const bool empty = dims.front() == 0;
-  const herr_t status =
-      empty ? 0 : H5Dwrite(set, mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data);
+  const herr_t status = empty ? 0 : H5Dwrite(set, mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data);
   H5Dclose(set);
   H5Sclose(space);
   check(status, file, "cannot write dataset " + name);
@@ -79,7 +78,7 @@ void FieldsFile::begin_frame(double time) {
 }
 
 void FieldsFile::write_grid(const std::string& grid, const std::vector<double>& xy,
-                           const std::vector<GridField>& fields) {
+                            const std::vector<GridField>& fields) {
   const hid_t g = make_group(frame_group_, grid, h5_path_);
   const hsize_t n = xy.size() / 2;
   write_array(g, "position", H5T_NATIVE_DOUBLE, xy.data(), {n, 2}, h5_path_);
@@ -121,8 +120,7 @@ void FieldsFile::write_xdmf() const {
           << " 6\" NumberType=\"Int\" Precision=\"8\" Format=\"HDF\">" << h5 << ":/meshes/"
           << g.grid << "/t6</DataItem>\n   </Topology>\n";
       else
-        x << "   <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << g.points
-          << "\"/>\n";
+        x << "   <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << g.points << "\"/>\n";
       x << "   <Geometry GeometryType=\"XY\">\n    <DataItem Dimensions=\"" << g.points
         << " 2\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << base << g.grid
         << "/position</DataItem>\n   </Geometry>\n";

@@ -14,6 +14,13 @@
 //   nearest wall) when n_wall . fluid normal < 0. Crossed particles are reported, never fixed.
 // Equally near segments are resolved towards the lower segment index, so results do not depend
 // on the back-end or the thread count.
+//
+// Second face (optional, an extension of eq. 18 for concave corners): near a corner the nearest
+// wall alone leaves the other wall's half of the support empty, and particles leak into the
+// corner. With set_second_face(true) each hit also reports the nearest OTHER face within r_e:
+// a segment whose nearest point is strictly inside it (not at a node, so the next segment of the
+// same polyline never counts), with the particle on its fluid side, and whose normal differs from
+// n_wall by more than 30 degrees (so the gentle turns of a curved wall never count).
 #include "fsi/core/types.hpp"
 #include "geometry_erp/wall_set.hpp"
 
@@ -30,6 +37,10 @@ struct WallHits {
   std::vector<double> t, r;
   std::vector<Vec2> x_wall, n_wall, v_wall, a_wall;
   std::vector<unsigned char> crossed;
+  /// Second face (see above); segment2 = -1 where there is none or the query did not ask.
+  std::vector<int> segment2;
+  std::vector<double> t2, r2;
+  std::vector<Vec2> x_wall2, n_wall2, v_wall2;
   /// Grows every array to n (no allocation once warmed up to the largest n).
   void resize(std::size_t n);
   std::size_t size() const { return segment.size(); }
@@ -37,6 +48,9 @@ struct WallHits {
 
 /// Distance below which a particle counts as on the wall, as a fraction of r_e.
 inline constexpr double on_wall_tolerance = 1e-10;
+
+/// A second face must turn by more than this from the first: cos 30 degrees.
+inline constexpr double second_face_max_cos = 0.8660254037844387;
 
 enum class LocatorKind { grid, aabb_tree };
 
@@ -56,6 +70,9 @@ public:
   virtual void query(std::span<const double> x, std::span<const double> y,
                      WallHits& hits) const = 0;
 
+  /// Also report the second face of concave corners (off by default).
+  void set_second_face(bool on) { second_face_ = on; }
+  bool second_face() const { return second_face_; }
   double r_e() const { return r_e_; }
   const WallSet& walls() const { return *walls_; }
 
@@ -63,6 +80,7 @@ protected:
   WallLocator(const WallSet& walls, double r_e) : walls_(&walls), r_e_(r_e) {}
   const WallSet* walls_;
   double r_e_;
+  bool second_face_ = false;
 };
 
 /// A locator of the given kind, already updated.

@@ -8,10 +8,14 @@ namespace fsi::app {
 class JsonObject {
 public:
   JsonObject& add(const std::string& key, const std::string& value);
-  JsonObject& add(const std::string& key, const char* value) { return add(key, std::string(value)); }
+  JsonObject& add(const std::string& key, const char* value) {
+    return add(key, std::string(value));
+  }
   JsonObject& add(const std::string& key, double value);
   JsonObject& add(const std::string& key, long long value);
-  JsonObject& add(const std::string& key, int value) { return add(key, static_cast<long long>(value)); }
+  JsonObject& add(const std::string& key, int value) {
+    return add(key, static_cast<long long>(value));
+  }
   JsonObject& add(const std::string& key, bool value);
   JsonObject& add(const std::string& key, const JsonObject& object);
   JsonObject& add_raw(const std::string& key, const std::string& json);

@@ -1,0 +1,109 @@
+#pragma once
+// The explicit MPS fluid (EMPS) with ERP polygon walls (Mitsume 2023, eqs. 7-27).
+//
+// One step from t to t + dt (method notes, "EMPS step"):
+//   1. v* = v + dt (nu <lap v>^ERP + g),  x* = x + dt v*          (eq. 13, viscous term eq. 24)
+//   2. n*_i = sum_j w_ij + z(r_wall,i)  at x*                       (eqs. 9, 20)
+//      p_i = c^2 rho / n0 (n*_i - n0), and p_i = 0 where n*_i < beta n0   (eqs. 15, 17)
+//   3. v^{n+1} = v* - dt/rho <grad p>^ERP,  x^{n+1} = x* + dt (v^{n+1} - v*)   (eqs. 14, 25-27)
+// n0 and lambda0 come from the full initial lattice (eqs. 9, 12), not from each particle.
+//
+// Walls: the caller owns the WallSet and moves its nodes (rigid motion, FE interface) to their
+// state at t + dt before calling advance(); the fluid refits its wall index each step.
+#include "fluid_emps/cell_grid.hpp"
+#include "fluid_emps/neighbor_list.hpp"
+#include "fluid_emps/options.hpp"
+#include "fluid_emps/particles.hpp"
+#include "geometry_erp/wall_locator.hpp"
+#include "geometry_erp/wall_set.hpp"
+#include "geometry_erp/wall_weight.hpp"
+
+#include <memory>
+#include <vector>
+
+namespace fsi::emps {
+
+/// Per-particle wall force of the last step (eq. 52, wall parts only: the two mirror terms and
+/// the repulsive term, times V_i). The structure receives -f at x_wall on `segment`; a particle
+/// near a concave corner may also push on a second face (segment2, t2, x_wall2, f2).
+struct WallForces {
+  std::vector<int> segment, segment2; ///< -1 where there is no such wall within r_e
+  std::vector<double> t, t2;          ///< local coordinate of x_wall on the segment
+  std::vector<Vec2> x_wall, f, x_wall2, f2;
+};
+
+/// Work counters of the last step, for benchmarks and run.json.
+struct StepTimes {
+  double neighbours = 0, walls = 0, viscosity = 0, density = 0, pressure_gradient = 0, other = 0;
+};
+
+class EmpsFluid {
+public:
+  /// Particles start at rest at `positions`. Throws fsi::InputError on invalid options.
+  EmpsFluid(const FluidOptions& options, const std::vector<Vec2>& positions, erp::WallSet& walls);
+  ~EmpsFluid();
+
+  /// Advances from t to t + dt. Throws fsi::RunError on a non-finite field, a particle behind a
+  /// wall or a neighbour-row overflow, naming the particle, the step and the time.
+  void advance(double t, double dt);
+
+  /// Largest stable step for a Courant number: C l0 / (c + |v|max), and the viscous limit.
+  double stable_dt(double courant) const;
+
+  const Particles& particles() const { return particles_; }
+  const WallForces& wall_forces() const { return wall_forces_; }
+  const FluidOptions& options() const { return options_; }
+  double n0() const { return n0_; }
+  double lambda0() const { return lambda0_; }
+  long steps() const { return step_; }
+  std::size_t removed() const { return removed_; }
+  double mean_neighbours() const { return mean_neighbours_; }
+  const StepTimes& times() const { return times_; }
+  double kinetic_energy() const;
+  double max_speed() const;
+
+  /// A full copy of the fluid state; restore() returns to it (iterative coupling re-runs steps).
+  struct State {
+    Particles particles;
+    long step = 0;
+    std::size_t removed = 0;
+    long layout = 0;
+  };
+  State save() const;
+  void restore(const State& state);
+
+private:
+  void refresh_neighbours(bool allow_reorder);
+  void query_walls();
+  void viscosity(double dt);
+  void density_and_pressure();
+  void pressure_gradient(double dt);
+  void check_finite(double t) const;
+  Vec2 mirror_gradient(std::size_t i, const Vec2& x_wall, const Vec2& n_wall) const;
+  Vec2 mirror_laplacian(std::size_t i, const Vec2& x_wall, const Vec2& n_wall,
+                        const Vec2& v_wall) const;
+  Vec2 repulsion(double r, const Vec2& n_wall) const;
+  void remove_outside();
+  void damp(double t, double dt);
+
+  FluidOptions options_;
+  erp::WallSet* walls_;
+  std::unique_ptr<erp::WallLocator> locator_;
+  erp::WallWeightTable z_;
+  double r_e_, n0_, lambda0_;
+  Particles particles_;
+  CellGrid grid_;
+  NeighborList neighbours_;
+  erp::WallHits hits_;
+  WallForces wall_forces_;
+  std::vector<double> scratch_;              // per-particle work array
+  std::vector<Vec2> visc_wall_, visc_wall2_; // viscous wall force of each face (eq. 52)
+  std::vector<std::uint8_t> keep_;
+  std::size_t capacity_;
+  long step_ = 0, layout_ = 0, builds_ = 0;
+  std::size_t removed_ = 0;
+  double mean_neighbours_ = 0.0;
+  StepTimes times_;
+};
+
+} // namespace fsi::emps

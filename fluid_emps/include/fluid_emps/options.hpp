@@ -1,0 +1,32 @@
+#pragma once
+// Options of the EMPS fluid (Mitsume 2023, eqs. 7-27): a plain struct, filled by the caller.
+#include "fsi/core/types.hpp"
+
+namespace fsi::emps {
+
+enum class WallCondition { no_slip, slip };
+
+struct FluidOptions {
+  double density = 1000.0;  ///< rho, kg/m^3
+  double viscosity = 0.0;   ///< kinematic nu, m^2/s; 0 skips the viscous loop entirely
+  double l0 = 0.0;          ///< initial particle spacing, m
+  double re_over_l0 = 3.1;  ///< effective radius r_e / l0
+  double sound_speed = 0.0; ///< c of eq. 15, m/s
+  double beta = 1.0;        ///< free-surface threshold n* < beta n0 (eq. 17)
+  double alpha_rep = 0.0;   ///< repulsive coefficient of eq. 27, N/m^3
+  WallCondition wall_condition = WallCondition::no_slip;
+  /// At concave corners also apply the second wall face (z, mirror terms and repulsion of the
+  /// nearest other face, geometry_erp's second face). false: the paper's nearest wall only
+  /// (eq. 18), which leaks particles into 90-degree tank corners.
+  bool corner_faces = true;
+  Vec2 gravity = Vec2::Zero();
+  double damping_time = 0.0; ///< T_d: velocities damped at rate 20/T_d (1 - t/T_d) for t < T_d
+  Vec2 domain_min = Vec2::Zero(), domain_max = Vec2::Zero(); ///< outside: removed and counted
+  int reorder_interval = 10; ///< steps between physical reorderings of particles by cell
+  double skin = 0.15;        ///< neighbour-list margin, fraction of r_e
+
+  double r_e() const { return re_over_l0 * l0; }
+  double volume() const { return l0 * l0; } ///< V_i = l0^d (eq. 43)
+};
+
+} // namespace fsi::emps

@@ -1,0 +1,408 @@
+#include "fluid_emps/emps_fluid.hpp"
+
+#include "fsi/core/error.hpp"
+#include "fsi/core/parallel.hpp"
+#include "geometry_erp/mirror.hpp"
+#include "geometry_erp/weight.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <omp.h>
+#include <sstream>
+
+namespace fsi::emps {
+
+namespace {
+
+constexpr double d = 2.0; // number of dimensions
+constexpr std::size_t none = std::numeric_limits<std::size_t>::max();
+
+/// w(r) = (1 - r/r_e)^2 for r < r_e (eq. 8), with inv_re = 1/r_e.
+inline double weight(double r, double inv_re) {
+  const double s = 1.0 - r * inv_re;
+  return s * s;
+}
+
+std::size_t first_index(std::size_t n, const auto& bad) {
+  return parallel_reduce(
+      n, none, [&](std::size_t i) { return bad(i) ? i : none; },
+      [](std::size_t a, std::size_t b) { return std::min(a, b); });
+}
+
+std::string where(const Particles& p, std::size_t i, long step, double t) {
+  std::ostringstream out;
+  out << "particle " << p.id[i] << " at (" << p.x[i] << ", " << p.y[i] << ") m, step " << step
+      << ", t = " << t << " s";
+  return out.str();
+}
+
+class Timer {
+public:
+  explicit Timer(double& sink) : sink_(sink), start_(omp_get_wtime()) {}
+  ~Timer() { sink_ += omp_get_wtime() - start_; }
+  Timer(const Timer&) = delete;
+  Timer& operator=(const Timer&) = delete;
+
+private:
+  double& sink_;
+  double start_;
+};
+
+void validate(const FluidOptions& o) {
+  auto fail = [](const std::string& what) { throw InputError("fluid: " + what); };
+  if (!(o.density > 0)) fail("density must be > 0");
+  if (!(o.l0 > 0)) fail("l0 must be > 0");
+  if (!(o.sound_speed > 0)) fail("sound_speed must be > 0");
+  if (!(o.viscosity >= 0)) fail("viscosity must be >= 0");
+  if (!(o.re_over_l0 >= 1.5)) fail("re_over_l0 must be >= 1.5");
+  if (!(o.domain_max.x() > o.domain_min.x() && o.domain_max.y() > o.domain_min.y()))
+    fail("the domain box is empty");
+  if (!(o.skin > 0 && o.skin < 1)) fail("skin must be in (0, 1)");
+}
+
+} // namespace
+
+EmpsFluid::EmpsFluid(const FluidOptions& options, const std::vector<Vec2>& positions,
+                     erp::WallSet& walls)
+    : options_((validate(options), options)), walls_(&walls),
+      locator_(erp::make_wall_locator(walls, options.r_e())),
+      z_(options.l0, options.r_e(), erp::QuadraticWeight{options.r_e()}), r_e_(options.r_e()),
+      n0_(erp::lattice_n0(options.l0, r_e_, erp::QuadraticWeight{r_e_})),
+      lambda0_(erp::lattice_lambda0(options.l0, r_e_, erp::QuadraticWeight{r_e_})),
+      grid_(options.domain_min, options.domain_max, r_e_ * (1.0 + options.skin)) {
+  locator_->set_second_face(options.corner_faces);
+  const std::size_t n = positions.size();
+  particles_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    particles_.x[i] = positions[i].x();
+    particles_.y[i] = positions[i].y();
+    particles_.id[i] = static_cast<std::uint32_t>(i);
+  }
+  const double reach = (1.0 + options.skin) * options.re_over_l0;
+  capacity_ = static_cast<std::size_t>(std::ceil(2.0 * M_PI * reach * reach)) + 16;
+  remove_outside();
+}
+
+EmpsFluid::~EmpsFluid() = default;
+
+// Initial damping phase (quiet hydrostatic starts): v <- v exp(-kappa dt) with a rate
+// kappa = 20/T_d (1 - t/T_d) that fades to zero at T_d, so the run continues undamped.
+void EmpsFluid::damp(double t, double dt) {
+  const double T = options_.damping_time;
+  if (T <= 0 || t >= T) return;
+  const double factor = std::exp(-20.0 / T * (1.0 - t / T) * dt);
+  Particles& p = particles_;
+  parallel_for(p.size(), [&](std::size_t i) {
+    p.vx[i] *= factor;
+    p.vy[i] *= factor;
+  });
+}
+
+void EmpsFluid::refresh_neighbours(bool allow_reorder) {
+  Timer timer(times_.neighbours);
+  Particles& p = particles_;
+  const std::size_t n = p.size();
+  if (neighbours_.valid(p.x.data(), p.y.data(), n, 0.5 * options_.skin * r_e_)) return;
+  grid_.bin(p.x.data(), p.y.data(), n);
+  if (allow_reorder && builds_ % std::max(1, options_.reorder_interval) == 0) {
+    p.permute(grid_.order(), scratch_);
+    ++layout_;
+    grid_.bin(p.x.data(), p.y.data(), n);
+  }
+  ++builds_;
+  if (!neighbours_.build(grid_, p.x.data(), p.y.data(), n, r_e_ * (1.0 + options_.skin), capacity_))
+    throw RunError("fluid: more than " + std::to_string(capacity_) + " neighbours at " +
+                   where(p, neighbours_.overflow(), step_, 0.0) +
+                   " (particles clustered: the step is likely unstable)");
+}
+
+void EmpsFluid::query_walls() {
+  Timer timer(times_.walls);
+  locator_->query(std::span<const double>(particles_.x), std::span<const double>(particles_.y),
+                  hits_);
+}
+
+// <lap v>_i' at the mirror point x_i' = 2 x_wall - x_i (eq. 23) over the real neighbours of x_i'
+// (j = i included), with the mirror velocity v_i' (eq. 24 no-slip, or slip), turned back by
+// R_inv (no-slip) or R_ref (slip); without the 2d/(lambda0 n0) factor.
+Vec2 EmpsFluid::mirror_laplacian(std::size_t i, const Vec2& x_wall, const Vec2& n_wall,
+                                 const Vec2& v_wall) const {
+  const Particles& p = particles_;
+  const double inv_re = 1.0 / r_e_, re2 = r_e_ * r_e_;
+  const bool no_slip = options_.wall_condition == WallCondition::no_slip;
+  const Vec2 v_i(p.vx[i], p.vy[i]);
+  const Vec2 v_m = no_slip ? erp::mirror_velocity_no_slip(v_i, v_wall, n_wall)
+                           : erp::mirror_velocity_slip(v_i, v_wall, n_wall);
+  const double mpx = 2.0 * x_wall.x() - p.x[i], mpy = 2.0 * x_wall.y() - p.y[i];
+  double ux = 0, uy = 0;
+  grid_.for_each_near(mpx, mpy, [&](std::uint32_t j) {
+    const double dx = p.x[j] - mpx, dy = p.y[j] - mpy, r2 = dx * dx + dy * dy;
+    if (r2 >= re2) return;
+    const double w = weight(std::sqrt(r2), inv_re);
+    ux += (p.vx[j] - v_m.x()) * w;
+    uy += (p.vy[j] - v_m.y()) * w;
+  });
+  return (no_slip ? erp::R_inv() : erp::R_ref(n_wall)) * Vec2(ux, uy);
+}
+
+// v* = v + dt (nu <lap v>^ERP + g) (eqs. 11, 13, 24). ax_, ay_ keep the viscous wall forces.
+void EmpsFluid::viscosity(double dt) {
+  Timer timer(times_.viscosity);
+  Particles& p = particles_;
+  const std::size_t n = p.size();
+  const double inv_re = 1.0 / r_e_, re2 = r_e_ * r_e_;
+  const double c_lap = 2.0 * d / (lambda0_ * n0_);
+  const double nu = options_.viscosity, mu_V = options_.density * nu * options_.volume();
+  scratch_.resize(2 * n);
+  parallel_for(n, [&](std::size_t i) {
+    const double xi = p.x[i], yi = p.y[i], vxi = p.vx[i], vyi = p.vy[i];
+    double sx = 0, sy = 0;
+    const std::uint32_t* row = neighbours_.row(i);
+    for (std::uint32_t k = 0, c = neighbours_.count(i); k < c; ++k) {
+      const std::uint32_t j = row[k];
+      const double dx = p.x[j] - xi, dy = p.y[j] - yi, r2 = dx * dx + dy * dy;
+      if (r2 >= re2) continue;
+      const double w = weight(std::sqrt(r2), inv_re);
+      sx += (p.vx[j] - vxi) * w;
+      sy += (p.vy[j] - vyi) * w;
+    }
+    Vec2 m1 = Vec2::Zero(), m2 = Vec2::Zero();
+    if (hits_.segment[i] >= 0)
+      m1 = c_lap * mirror_laplacian(i, hits_.x_wall[i], hits_.n_wall[i], hits_.v_wall[i]);
+    if (hits_.segment2[i] >= 0)
+      m2 = c_lap * mirror_laplacian(i, hits_.x_wall2[i], hits_.n_wall2[i], hits_.v_wall2[i]);
+    scratch_[2 * i] = nu * (c_lap * sx + m1.x() + m2.x());
+    scratch_[2 * i + 1] = nu * (c_lap * sy + m1.y() + m2.y());
+    visc_wall_[i] = mu_V * m1; // V_i mu R <lap v>_i' (eq. 52, viscous wall part)
+    visc_wall2_[i] = mu_V * m2;
+  });
+  parallel_for(n, [&](std::size_t i) {
+    p.vx[i] += dt * scratch_[2 * i];
+    p.vy[i] += dt * scratch_[2 * i + 1];
+  });
+}
+
+// n*_i = sum_j w_ij + z(r_wall,i) (eqs. 9, 20); p_i = c^2 rho/n0 (n*_i - n0), 0 on the free
+// surface n*_i < beta n0 (eqs. 15, 17).
+void EmpsFluid::density_and_pressure() {
+  Timer timer(times_.density);
+  Particles& p = particles_;
+  const std::size_t n = p.size();
+  const double inv_re = 1.0 / r_e_, re2 = r_e_ * r_e_;
+  const double stiffness = options_.sound_speed * options_.sound_speed * options_.density / n0_;
+  const double surface = options_.beta * n0_;
+  const double pairs = parallel_reduce(
+      n, 0.0,
+      [&](std::size_t i) {
+        const double xi = p.x[i], yi = p.y[i];
+        double pnd = 0;
+        int within = 0;
+        const std::uint32_t* row = neighbours_.row(i);
+        for (std::uint32_t k = 0, c = neighbours_.count(i); k < c; ++k) {
+          const std::uint32_t j = row[k];
+          const double dx = p.x[j] - xi, dy = p.y[j] - yi, r2 = dx * dx + dy * dy;
+          if (r2 >= re2) continue;
+          pnd += weight(std::sqrt(r2), inv_re);
+          ++within;
+        }
+        if (hits_.segment[i] >= 0) pnd += z_(hits_.r[i]);
+        if (hits_.segment2[i] >= 0) pnd += z_(hits_.r2[i]);
+        p.pnd[i] = pnd;
+        const bool free = pnd < surface;
+        p.surface[i] = free;
+        p.p[i] = free ? 0.0 : stiffness * (pnd - n0_);
+        return static_cast<double>(within);
+      },
+      [](double a, double b) { return a + b; });
+  mean_neighbours_ = n ? pairs / static_cast<double>(n) : 0.0;
+}
+
+// R_ref <grad p>_i' (eqs. 25-26) without the d/n0 factor: the gradient sum at the mirror point
+// over the real neighbours of x_i' (j = i included) with p_i' = p_i, reflected back.
+Vec2 EmpsFluid::mirror_gradient(std::size_t i, const Vec2& x_wall, const Vec2& n_wall) const {
+  const Particles& p = particles_;
+  const double inv_re = 1.0 / r_e_, re2 = r_e_ * r_e_, pi = p.p[i];
+  const double mpx = 2.0 * x_wall.x() - p.x[i], mpy = 2.0 * x_wall.y() - p.y[i];
+  double ux = 0, uy = 0;
+  grid_.for_each_near(mpx, mpy, [&](std::uint32_t j) {
+    const double dx = p.x[j] - mpx, dy = p.y[j] - mpy, r2 = dx * dx + dy * dy;
+    if (r2 >= re2 || r2 == 0.0) return;
+    const double s = (p.p[j] + pi) * weight(std::sqrt(r2), inv_re) / r2;
+    ux += s * dx;
+    uy += s * dy;
+  });
+  return erp::R_ref(n_wall) * Vec2(ux, uy);
+}
+
+// f_rep (eq. 27), in the units of grad p; r is floored at l0/2000 (a particle on the wall).
+Vec2 EmpsFluid::repulsion(double r, const Vec2& n_wall) const {
+  const double half_l0 = 0.5 * options_.l0;
+  if (r >= half_l0) return Vec2::Zero();
+  return -options_.alpha_rep * (half_l0 / std::max(r, 1e-3 * half_l0) - 1.0) * n_wall;
+}
+
+// v^{n+1} = v* - dt/rho <grad p>^ERP, x^{n+1} = x* + dt (v^{n+1} - v*) (eqs. 10, 14, 25-27),
+// and the wall force of eq. 52 on each face.
+void EmpsFluid::pressure_gradient(double dt) {
+  Timer timer(times_.pressure_gradient);
+  Particles& p = particles_;
+  const std::size_t n = p.size();
+  const double inv_re = 1.0 / r_e_, re2 = r_e_ * r_e_;
+  const double c_grad = d / n0_;
+  const double inv_rho = 1.0 / options_.density, V = options_.volume();
+  scratch_.resize(2 * n);
+  parallel_for(n, [&](std::size_t i) {
+    const double xi = p.x[i], yi = p.y[i], pi = p.p[i];
+    double gx = 0, gy = 0;
+    const std::uint32_t* row = neighbours_.row(i);
+    for (std::uint32_t k = 0, c = neighbours_.count(i); k < c; ++k) {
+      const std::uint32_t j = row[k];
+      const double dx = p.x[j] - xi, dy = p.y[j] - yi, r2 = dx * dx + dy * dy;
+      if (r2 >= re2 || r2 == 0.0) continue;
+      const double s = (p.p[j] + pi) * weight(std::sqrt(r2), inv_re) / r2;
+      gx += s * dx;
+      gy += s * dy;
+    }
+    // Wall parts R_ref <grad p>_i' + f_rep of each face (eqs. 25-27).
+    Vec2 w1 = Vec2::Zero(), w2 = Vec2::Zero();
+    const int s1 = hits_.segment[i], s2 = hits_.segment2[i];
+    if (s1 >= 0)
+      w1 = c_grad * mirror_gradient(i, hits_.x_wall[i], hits_.n_wall[i]) +
+           repulsion(hits_.r[i], hits_.n_wall[i]);
+    if (s2 >= 0)
+      w2 = c_grad * mirror_gradient(i, hits_.x_wall2[i], hits_.n_wall2[i]) +
+           repulsion(hits_.r2[i], hits_.n_wall2[i]);
+    const Vec2 grad = c_grad * Vec2(gx, gy) + w1 + w2;
+    const Vec2 dv = -dt * inv_rho * grad;
+    p.vx[i] += dv.x();
+    p.vy[i] += dv.y();
+    scratch_[2 * i] = dt * dv.x();
+    scratch_[2 * i + 1] = dt * dv.y();
+    // eq. 52: f_wall = V (-(R_ref <grad p>_i' + f_rep) + mu R <lap v>_i'), per face
+    wall_forces_.segment[i] = s1;
+    wall_forces_.t[i] = s1 >= 0 ? hits_.t[i] : 0.0;
+    wall_forces_.x_wall[i] = s1 >= 0 ? hits_.x_wall[i] : Vec2::Zero();
+    wall_forces_.f[i] = s1 >= 0 ? Vec2(-V * w1 + visc_wall_[i]) : Vec2::Zero();
+    wall_forces_.segment2[i] = s2;
+    wall_forces_.t2[i] = s2 >= 0 ? hits_.t2[i] : 0.0;
+    wall_forces_.x_wall2[i] = s2 >= 0 ? hits_.x_wall2[i] : Vec2::Zero();
+    wall_forces_.f2[i] = s2 >= 0 ? Vec2(-V * w2 + visc_wall2_[i]) : Vec2::Zero();
+  });
+  parallel_for(n, [&](std::size_t i) {
+    p.x[i] += scratch_[2 * i];
+    p.y[i] += scratch_[2 * i + 1];
+  });
+}
+
+void EmpsFluid::advance(double t, double dt) {
+  Particles& p = particles_;
+  {
+    Timer timer(times_.walls);
+    locator_->update();
+  }
+  const Vec2 g = options_.gravity;
+  refresh_neighbours(true);
+  const std::size_t n = p.size();
+  visc_wall_.assign(n, Vec2::Zero());
+  visc_wall2_.assign(n, Vec2::Zero());
+  for (auto* a : {&wall_forces_.segment, &wall_forces_.segment2}) a->resize(n);
+  for (auto* a : {&wall_forces_.t, &wall_forces_.t2}) a->resize(n);
+  for (auto* a : {&wall_forces_.x_wall, &wall_forces_.f, &wall_forces_.x_wall2, &wall_forces_.f2})
+    a->resize(n);
+  if (options_.viscosity > 0) {
+    query_walls();
+    viscosity(dt);
+  }
+  {
+    Timer timer(times_.other);
+    parallel_for(n, [&](std::size_t i) {
+      p.vx[i] += dt * g.x();
+      p.vy[i] += dt * g.y();
+      p.x[i] += dt * p.vx[i];
+      p.y[i] += dt * p.vy[i];
+    });
+  }
+  refresh_neighbours(false);
+  query_walls();
+  const std::size_t crossed = first_index(n, [&](std::size_t i) { return hits_.crossed[i] != 0; });
+  if (crossed != none)
+    throw RunError("fluid: " + where(p, crossed, step_ + 1, t + dt) + " is behind wall segment " +
+                   std::to_string(hits_.segment[crossed]) +
+                   " (try a smaller time step or a larger alpha_rep)");
+  density_and_pressure();
+  pressure_gradient(dt);
+  ++step_;
+  Timer timer(times_.other);
+  damp(t, dt);
+  check_finite(t + dt);
+  remove_outside();
+}
+
+void EmpsFluid::check_finite(double t) const {
+  const Particles& p = particles_;
+  const std::size_t bad = first_index(p.size(), [&](std::size_t i) {
+    return !std::isfinite(p.x[i] + p.y[i] + p.vx[i] + p.vy[i] + p.p[i]);
+  });
+  if (bad != none)
+    throw RunError("fluid: non-finite position, velocity or pressure at " +
+                   where(p, bad, step_, t));
+}
+
+void EmpsFluid::remove_outside() {
+  Particles& p = particles_;
+  const Vec2 lo = options_.domain_min, hi = options_.domain_max;
+  keep_.resize(p.size());
+  const std::size_t outside = parallel_reduce(
+      p.size(), std::size_t{0},
+      [&](std::size_t i) {
+        const bool in =
+            p.x[i] >= lo.x() && p.x[i] <= hi.x() && p.y[i] >= lo.y() && p.y[i] <= hi.y();
+        keep_[i] = in;
+        return std::size_t{in ? 0u : 1u};
+      },
+      [](std::size_t a, std::size_t b) { return a + b; });
+  if (outside == 0) return;
+  removed_ += p.compact(keep_);
+  ++layout_;
+  neighbours_.invalidate();
+}
+
+double EmpsFluid::kinetic_energy() const {
+  const Particles& p = particles_;
+  const double m = options_.density * options_.volume();
+  return parallel_reduce(
+      p.size(), 0.0,
+      [&](std::size_t i) { return 0.5 * m * (p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i]); },
+      [](double a, double b) { return a + b; });
+}
+
+double EmpsFluid::max_speed() const {
+  const Particles& p = particles_;
+  return std::sqrt(parallel_reduce(
+      p.size(), 0.0, [&](std::size_t i) { return p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i]; },
+      [](double a, double b) { return std::max(a, b); }));
+}
+
+double EmpsFluid::stable_dt(double courant) const {
+  double dt = courant * options_.l0 / (options_.sound_speed + max_speed());
+  if (options_.viscosity > 0)
+    dt = std::min(dt, 0.25 * options_.l0 * options_.l0 / options_.viscosity);
+  return dt;
+}
+
+EmpsFluid::State EmpsFluid::save() const {
+  return {particles_, step_, removed_, layout_};
+}
+
+void EmpsFluid::restore(const State& s) {
+  particles_ = s.particles;
+  step_ = s.step;
+  removed_ = s.removed;
+  if (s.layout != layout_) {
+    layout_ = s.layout;
+    neighbours_.invalidate();
+  }
+}
+
+} // namespace fsi::emps

@@ -1,0 +1,160 @@
+// EMPS fluid: conservation and rest properties of the operators, containment in a rolling tank,
+// and a clear stop (not NaN output) for a run that goes unstable.
+#include "fluid_emps/emps_fluid.hpp"
+#include "fsi/core/error.hpp"
+#include "geometry_erp/fill.hpp"
+#include "geometry_erp/wall_weight.hpp"
+#include "geometry_erp/weight.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <numbers>
+
+using namespace fsi;
+using Catch::Matchers::WithinAbs;
+using Catch::Matchers::WithinRel;
+
+namespace {
+
+emps::FluidOptions water(double l0) {
+  emps::FluidOptions o;
+  o.density = 1000.0;
+  o.l0 = l0;
+  o.sound_speed = 20.0;
+  o.domain_min = {-1.0, -1.0};
+  o.domain_max = {2.0, 2.0};
+  return o;
+}
+
+Vec2 momentum(const emps::Particles& p) {
+  Vec2 m = Vec2::Zero();
+  for (std::size_t i = 0; i < p.size(); ++i) m += Vec2(p.vx[i], p.vy[i]);
+  return m;
+}
+
+} // namespace
+
+TEST_CASE("emps: n0 and lambda0 are those of the full lattice (eqs. 9, 12)", "[emps]") {
+  const double l0 = 0.01;
+  erp::WallSet walls;
+  emps::EmpsFluid fluid(
+      water(l0), erp::fill_lattice({0, 0}, l0, {{{0, 0}, {0.1, 0}, {0.1, 0.1}, {0, 0.1}}}), walls);
+  const erp::QuadraticWeight w{3.1 * l0};
+  CHECK_THAT(fluid.n0(), WithinRel(erp::lattice_n0(l0, 3.1 * l0, w), 1e-14));
+  CHECK_THAT(fluid.lambda0(), WithinRel(erp::lattice_lambda0(l0, 3.1 * l0, w), 1e-14));
+  CHECK_THAT(fluid.n0(), WithinRel(4.1783, 1e-4)); // sum of (1 - r/3.1)^2 over the lattice
+}
+
+TEST_CASE("emps: a lattice at rest against flat walls stays at rest with pnd = n0", "[emps]") {
+  // Without gravity a fluid at the initial spacing, first rows at l0/2 from the walls, has
+  // n*_i = n0 everywhere inside (the wall weight z completes each near-wall particle's support).
+  const double l0 = 0.01;
+  erp::WallSet walls;
+  const std::vector<Vec2> tank{{0.0, 0.5}, {0.0, 0.0}, {0.4, 0.0}, {0.4, 0.5}};
+  walls.add_polyline(tank, false, 0);
+  const auto positions =
+      erp::fill_lattice({0, 0}, l0, {{{0, 0}, {0.4, 0}, {0.4, 0.3}, {0, 0.3}}}, {}, &walls);
+  auto options = water(l0);
+  options.corner_faces = false; // the corner's double-counted quadrant is checked below
+  emps::EmpsFluid fluid(options, positions, walls);
+  fluid.advance(0.0, 1e-4);
+  const auto& p = fluid.particles();
+  int checked = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const bool corner = p.x[i] < 0.035 && p.y[i] < 0.035;
+    const bool surface_zone = p.y[i] > 0.3 - 3.5 * l0 || corner || p.x[i] > 0.4 - 0.035;
+    if (surface_zone) continue;
+    REQUIRE_THAT(p.pnd[i], WithinRel(fluid.n0(), 1e-12));
+    REQUIRE(std::abs(p.p[i]) < 1e-6); // c^2 rho / n0 (n - n0) at round-off: |n - n0| ~ 1e-15
+    REQUIRE(std::hypot(p.vx[i], p.vy[i]) < 1e-12);
+    ++checked;
+  }
+  CHECK(checked > 700);
+}
+
+TEST_CASE("emps: without gravity and walls, linear momentum is conserved to 1e-10 per step",
+          "[emps]") {
+  // The fluid-fluid gradient (eq. 10) is antisymmetric in pairs; an impulsively started blob
+  // (squeezed in x, stretched in y, so pressures rise) keeps its total momentum.
+  const double l0 = 0.01;
+  erp::WallSet walls;
+  auto positions = erp::fill_lattice({0, 0}, l0, {{{0, 0}, {0.3, 0}, {0.3, 0.3}, {0, 0.3}}});
+  emps::EmpsFluid fluid(water(l0), positions, walls);
+  auto state = fluid.save();
+  double scale = 0.0;
+  for (std::size_t i = 0; i < state.particles.size(); ++i) {
+    state.particles.vx[i] = 1.0 + -4.0 * (state.particles.x[i] - 0.15);
+    state.particles.vy[i] = -0.5 + 4.0 * (state.particles.y[i] - 0.15);
+    scale += std::hypot(state.particles.vx[i], state.particles.vy[i]);
+  }
+  fluid.restore(state);
+  Vec2 before = momentum(fluid.particles());
+  double worst = 0.0;
+  int pressurised = 0;
+  for (int k = 0; k < 300; ++k) {
+    fluid.advance(k * 1e-4, 1e-4);
+    const Vec2 after = momentum(fluid.particles());
+    worst = std::max(worst, (after - before).norm() / scale);
+    before = after;
+    for (double pi : fluid.particles().p) pressurised += pi > 0.0;
+  }
+  CHECK(pressurised > 10000); // the test exercised the pressure gradient
+  CHECK(worst < 1e-10);
+}
+
+TEST_CASE("emps: a tank rolling +-4 degrees, half full, keeps every particle for 5 periods",
+          "[emps]") {
+  const double l0 = 0.01, L = 0.6, H = 0.4;
+  erp::WallSet walls;
+  const std::vector<Vec2> tank{{0, 0}, {L, 0}, {L, H}, {0, H}}; // closed, counter-clockwise
+  walls.add_rigid_polyline(
+      tank, true, 0, {0.5 * L, 0.0},
+      std::make_shared<erp::SinusoidRotation>(4.0 * std::numbers::pi / 180.0, 1.2, 0.0));
+  const auto positions =
+      erp::fill_lattice({0, 0}, l0, {{{0, 0}, {L, 0}, {L, 0.5 * H}, {0, 0.5 * H}}}, {}, &walls);
+  auto options = water(l0);
+  options.viscosity = 1e-6;
+  options.alpha_rep = 1e7;
+  options.gravity = {0.0, -9.81};
+  options.domain_min = {-0.2, -0.2};
+  options.domain_max = {L + 0.2, H + 0.2};
+  emps::EmpsFluid fluid(options, positions, walls);
+  const double dt = 2.5e-4;
+  double max_speed = 0.0;
+  const long steps = std::lround(5 * 1.2 / dt);
+  for (long k = 0; k < steps; ++k) {
+    walls.move_rigid((k + 1) * dt);
+    fluid.advance(k * dt, dt); // throws RunError if a particle gets behind a wall
+    max_speed = std::max(max_speed, fluid.max_speed());
+  }
+  CHECK(fluid.particles().size() == positions.size());
+  CHECK(fluid.removed() == 0);
+  CHECK(max_speed > 0.1); // the fluid did slosh
+  CHECK(max_speed < 5.0);
+}
+
+TEST_CASE("emps: an unstable run stops with what, where and when", "[emps]") {
+  // A time step far beyond the acoustic limit: the column blows up and a particle ends behind
+  // the floor or goes non-finite; the run must stop with a message, not write NaN.
+  const double l0 = 0.01;
+  erp::WallSet walls;
+  const std::vector<Vec2> tank{{0.0, 0.5}, {0.0, 0.0}, {0.3, 0.0}, {0.3, 0.5}};
+  walls.add_polyline(tank, false, 0);
+  auto options = water(l0);
+  options.gravity = {0.0, -9.81};
+  emps::EmpsFluid fluid(
+      options,
+      erp::fill_lattice({0, 0}, l0, {{{0, 0}, {0.3, 0}, {0.3, 0.2}, {0, 0.2}}}, {}, &walls), walls);
+  std::string message;
+  try {
+    for (int k = 0; k < 2000; ++k) fluid.advance(k * 5e-3, 5e-3);
+  } catch (const RunError& e) {
+    message = e.what();
+  }
+  REQUIRE_FALSE(message.empty());
+  CHECK(message.rfind("fluid: ", 0) == 0);
+  CHECK(message.find("particle ") != std::string::npos);
+  CHECK(message.find(", step ") != std::string::npos);
+  CHECK(message.find(", t = ") != std::string::npos);
+}
