@@ -10,6 +10,7 @@
 #include <cmath>
 #include <ctime>
 #include <fstream>
+#include <limits>
 
 namespace fsi::app {
 
@@ -76,27 +77,46 @@ void run_scene(const Scene& scene, std::vector<std::unique_ptr<Model>>& models,
   std::ostream& log = *options.log;
   const auto start = std::chrono::system_clock::now();
   const auto wall_start = std::chrono::steady_clock::now();
-  const double dt = scene.time.dt.value();
-  const long total_steps = static_cast<long>(std::ceil(scene.time.end / dt - 1e-9));
-  const long steps_per_frame = std::max(1L, std::lround(scene.output.interval / dt));
-
   long step = 0;
+  double time = 0.0, dt_min = std::numeric_limits<double>::infinity(), dt_max = 0.0;
   std::string status = "completed", message;
   int frames = 0;
+  // The step: fixed (time = step * dt exactly, frames every round(interval / dt) steps), or the
+  // smallest stable step of the models for the Courant number, shortened to land on frames.
+  auto next_dt = [&](double next_frame) {
+    if (scene.time.dt) return *scene.time.dt;
+    double dt = std::numeric_limits<double>::infinity();
+    for (const auto& m : models)
+      if (auto s = m->stable_dt(*scene.time.courant)) dt = std::min(dt, *s);
+    return std::min(dt, next_frame - time);
+  };
   try {
     Recorder recorder(scene, models, options.out);
     Progress progress(scene.time.end, options.terminal, log);
     recorder.frame(0.0);
     frames = recorder.frames();
-    while (step < total_steps) {
-      const double time = static_cast<double>(step) * dt;
+    const double end = scene.time.end, interval = scene.output.interval;
+    const long fixed_total =
+        scene.time.dt ? std::lround(std::ceil(end / *scene.time.dt - 1e-9)) : 0;
+    const long fixed_per_frame =
+        scene.time.dt ? std::max(1L, std::lround(interval / *scene.time.dt)) : 0;
+    double next_frame = std::min(interval, end);
+    while (scene.time.dt ? step < fixed_total : time < end * (1.0 - 1e-12)) {
+      const double dt = next_dt(next_frame);
       for (auto& m : models) m->advance(time, dt);
       ++step;
-      if (step % steps_per_frame == 0 || step == total_steps)
-        recorder.frame(static_cast<double>(step) * dt), frames = recorder.frames();
-      progress.update(static_cast<double>(step) * dt, step);
+      time = scene.time.dt ? static_cast<double>(step) * dt : time + dt;
+      dt_min = std::min(dt_min, dt), dt_max = std::max(dt_max, dt);
+      const bool frame = scene.time.dt ? step % fixed_per_frame == 0 || step == fixed_total
+                                       : time >= next_frame * (1.0 - 1e-12);
+      if (frame) {
+        recorder.frame(time);
+        frames = recorder.frames();
+        next_frame = std::min(next_frame + interval, end);
+      }
+      progress.update(time, step);
     }
-    progress.finish(static_cast<double>(step) * dt, step);
+    progress.finish(time, step);
   } catch (const RunError& e) {
     status = "failed";
     message = e.what();
@@ -115,8 +135,9 @@ void run_scene(const Scene& scene, std::vector<std::unique_ptr<Model>>& models,
       .add("status", status)
       .add("message", message)
       .add("steps", static_cast<long long>(step))
-      .add("simulated_time", static_cast<double>(step) * dt)
-      .add("dt", dt)
+      .add("simulated_time", time)
+      .add("dt_min", dt_min)
+      .add("dt_max", dt_max)
       .add("frames", frames);
   for (const auto& m : models) m->report(run);
   std::ofstream(options.out / "run.json") << run.str() << '\n';

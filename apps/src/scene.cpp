@@ -41,8 +41,8 @@ ProbeSpec read_probe(Section s) {
   p.line = s.line();
   p.name = s.text("name", "column name in probes.csv (letters, digits, _)");
   p.quantity = s.choice("quantity", kProbeQuantities, "",
-                        "what is sampled: a node's displacement, the surge front (largest "
-                        "particle x), or the pressure at a point");
+                        "what is sampled: a node's displacement, the surge front (largest x of "
+                        "particles with pnd >= n0/2, i.e. not spray), or the pressure at a point");
   p.structure = s.text("structure", "", "structure name, for displacement probes");
   p.node = s.optional_integer("node", Range::non_negative(), "FE node index (or give point)");
   p.point = s.optional_vec2("point", "reference position of the FE node, or the fluid point, m");
@@ -109,6 +109,7 @@ MotionSpec read_motion(Section s) {
 
 WallSpec read_wall(Section s) {
   WallSpec w;
+  w.line = s.line();
   w.name = s.text("name", "wall name, for messages");
   w.polyline =
       s.points("polyline", 2, "vertices; the fluid lies on the left of each directed segment");
@@ -141,6 +142,7 @@ std::vector<Vec2> read_region(Section s) {
 
 FluidSpec read_fluid(Section s) {
   FluidSpec f;
+  f.line = s.line();
   const bool doc = s.context().documenting();
   f.density = s.real("density", Range::positive(), "rho, kg/m^3");
   f.viscosity = s.real("viscosity", 0.0, Range::non_negative(),
@@ -153,8 +155,10 @@ FluidSpec read_fluid(Section s) {
       s.real("alpha_rep", 0.0, Range::non_negative(), "repulsive coefficient of eq. 27, N/m^3");
   f.wall_condition =
       s.choice("wall_condition", {"no_slip", "slip"}, "no_slip", "viscous wall condition (eq. 24)");
-  f.damping_time = s.real("damping_time", 0.0, Range::non_negative(),
-                          "initial phase over which velocities are damped to rest, s");
+  f.damping_time =
+      s.real("damping_time", 0.0, Range::non_negative(),
+             "initial damping phase T_d: velocities damped at a rate 20/T_d (1 - t/T_d) "
+             "(quiet hydrostatic starts), s");
   for (auto& region : s.list("regions", "areas filled with particles at spacing l0"))
     f.regions.push_back(read_region(region));
   if (!doc && f.regions.empty()) s.fail("regions", "at least one region is required");

@@ -82,6 +82,10 @@ EmpsFluid::EmpsFluid(const FluidOptions& options, const std::vector<Vec2>& posit
   const double reach = (1.0 + options.skin) * options.re_over_l0;
   capacity_ = static_cast<std::size_t>(std::ceil(2.0 * M_PI * reach * reach)) + 16;
   remove_outside();
+  // pnd, pressure and free-surface flags of the initial state (for output at t = 0).
+  refresh_neighbours(true);
+  query_walls();
+  density_and_pressure();
 }
 
 EmpsFluid::~EmpsFluid() = default;
@@ -121,6 +125,7 @@ void EmpsFluid::query_walls() {
   Timer timer(times_.walls);
   locator_->query(std::span<const double>(particles_.x), std::span<const double>(particles_.y),
                   hits_);
+  hits_layout_ = layout_;
 }
 
 // <lap v>_i' at the mirror point x_i' = 2 x_wall - x_i (eq. 23) over the real neighbours of x_i'
@@ -146,7 +151,7 @@ Vec2 EmpsFluid::mirror_laplacian(std::size_t i, const Vec2& x_wall, const Vec2& 
   return (no_slip ? erp::R_inv() : erp::R_ref(n_wall)) * Vec2(ux, uy);
 }
 
-// v* = v + dt (nu <lap v>^ERP + g) (eqs. 11, 13, 24). ax_, ay_ keep the viscous wall forces.
+// v* = v + dt (nu <lap v>^ERP + g) (eqs. 11, 13, 24); visc_wall_ keeps the viscous wall forces.
 void EmpsFluid::viscosity(double dt) {
   Timer timer(times_.viscosity);
   Particles& p = particles_;
@@ -311,7 +316,9 @@ void EmpsFluid::advance(double t, double dt) {
   for (auto* a : {&wall_forces_.x_wall, &wall_forces_.f, &wall_forces_.x_wall2, &wall_forces_.f2})
     a->resize(n);
   if (options_.viscosity > 0) {
-    query_walls();
+    // The wall hits of the last step's x* serve x^n (which differs by dt^2 |grad p| / rho, and
+    // they see the walls at t^n) unless particles were reordered or removed since.
+    if (hits_layout_ != layout_) query_walls();
     viscosity(dt);
   }
   {
@@ -403,6 +410,7 @@ void EmpsFluid::restore(const State& s) {
     layout_ = s.layout;
     neighbours_.invalidate();
   }
+  hits_layout_ = -1; // the hits belong to the abandoned step
 }
 
 } // namespace fsi::emps

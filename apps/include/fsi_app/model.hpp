@@ -16,6 +16,8 @@ public:
   virtual ~Model() = default;
   /// Advances from `time` to `time + dt`; throws fsi::RunError when the run cannot go on.
   virtual void advance(double time, double dt) = 0;
+  /// The largest stable step for a Courant number, for models that limit it (the fluid).
+  virtual std::optional<double> stable_dt(double /*courant*/) const { return std::nullopt; }
   /// Declares static data (mesh connectivity) once, before the first frame.
   virtual void declare(FieldsFile& file) const = 0;
   /// Writes this model's grids for the current frame; `fields` lists the requested fields.

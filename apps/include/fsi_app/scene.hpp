@@ -44,12 +44,14 @@ struct MotionSpec {
 
 struct WallSpec {
   std::string name;
+  int line = 0;
   std::vector<Vec2> polyline;
   bool closed = false;
   std::optional<MotionSpec> motion;
 };
 
 struct FluidSpec {
+  int line = 0;
   double density = 1000.0;                ///< kg/m^3
   double viscosity = 0.0;                 ///< kinematic, m^2/s; 0 skips the viscous loop
   double l0 = 0.0;                        ///< initial particle spacing, m

@@ -58,6 +58,7 @@ public:
   long steps() const { return step_; }
   std::size_t removed() const { return removed_; }
   double mean_neighbours() const { return mean_neighbours_; }
+  long neighbour_builds() const { return builds_; }
   const StepTimes& times() const { return times_; }
   double kinetic_energy() const;
   double max_speed() const;
@@ -101,6 +102,7 @@ private:
   std::vector<std::uint8_t> keep_;
   std::size_t capacity_;
   long step_ = 0, layout_ = 0, builds_ = 0;
+  long hits_layout_ = -1; // layout_ when hits_ were computed (-1: stale)
   std::size_t removed_ = 0;
   double mean_neighbours_ = 0.0;
   StepTimes times_;

@@ -22,8 +22,8 @@ struct FluidOptions {
   Vec2 gravity = Vec2::Zero();
   double damping_time = 0.0; ///< T_d: velocities damped at rate 20/T_d (1 - t/T_d) for t < T_d
   Vec2 domain_min = Vec2::Zero(), domain_max = Vec2::Zero(); ///< outside: removed and counted
-  int reorder_interval = 10; ///< steps between physical reorderings of particles by cell
-  double skin = 0.15;        ///< neighbour-list margin, fraction of r_e
+  int reorder_interval = 1; ///< neighbour-list builds between reorderings of particles by cell
+  double skin = 0.15;       ///< neighbour-list margin, fraction of r_e
 
   double r_e() const { return re_over_l0 * l0; }
   double volume() const { return l0 * l0; } ///< V_i = l0^d (eq. 43)
