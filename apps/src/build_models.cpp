@@ -1,4 +1,5 @@
 #include "fsi/core/error.hpp"
+#include "fsi_app/coupled_model.hpp"
 #include "fsi_app/fluid_model.hpp"
 #include "fsi_app/run.hpp"
 #include "fsi_app/structure_model.hpp"
@@ -6,11 +7,13 @@
 namespace fsi::app {
 
 std::vector<std::unique_ptr<Model>> build_models(const Scene& scene) {
-  if (scene.fluid && !scene.structures.empty())
-    fail_at(scene, scene.fluid->line, "fluid",
-            "fluid-structure coupling is not part of this build yet: run the fluid or the "
-            "structures alone");
   std::vector<std::unique_ptr<Model>> models;
+  if (scene.fluid && !scene.structures.empty()) {
+    if (!scene.time.dt)
+      fail_at(scene, scene.fluid->line, "time.dt", "a coupled scene needs a fixed time step");
+    models.push_back(std::make_unique<CoupledModel>(scene));
+    return models;
+  }
   if (scene.fluid) models.push_back(std::make_unique<FluidModel>(scene));
   for (const auto& spec : scene.structures)
     models.push_back(std::make_unique<StructureModel>(scene, spec));

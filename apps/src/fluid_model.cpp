@@ -57,7 +57,9 @@ emps::FluidOptions fluid_options(const Scene& scene) {
 
 } // namespace
 
-FluidModel::FluidModel(const Scene& scene) : walls_(std::make_unique<erp::WallSet>()) {
+FluidModel::FluidModel(const Scene& scene, const fem::Mesh* structure,
+                       const std::vector<std::string>& interface_tags)
+    : walls_(std::make_unique<erp::WallSet>()) {
   int group = 0;
   for (const auto& w : scene.walls) {
     if (w.motion)
@@ -66,10 +68,21 @@ FluidModel::FluidModel(const Scene& scene) : walls_(std::make_unique<erp::WallSe
     else
       walls_->add_polyline(w.polyline, w.closed, group++);
   }
+  std::vector<erp::Polygon> holes; // the structure's elements (corner triangles)
+  if (structure) {
+    std::vector<std::array<int, 3>> edges;
+    for (const auto& tag : interface_tags)
+      for (const auto& e : structure->edges_with_tag(tag)) edges.push_back(e.nodes);
+    fe_interface_ = std::make_unique<erp::FeInterface>(*walls_, structure->X, edges, group++);
+    for (const auto& e : structure->elements)
+      holes.push_back({structure->X[static_cast<std::size_t>(e[0])],
+                       structure->X[static_cast<std::size_t>(e[1])],
+                       structure->X[static_cast<std::size_t>(e[2])]});
+  }
   const FluidSpec& f = *scene.fluid;
   Vec2 origin = f.regions.front().front();
   for (const auto& p : f.regions.front()) origin = origin.cwiseMin(p);
-  const auto positions = erp::fill_lattice(origin, f.l0, f.regions, {}, walls_.get());
+  const auto positions = erp::fill_lattice(origin, f.l0, f.regions, holes, walls_.get());
   if (positions.empty())
     fail_at(scene, f.line, "fluid.regions", "no particle fits in the regions at this l0");
   initial_count_ = positions.size();

@@ -249,8 +249,9 @@ StructureSpec read_structure(Section s) {
 
 CouplingSpec read_coupling(Section s) {
   CouplingSpec c;
-  c.scheme = s.choice("scheme", {"css", "bgs", "one_way"}, "css",
-                      "serial staggered, block Gauss-Seidel, or one-way");
+  c.line = s.line();
+  c.scheme = s.choice("scheme", {"css", "bgs"}, "css",
+                      "conventional serial staggered, or block Gauss-Seidel iterations (eq. 69)");
   c.predictor = s.choice("predictor", {"none", "second_order"}, "none",
                          "interface predictor for CSS (eqs. 63-65)");
   c.acceleration = s.choice("acceleration", {"none", "constant", "aitken", "iqn-ils"}, "aitken",
@@ -258,8 +259,8 @@ CouplingSpec read_coupling(Section s) {
   c.tolerance = s.real("tolerance", 1e-4, Range::open(0.0, 1.0), "epsilon of eq. 69");
   c.max_iterations =
       s.integer("max_iterations", 200, Range::closed(1, 100000), "BGS iterations per step");
-  c.omega = s.real("omega", 0.5, Range::left_open(0.0, 1.0),
-                   "constant relaxation factor, or Aitken's first");
+  c.omega = s.real("omega", 0.5, Range::left_open(0.0, 2.0),
+                   "constant relaxation factor, or the first of aitken and iqn-ils");
   c.reuse = s.integer("reuse", 8, Range::closed(0, 100), "IQN-ILS: past steps kept");
   c.stop_on_unconverged =
       s.boolean("stop_on_unconverged", false, "stop the run at the first unconverged BGS step");

@@ -2,7 +2,9 @@
 // The EMPS fluid of a scene against its polygon walls (static or with prescribed motion).
 #include "fluid_emps/emps_fluid.hpp"
 #include "fsi_app/model.hpp"
+#include "geometry_erp/fe_interface.hpp"
 #include "geometry_erp/wall_set.hpp"
+#include "structure_fem/mesh.hpp"
 
 #include <memory>
 
@@ -10,9 +12,12 @@ namespace fsi::app {
 
 class FluidModel final : public Model {
 public:
-  /// Builds walls, fills the regions with particles and maps the options. Throws InputError
+  /// Builds walls, fills the regions with particles and maps the options. A coupled structure's
+  /// interface edges (its boundary edges with the given tags) become ERP walls whose nodes are
+  /// its FE nodes (eqs. 47-51), and its elements are kept free of particles. Throws InputError
   /// (scene file and line) for a motion table or region that does not fit.
-  explicit FluidModel(const Scene& scene);
+  FluidModel(const Scene& scene, const fem::Mesh* structure = nullptr,
+             const std::vector<std::string>& interface_tags = {});
   void advance(double time, double dt) override;
   std::optional<double> stable_dt(double courant) const override;
   void declare(FieldsFile& file) const override;
@@ -20,8 +25,14 @@ public:
   std::optional<double> probe(const ProbeSpec& probe) const override;
   void report(JsonObject& run) const override;
 
+  emps::EmpsFluid& fluid() { return *fluid_; }
+  erp::WallSet& walls() { return *walls_; }
+  /// The FE interface of the coupled structure (null without one).
+  const erp::FeInterface* fe_interface() const { return fe_interface_.get(); }
+
 private:
   std::unique_ptr<erp::WallSet> walls_;
+  std::unique_ptr<erp::FeInterface> fe_interface_;
   std::unique_ptr<emps::EmpsFluid> fluid_;
   std::size_t initial_count_ = 0;
   mutable std::vector<double> xy_, v_, flag_; // output buffers

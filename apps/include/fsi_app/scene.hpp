@@ -95,7 +95,7 @@ struct StructureSpec {
 };
 
 struct CouplingSpec {
-  std::string scheme;       ///< css | bgs | one_way
+  std::string scheme;       ///< css | bgs
   std::string predictor;    ///< none | second_order
   std::string acceleration; ///< none | constant | aitken | iqn-ils
   double tolerance = 1e-4;  ///< eq. 69
@@ -104,6 +104,7 @@ struct CouplingSpec {
   int reuse = 8;      ///< IQN-ILS: past time steps kept
   bool stop_on_unconverged = false;
   int substeps = 1; ///< fluid steps per structure step
+  int line = 0;     ///< scene line of the block
 };
 
 struct Scene {

@@ -23,6 +23,8 @@ public:
   std::optional<double> probe(const ProbeSpec& probe) const override;
   void report(JsonObject& run) const override;
 
+  fem::Structure& structure() { return *structure_; }
+
 private:
   std::string name_;
   std::unique_ptr<fem::Structure> structure_;

@@ -1,0 +1,63 @@
+#pragma once
+// The EMPS fluid and the FEM structure behind the coupler's interfaces (eqs. 50-62). These are
+// the only classes that know both a concrete solver and the coupling library. Interface node k
+// is polygon node L = first_node + k of the FE interface, i.e. FE node K = NCR(L) (eq. 50).
+#include "coupling/interface.hpp"
+#include "coupling/projection.hpp"
+#include "fluid_emps/emps_fluid.hpp"
+#include "geometry_erp/fe_interface.hpp"
+#include "structure_fem/structure.hpp"
+
+#include <optional>
+
+namespace fsi::app {
+
+/// F (eq. 66): wall motion in; particle wall forces out, as point loads projected with the FE
+/// edge's quadratic shape functions (eqs. 52-59).
+class FluidAdapter final : public coupling::FluidSolver {
+public:
+  FluidAdapter(emps::EmpsFluid& fluid, erp::WallSet& walls, const erp::FeInterface& fe);
+  void initialize() override {}
+  void set_interface_motion(const coupling::InterfaceMotion& motion) override;
+  void advance(double t, double dt) override;
+  const coupling::InterfaceLoads& interface_loads() const override { return loads_; }
+  void save_state() override;
+  void restore_state() override;
+
+private:
+  void project();
+
+  emps::EmpsFluid& fluid_;
+  erp::WallSet& walls_;
+  const erp::FeInterface& fe_;
+  std::vector<coupling::InterfaceEdge> edges_;
+  std::vector<coupling::PointLoad> point_loads_;
+  coupling::InterfaceLoads loads_;
+  std::optional<emps::EmpsFluid::State> saved_;
+};
+
+/// S (eq. 67): interface loads in (as FE nodal forces); FE node motion out (eqs. 60-62).
+class StructureAdapter final : public coupling::StructureSolver {
+public:
+  StructureAdapter(fem::Structure& structure, const erp::FeInterface& fe);
+  void initialize() override {}
+  void set_interface_loads(const coupling::InterfaceLoads& loads) override;
+  void advance(double t, double dt) override;
+  coupling::InterfaceMotion interface_motion() const override;
+  void save_state() override { saved_ = structure_.save(); }
+  void restore_state() override { structure_.restore(*saved_); }
+
+  /// Newton iterations of all advances so far, and the most in one.
+  long newton_iterations() const { return newton_iterations_; }
+  int newton_max() const { return newton_max_; }
+
+private:
+  fem::Structure& structure_;
+  const erp::FeInterface& fe_;
+  fem::Vector forces_;
+  std::optional<fem::StructureState> saved_;
+  long newton_iterations_ = 0;
+  int newton_max_ = 0;
+};
+
+} // namespace fsi::app

@@ -1,0 +1,36 @@
+#pragma once
+// A fluid and one structure coupled through the scene's coupling scheme (css or bgs).
+#include "coupling/scheme.hpp"
+#include "fsi_app/adapters.hpp"
+#include "fsi_app/fluid_model.hpp"
+#include "fsi_app/structure_model.hpp"
+
+#include <memory>
+
+namespace fsi::app {
+
+class CoupledModel final : public Model {
+public:
+  /// Throws InputError (scene file and line) for a structure without interface tags, more than
+  /// one structure, or coupling options the scheme rejects.
+  explicit CoupledModel(const Scene& scene);
+  void advance(double time, double dt) override;
+  void declare(FieldsFile& file) const override { structure_->declare(file); }
+  void write_frame(FieldsFile& file, const std::vector<std::string>& fields) const override;
+  std::optional<double> probe(const ProbeSpec& probe) const override;
+  void report(JsonObject& run) const override;
+
+  const coupling::CouplingScheme& scheme() const { return *scheme_; }
+  const FluidAdapter& fluid_adapter() const { return *fluid_adapter_; }
+  FluidModel& fluid() { return *fluid_; }
+  StructureModel& structure() { return *structure_; }
+
+private:
+  std::unique_ptr<StructureModel> structure_;
+  std::unique_ptr<FluidModel> fluid_;
+  std::unique_ptr<FluidAdapter> fluid_adapter_;
+  std::unique_ptr<StructureAdapter> structure_adapter_;
+  std::unique_ptr<coupling::CouplingScheme> scheme_;
+};
+
+} // namespace fsi::app

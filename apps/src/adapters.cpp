@@ -1,0 +1,96 @@
+#include "fsi_app/adapters.hpp"
+
+namespace fsi::app {
+
+FluidAdapter::FluidAdapter(emps::EmpsFluid& fluid, erp::WallSet& walls, const erp::FeInterface& fe)
+    : fluid_(fluid), walls_(walls), fe_(fe),
+      loads_(coupling::InterfaceLoads::zeros(static_cast<std::size_t>(fe.node_count()))) {
+  const int edges = fe.segment_count() / 2; // two flat segments per quadratic edge
+  for (int e = 0; e < edges; ++e) {
+    coupling::InterfaceEdge edge{};
+    for (int k = 0; k < 3; ++k)
+      edge.nodes[static_cast<std::size_t>(k)] = static_cast<std::size_t>(
+          fe.polygon_node(fe.edge_nodes(e)[static_cast<std::size_t>(k)]) - fe.first_node());
+    edges_.push_back(edge);
+  }
+}
+
+void FluidAdapter::set_interface_motion(const coupling::InterfaceMotion& m) {
+  auto& nodes = walls_.nodes();
+  for (std::size_t k = 0; k < m.size(); ++k) { // eqs. 60-62
+    const auto L = static_cast<std::size_t>(fe_.first_node()) + k;
+    nodes.x[L] = m.x[k];
+    nodes.v[L] = m.v[k];
+    nodes.a[L] = m.a[k];
+  }
+}
+
+void FluidAdapter::advance(double t, double dt) {
+  walls_.move_rigid(t + dt);
+  fluid_.advance(t, dt);
+  project();
+}
+
+// Each particle's wall force on an interface segment acts on the structure as -f_wall at its
+// wall point (eqs. 53-58), distributed over the FE edge's three nodes.
+void FluidAdapter::project() {
+  const emps::WallForces& w = fluid_.wall_forces();
+  const int first = fe_.first_segment(), last = first + fe_.segment_count();
+  point_loads_.clear();
+  auto add = [&](int s, double t, const Vec2& f) {
+    if (s < first || s >= last) return;
+    point_loads_.push_back(
+        {static_cast<std::size_t>(fe_.edge(s)), fe_.parent_coordinate(s, t), -f});
+  };
+  for (std::size_t i = 0; i < w.segment.size(); ++i) {
+    add(w.segment[i], w.t[i], w.f[i]);
+    add(w.segment2[i], w.t2[i], w.f2[i]);
+  }
+  std::fill(loads_.f.begin(), loads_.f.end(), Vec2::Zero());
+  coupling::project_point_loads(edges_, point_loads_, loads_);
+}
+
+void FluidAdapter::save_state() {
+  saved_ = fluid_.save();
+}
+
+void FluidAdapter::restore_state() {
+  fluid_.restore(*saved_);
+}
+
+StructureAdapter::StructureAdapter(fem::Structure& structure, const erp::FeInterface& fe)
+    : structure_(structure), fe_(fe),
+      forces_(fem::Vector::Zero(2 * static_cast<Eigen::Index>(structure.num_nodes()))) {}
+
+void StructureAdapter::set_interface_loads(const coupling::InterfaceLoads& loads) {
+  forces_.setZero();
+  for (std::size_t k = 0; k < loads.size(); ++k) { // eq. 59
+    const int K = fe_.fe_node(fe_.first_node() + static_cast<int>(k));
+    forces_[2 * K] = loads.f[k].x();
+    forces_[2 * K + 1] = loads.f[k].y();
+  }
+  structure_.set_external_forces(forces_);
+}
+
+void StructureAdapter::advance(double, double dt) {
+  const auto& report = structure_.advance(dt);
+  newton_iterations_ += report.iterations;
+  newton_max_ = std::max(newton_max_, report.iterations);
+}
+
+coupling::InterfaceMotion StructureAdapter::interface_motion() const {
+  const auto n = static_cast<std::size_t>(fe_.node_count());
+  coupling::InterfaceMotion m = coupling::InterfaceMotion::zeros(n);
+  const auto& X = structure_.mesh().X;
+  const auto &u = structure_.displacement(), &v = structure_.velocity(),
+             &a = structure_.acceleration();
+  for (std::size_t k = 0; k < n; ++k) { // eqs. 60-62
+    const int K = fe_.fe_node(fe_.first_node() + static_cast<int>(k));
+    m.x[k] = X[static_cast<std::size_t>(K)] + Vec2(u[2 * K], u[2 * K + 1]);
+    m.v[k] = Vec2(v[2 * K], v[2 * K + 1]);
+    m.a[k] = Vec2(a[2 * K], a[2 * K + 1]);
+  }
+  return m;
+}
+
+} // namespace fsi::app
