@@ -55,6 +55,21 @@ void CoupledModel::advance(double time, double dt) {
   scheme_->advance(time, dt);
 }
 
+void CoupledModel::open_logs(const std::filesystem::path& out) {
+  step_log_ = std::make_unique<std::ofstream>(out / "coupling.csv");
+  if (!*step_log_) throw RunError("output: " + (out / "coupling.csv").string() + ": cannot create");
+  *step_log_ << "step,time,dt,iterations,residual_initial,residual_final,omega,converged,"
+                "seconds_fluid,seconds_structure,seconds_coupler\n";
+  scheme_->set_step_callback([log = step_log_.get()](const coupling::StepStats& s) {
+    *log << s.step << ',' << s.t << ',' << s.dt << ',' << s.iterations << ',' << s.residual_initial
+         << ',' << s.residual_final << ',';
+    if (s.omega) *log << *s.omega;
+    *log << ',' << (s.converged ? 1 : 0) << ',' << s.time_fluid << ',' << s.time_structure << ','
+         << s.time_coupler << '\n';
+    if (s.step % 1000 == 999) log->flush();
+  });
+}
+
 void CoupledModel::write_frame(FieldsFile& file, const std::vector<std::string>& fields) const {
   fluid_->write_frame(file, fields);
   structure_->write_frame(file, fields);

@@ -36,7 +36,7 @@ public:
            const std::filesystem::path& out)
       : scene_(scene), models_(models), fields_(out / "fields.h5", out / "fields.xmf"),
         probes_(out / "probes.csv", probe_names(scene)) {
-    for (const auto& m : models_) m->declare(fields_);
+    for (const auto& m : models_) m->open_logs(out), m->declare(fields_);
   }
 
   void frame(double time) {

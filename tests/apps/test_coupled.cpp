@@ -1,10 +1,14 @@
 // The coupled dam break with an elastic obstacle, coarse and short: the adapters keep the ERP
 // interface walls on the FE nodes (eqs. 60-62), hand the structure exactly the force the fluid's
 // walls take (eqs. 52-59), and BGS converges.
+#include "fsi_app/cli.hpp"
 #include "fsi_app/coupled_model.hpp"
 #include "fsi_app/scene.hpp"
 
 #include <catch2/catch.hpp>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 
 using namespace fsi;
 using namespace fsi::app;
@@ -66,4 +70,35 @@ TEST_CASE("apps: coupled dam break: BGS steps converge", "[apps][coupled]") {
   CHECK(s.steps == 200);
   CHECK(s.unconverged == 0);
   CHECK(s.max_iterations >= 1);
+}
+
+TEST_CASE("apps: a coupled run logs every coupling step in coupling.csv", "[apps][coupled]") {
+  namespace fs = std::filesystem;
+  const fs::path out = fs::temp_directory_path() / "fsi_test_coupled_run";
+  fs::remove_all(out);
+  std::ostringstream sout, serr;
+  REQUIRE(
+      run_cli({"run", FSI_SOURCE_DIR "/data/scenes/dam_break_elastic_obstacle.yaml", "--out",
+               out.string(), "--set", "fluid.l0=2.92e-3", "--set", "time.dt=2e-5", "--set",
+               "time.end=0.004", "--set", "output.interval=0.002", "--set", "coupling.scheme=bgs"},
+              sout, serr, false) == 0);
+  std::ifstream log(out / "coupling.csv");
+  std::string header, line;
+  std::getline(log, header);
+  CHECK(header.rfind("step,time,dt,iterations,residual_initial,residual_final,omega,converged",
+                     0) == 0);
+  int rows = 0;
+  while (std::getline(log, line)) {
+    std::stringstream fields(line);
+    std::string step, time, dt, iterations;
+    std::getline(fields, step, ',');
+    std::getline(fields, time, ',');
+    std::getline(fields, dt, ',');
+    std::getline(fields, iterations, ',');
+    CHECK(std::stoi(step) == rows);
+    CHECK(std::stod(time) == Approx(2e-5 * rows).margin(1e-12));
+    CHECK(std::stoi(iterations) >= 1);
+    ++rows;
+  }
+  CHECK(rows == 200);
 }

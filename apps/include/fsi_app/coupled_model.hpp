@@ -5,6 +5,7 @@
 #include "fsi_app/fluid_model.hpp"
 #include "fsi_app/structure_model.hpp"
 
+#include <fstream>
 #include <memory>
 
 namespace fsi::app {
@@ -15,6 +16,9 @@ public:
   /// one structure, or coupling options the scheme rejects.
   explicit CoupledModel(const Scene& scene);
   void advance(double time, double dt) override;
+  /// DIR/coupling.csv: one row per coupling step (iterations, residuals of eq. 68, relaxation,
+  /// convergence, wall times), flushed every 1000 rows and at the end.
+  void open_logs(const std::filesystem::path& out) override;
   void declare(FieldsFile& file) const override { structure_->declare(file); }
   void write_frame(FieldsFile& file, const std::vector<std::string>& fields) const override;
   std::optional<double> probe(const ProbeSpec& probe) const override;
@@ -31,6 +35,7 @@ private:
   std::unique_ptr<FluidAdapter> fluid_adapter_;
   std::unique_ptr<StructureAdapter> structure_adapter_;
   std::unique_ptr<coupling::CouplingScheme> scheme_;
+  std::unique_ptr<std::ofstream> step_log_;
 };
 
 } // namespace fsi::app

@@ -5,6 +5,7 @@
 #include "fsi_app/output/json.hpp"
 #include "fsi_app/scene.hpp"
 
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
@@ -18,6 +19,8 @@ public:
   virtual void advance(double time, double dt) = 0;
   /// The largest stable step for a Courant number, for models that limit it (the fluid).
   virtual std::optional<double> stable_dt(double /*courant*/) const { return std::nullopt; }
+  /// Opens the model's own logs in the output directory, before the first step.
+  virtual void open_logs(const std::filesystem::path& /*out*/) {}
   /// Declares static data (mesh connectivity) once, before the first frame.
   virtual void declare(FieldsFile& file) const = 0;
   /// Writes this model's grids for the current frame; `fields` lists the requested fields.
