@@ -100,7 +100,8 @@ inline void write_hit(const WallSet& walls, double r_e, const Vec2& p, const Nea
     hits.crossed[i] = 0;
   } else {
     hits.n_wall[i] = (p - x_wall) / r; // eq. 19
-    hits.crossed[i] = hits.n_wall[i].dot(n_fluid) < 0.0 ? 1 : 0;
+    const bool free_end = (t == 0.0 && walls.open_end(a)) || (t == 1.0 && walls.open_end(b));
+    hits.crossed[i] = !free_end && hits.n_wall[i].dot(n_fluid) < 0.0 ? 1 : 0;
   }
   hits.v_wall[i] = (1.0 - t) * walls.nodes().v[ua] + t * walls.nodes().v[ub];
   hits.a_wall[i] = (1.0 - t) * walls.nodes().a[ua] + t * walls.nodes().a[ub];

@@ -113,3 +113,23 @@ TEST_CASE("erp: second face: a rectangular tank's corner has two faces, a straig
     CHECK(hits.segment2[3] == -1);
   }
 }
+
+TEST_CASE("erp: nearest wall: a particle beyond the free end of an open wall is not crossed",
+          "[nearest]") {
+  // An open U tank (fluid inside); a particle that splashed over the top of the left wall and
+  // came down just outside it is beyond the wall's free end, not inside a solid.
+  WallSet walls;
+  const std::vector<Vec2> tank{{0, 0.8}, {0, 0}, {1, 0}, {1, 0.8}};
+  walls.add_polyline(tank, false, 0);
+  for (const LocatorKind kind : {LocatorKind::grid, LocatorKind::aabb_tree}) {
+    auto locator = make_wall_locator(walls, 0.05, kind);
+    WallHits hits;
+    const std::vector<Vec2> p{{-3e-6, 0.824}, {-0.01, 0.7}, {0.01, 0.81}};
+    locator->query(p, hits);
+    CHECK(hits.segment[0] == 0);
+    CHECK((hits.x_wall[0] - Vec2(0, 0.8)).norm() < 1e-15);
+    CHECK(hits.crossed[0] == 0); // above the free end
+    CHECK(hits.crossed[1] == 1); // beside the wall, on its solid side
+    CHECK(hits.crossed[2] == 0); // inside, above the end
+  }
+}

@@ -11,7 +11,9 @@
 // - r <= on_wall_tolerance * r_e: the particle is on the wall; n_wall is the fluid normal and the
 //   particle is not crossed.
 // - otherwise n_wall = (x - x_wall) / r, and the particle is crossed (on the solid side of its
-//   nearest wall) when n_wall . fluid normal < 0. Crossed particles are reported, never fixed.
+//   nearest wall) when n_wall . fluid normal < 0 — except beyond the free end of an open
+//   polyline (WallSet::open_end), where there is no solid. Crossed particles are reported, never
+//   fixed.
 // Equally near segments are resolved towards the lower segment index, so results do not depend
 // on the back-end or the thread count.
 //

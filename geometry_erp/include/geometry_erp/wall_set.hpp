@@ -64,6 +64,9 @@ public:
   /// node, so it is the normalised sum of the incident segments' fluid normals. Falls back to
   /// `fallback_segment`'s normal where that sum vanishes (a segment folded back onto another).
   Vec2 node_normal(int L, int fallback_segment) const;
+  /// True for the free end of an open polyline (a node on one segment only): beyond it there is
+  /// no solid, so a particle whose nearest wall point is such a node is never behind the wall.
+  bool open_end(int L) const { return incident_[static_cast<std::size_t>(L)].size() == 1; }
 
 private:
   struct RigidPolyline {
