@@ -38,6 +38,9 @@ emps::FluidOptions fluid_options(const Scene& scene) {
   o.alpha_rep = f.alpha_rep;
   o.wall_condition =
       f.wall_condition == "slip" ? emps::WallCondition::slip : emps::WallCondition::no_slip;
+  o.artificial_viscosity = f.artificial_viscosity;
+  o.wall_density =
+      f.wall_density == "scaled" ? emps::WallDensity::scaled : emps::WallDensity::added;
   o.gravity = scene.gravity;
   o.damping_time = f.damping_time;
   o.domain_min = f.domain_min;
@@ -143,6 +146,25 @@ std::optional<double> FluidModel::probe(const ProbeSpec& probe) const {
       weights += w;
     }
     return weights > 0.0 ? sum / weights : 0.0;
+  }
+  if (probe.quantity == "mean_pressure") { // plain mean over the particles in the box
+    double sum = 0.0;
+    std::size_t count = 0;
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (p.x[i] >= probe.box_min->x() && p.x[i] <= probe.box_max->x() &&
+          p.y[i] >= probe.box_min->y() && p.y[i] <= probe.box_max->y())
+        sum += p.p[i], ++count;
+    return count > 0 ? sum / static_cast<double>(count) : 0.0;
+  }
+  if (probe.quantity == "mean_speed" || probe.quantity == "kinetic_energy") {
+    double speeds = 0.0, v2 = 0.0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      const double s2 = p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i];
+      speeds += std::sqrt(s2), v2 += s2;
+    }
+    if (probe.quantity == "mean_speed")
+      return p.size() ? speeds / static_cast<double>(p.size()) : 0.0;
+    return 0.5 * fluid_->options().density * fluid_->options().volume() * v2; // per m of depth
   }
   return std::nullopt;
 }

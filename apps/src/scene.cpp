@@ -33,19 +33,25 @@ TimeSpec read_time(Section s) {
 
 const std::vector<std::string> kFieldNames = {"velocity",     "pressure",     "pnd",
                                               "free_surface", "displacement", "von_mises"};
-const std::vector<std::string> kProbeQuantities = {"displacement_x", "displacement_y",
-                                                   "surge_front", "pressure"};
+const std::vector<std::string> kProbeQuantities = {
+    "displacement_x", "displacement_y", "surge_front",   "pressure",
+    "mean_pressure",  "mean_speed",     "kinetic_energy"};
 
 ProbeSpec read_probe(Section s) {
   ProbeSpec p;
   p.line = s.line();
   p.name = s.text("name", "column name in probes.csv (letters, digits, _)");
   p.quantity = s.choice("quantity", kProbeQuantities, "",
-                        "what is sampled: a node's displacement, the surge front (largest x of "
-                        "particles with pnd >= n0/2, i.e. not spray), or the pressure at a point");
+                        "what is sampled: a node's displacement; the surge front (largest x of "
+                        "particles with pnd >= n0/2, i.e. not spray); the pressure at a point "
+                        "(MPS-weighted mean within r_e); mean_pressure, the plain mean over the "
+                        "particles inside the box min..max; mean_speed and kinetic_energy (J per m "
+                        "of depth) of all particles");
   p.structure = s.text("structure", "", "structure name, for displacement probes");
   p.node = s.optional_integer("node", Range::non_negative(), "FE node index (or give point)");
   p.point = s.optional_vec2("point", "reference position of the FE node, or the fluid point, m");
+  p.box_min = s.optional_vec2("min", "mean_pressure: lower-left corner of the box, m");
+  p.box_max = s.optional_vec2("max", "mean_pressure: upper-right corner of the box, m");
   if (!s.context().documenting()) {
     const bool ok_name = !p.name.empty() && std::all_of(p.name.begin(), p.name.end(), [](char c) {
       return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
@@ -55,6 +61,12 @@ ProbeSpec read_probe(Section s) {
     if (on_structure && p.structure.empty()) s.fail("structure", "required key missing");
     if (on_structure && !p.node && !p.point) s.fail("", "give node or point");
     if (p.quantity == "pressure" && !p.point) s.fail("point", "required key missing");
+    if (p.quantity == "mean_pressure") {
+      if (!p.box_min) s.fail("min", "required key missing");
+      if (!p.box_max) s.fail("max", "required key missing");
+      if (p.box_max->x() <= p.box_min->x() || p.box_max->y() <= p.box_min->y())
+        s.fail("max", "must lie above and right of min");
+    }
   }
   s.finish();
   return p;
@@ -155,6 +167,15 @@ FluidSpec read_fluid(Section s) {
       s.real("alpha_rep", 0.0, Range::non_negative(), "repulsive coefficient of eq. 27, N/m^3");
   f.wall_condition =
       s.choice("wall_condition", {"no_slip", "slip"}, "no_slip", "viscous wall condition (eq. 24)");
+  f.artificial_viscosity = s.real(
+      "artificial_viscosity", 0.0, Range::non_negative(),
+      "alpha: closing particle pairs feel a viscosity alpha c l0 along their line of centres "
+      "(damps acoustic noise; not in the paper, 0 = off)");
+  f.wall_density = s.choice(
+      "wall_density", {"added", "scaled"}, "added",
+      "wall part of pnd: added, n_i + z(r) as eq. 20; scaled, n_i + z max(1, n_i / (n0 - z)): "
+      "the virtual particles compressed like the fluid next to them (equal to "
+      "eq. 20 at rest and in expansion)");
   f.damping_time =
       s.real("damping_time", 0.0, Range::non_negative(),
              "initial damping phase T_d: velocities damped at a rate 20/T_d (1 - t/T_d) "

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <omp.h>
 #include <sstream>
 
@@ -152,6 +153,9 @@ Vec2 EmpsFluid::mirror_laplacian(std::size_t i, const Vec2& x_wall, const Vec2& 
 }
 
 // v* = v + dt (nu <lap v>^ERP + g) (eqs. 11, 13, 24); visc_wall_ keeps the viscous wall forces.
+// With artificial_viscosity alpha, closing pairs also feel alpha c l0 times the eq. 11 operator
+// restricted to their line of centres (Monaghan's artificial viscosity in MPS form; not in the
+// paper, pairwise antisymmetric so momentum is kept).
 void EmpsFluid::viscosity(double dt) {
   Timer timer(times_.viscosity);
   Particles& p = particles_;
@@ -159,26 +163,34 @@ void EmpsFluid::viscosity(double dt) {
   const double inv_re = 1.0 / r_e_, re2 = r_e_ * r_e_;
   const double c_lap = 2.0 * d / (lambda0_ * n0_);
   const double nu = options_.viscosity, mu_V = options_.density * nu * options_.volume();
+  const double nu_art = options_.artificial_viscosity * options_.sound_speed * options_.l0;
   scratch_.resize(2 * n);
   parallel_for(n, [&](std::size_t i) {
     const double xi = p.x[i], yi = p.y[i], vxi = p.vx[i], vyi = p.vy[i];
-    double sx = 0, sy = 0;
+    double sx = 0, sy = 0, ax = 0, ay = 0;
     const std::uint32_t* row = neighbours_.row(i);
     for (std::uint32_t k = 0, c = neighbours_.count(i); k < c; ++k) {
       const std::uint32_t j = row[k];
       const double dx = p.x[j] - xi, dy = p.y[j] - yi, r2 = dx * dx + dy * dy;
       if (r2 >= re2) continue;
       const double w = weight(std::sqrt(r2), inv_re);
-      sx += (p.vx[j] - vxi) * w;
-      sy += (p.vy[j] - vyi) * w;
+      const double dvx = p.vx[j] - vxi, dvy = p.vy[j] - vyi;
+      sx += dvx * w;
+      sy += dvy * w;
+      const double approach = dvx * dx + dvy * dy; // < 0: the pair closes in
+      if (approach < 0 && r2 > 0) {
+        const double s = approach * w / r2; // ((v_j - v_i) . e) e w / r
+        ax += s * dx;
+        ay += s * dy;
+      }
     }
     Vec2 m1 = Vec2::Zero(), m2 = Vec2::Zero();
-    if (hits_.segment[i] >= 0)
+    if (nu > 0 && hits_.segment[i] >= 0)
       m1 = c_lap * mirror_laplacian(i, hits_.x_wall[i], hits_.n_wall[i], hits_.v_wall[i]);
-    if (hits_.segment2[i] >= 0)
+    if (nu > 0 && hits_.segment2[i] >= 0)
       m2 = c_lap * mirror_laplacian(i, hits_.x_wall2[i], hits_.n_wall2[i], hits_.v_wall2[i]);
-    scratch_[2 * i] = nu * (c_lap * sx + m1.x() + m2.x());
-    scratch_[2 * i + 1] = nu * (c_lap * sy + m1.y() + m2.y());
+    scratch_[2 * i] = nu * (c_lap * sx + m1.x() + m2.x()) + nu_art * c_lap * ax;
+    scratch_[2 * i + 1] = nu * (c_lap * sy + m1.y() + m2.y()) + nu_art * c_lap * ay;
     visc_wall_[i] = mu_V * m1; // V_i mu R <lap v>_i' (eq. 52, viscous wall part)
     visc_wall2_[i] = mu_V * m2;
   });
@@ -188,8 +200,8 @@ void EmpsFluid::viscosity(double dt) {
   });
 }
 
-// n*_i = sum_j w_ij + z(r_wall,i) (eqs. 9, 20); p_i = c^2 rho/n0 (n*_i - n0), 0 on the free
-// surface n*_i < beta n0 (eqs. 15, 17).
+// n*_i = sum_j w_ij + z(r_wall,i) (eqs. 9, 20; or scaled, see WallDensity); p_i = c^2 rho/n0 (n*_i
+// - n0), 0 on the free surface n*_i < beta n0 (eqs. 15, 17).
 void EmpsFluid::density_and_pressure() {
   Timer timer(times_.density);
   Particles& p = particles_;
@@ -197,6 +209,7 @@ void EmpsFluid::density_and_pressure() {
   const double inv_re = 1.0 / r_e_, re2 = r_e_ * r_e_;
   const double stiffness = options_.sound_speed * options_.sound_speed * options_.density / n0_;
   const double surface = options_.beta * n0_;
+  const bool scaled = options_.wall_density == WallDensity::scaled;
   const double pairs = parallel_reduce(
       n, 0.0,
       [&](std::size_t i) {
@@ -211,8 +224,10 @@ void EmpsFluid::density_and_pressure() {
           pnd += weight(std::sqrt(r2), inv_re);
           ++within;
         }
-        if (hits_.segment[i] >= 0) pnd += z_(hits_.r[i]);
-        if (hits_.segment2[i] >= 0) pnd += z_(hits_.r2[i]);
+        double z = 0.0; // wall part (eq. 20), a corner's overlap counted once
+        if (hits_.segment[i] >= 0) z += z_(hits_.r[i]);
+        if (hits_.segment2[i] >= 0) z += z_(hits_.r2[i]) - corner_overlap(i);
+        pnd += scaled ? z * std::max(1.0, pnd / std::max(n0_ - z, 0.25 * n0_)) : z;
         p.pnd[i] = pnd;
         const bool free = pnd < surface;
         p.surface[i] = free;
@@ -221,6 +236,15 @@ void EmpsFluid::density_and_pressure() {
       },
       [](double a, double b) { return a + b; });
   mean_neighbours_ = n ? pairs / static_cast<double>(n) : 0.0;
+}
+
+// The virtual lattice both faces count at a corner, counted once: exact for a right angle
+// (geometry_erp corner_weight_sum), scaled by the angle between the normals otherwise.
+double EmpsFluid::corner_overlap(std::size_t i) const {
+  const double cos_turn = std::clamp(hits_.n_wall[i].dot(hits_.n_wall2[i]), -1.0, 1.0);
+  const double share = std::acos(cos_turn) / (0.5 * std::numbers::pi);
+  return share * erp::corner_weight_sum(hits_.r[i], hits_.r2[i], options_.l0, r_e_,
+                                        erp::QuadraticWeight{r_e_});
 }
 
 // R_ref <grad p>_i' (eqs. 25-26) without the d/n0 factor: the gradient sum at the mirror point
@@ -315,7 +339,7 @@ void EmpsFluid::advance(double t, double dt) {
   for (auto* a : {&wall_forces_.t, &wall_forces_.t2}) a->resize(n);
   for (auto* a : {&wall_forces_.x_wall, &wall_forces_.f, &wall_forces_.x_wall2, &wall_forces_.f2})
     a->resize(n);
-  if (options_.viscosity > 0) {
+  if (options_.viscosity > 0 || options_.artificial_viscosity > 0) {
     // The wall hits of the last step's x* serve x^n (which differs by dt^2 |grad p| / rho, and
     // they see the walls at t^n) unless particles were reordered or removed since.
     if (hits_layout_ != layout_) query_walls();
@@ -393,8 +417,9 @@ double EmpsFluid::max_speed() const {
 
 double EmpsFluid::stable_dt(double courant) const {
   double dt = courant * options_.l0 / (options_.sound_speed + max_speed());
-  if (options_.viscosity > 0)
-    dt = std::min(dt, 0.25 * options_.l0 * options_.l0 / options_.viscosity);
+  const double nu =
+      options_.viscosity + options_.artificial_viscosity * options_.sound_speed * options_.l0;
+  if (nu > 0) dt = std::min(dt, 0.25 * options_.l0 * options_.l0 / nu);
   return dt;
 }
 

@@ -22,6 +22,14 @@ double wall_weight_sum(double r, double l0, double r_e, const WeightFunction& w)
   return z;
 }
 
+double corner_weight_sum(double a, double b, double l0, double r_e, const WeightFunction& w) {
+  double q = 0.0;
+  for (int m = 0; a + 0.5 * l0 + m * l0 < r_e; ++m)
+    for (int k = 0; b + 0.5 * l0 + k * l0 < r_e; ++k)
+      q += w(std::hypot(a + 0.5 * l0 + m * l0, b + 0.5 * l0 + k * l0));
+  return q;
+}
+
 double lattice_n0(double l0, double r_e, const WeightFunction& w) {
   const int n = reach(l0, r_e);
   double n0 = 0.0;

@@ -46,31 +46,35 @@ TEST_CASE("emps: n0 and lambda0 are those of the full lattice (eqs. 9, 12)", "[e
   CHECK_THAT(fluid.n0(), WithinRel(4.1783, 1e-4)); // sum of (1 - r/3.1)^2 over the lattice
 }
 
-TEST_CASE("emps: a lattice at rest against flat walls stays at rest with pnd = n0", "[emps]") {
+TEST_CASE("emps: a lattice at rest in a tank, corners included, stays at rest with pnd = n0",
+          "[emps]") {
   // Without gravity a fluid at the initial spacing, first rows at l0/2 from the walls, has
-  // n*_i = n0 everywhere inside (the wall weight z completes each near-wall particle's support).
+  // n*_i = n0 everywhere inside: the wall weight z completes each near-wall particle's support,
+  // and in the 90-degree corners the quadrant both faces count is counted once.
   const double l0 = 0.01;
   erp::WallSet walls;
   const std::vector<Vec2> tank{{0.0, 0.5}, {0.0, 0.0}, {0.4, 0.0}, {0.4, 0.5}};
   walls.add_polyline(tank, false, 0);
   const auto positions =
       erp::fill_lattice({0, 0}, l0, {{{0, 0}, {0.4, 0}, {0.4, 0.3}, {0, 0.3}}}, {}, &walls);
-  auto options = water(l0);
-  options.corner_faces = false; // the corner's double-counted quadrant is checked below
-  emps::EmpsFluid fluid(options, positions, walls);
-  fluid.advance(0.0, 1e-4);
-  const auto& p = fluid.particles();
-  int checked = 0;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const bool corner = p.x[i] < 0.035 && p.y[i] < 0.035;
-    const bool surface_zone = p.y[i] > 0.3 - 3.5 * l0 || corner || p.x[i] > 0.4 - 0.035;
-    if (surface_zone) continue;
-    REQUIRE_THAT(p.pnd[i], WithinRel(fluid.n0(), 1e-12));
-    REQUIRE(std::abs(p.p[i]) < 1e-6); // c^2 rho / n0 (n - n0) at round-off: |n - n0| ~ 1e-15
-    REQUIRE(std::hypot(p.vx[i], p.vy[i]) < 1e-12);
-    ++checked;
+  for (const auto density : {emps::WallDensity::added, emps::WallDensity::scaled}) {
+    auto options = water(l0);
+    options.wall_density = density;
+    emps::EmpsFluid fluid(options, positions, walls);
+    fluid.advance(0.0, 1e-4);
+    const auto& p = fluid.particles();
+    int checked = 0, corners = 0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      if (p.y[i] > 0.3 - 3.5 * l0) continue; // the free surface's support is not full
+      REQUIRE_THAT(p.pnd[i], WithinRel(fluid.n0(), 1e-12));
+      REQUIRE(std::abs(p.p[i]) < 1e-6); // c^2 rho / n0 (n - n0) at round-off
+      REQUIRE(std::hypot(p.vx[i], p.vy[i]) < 1e-12);
+      ++checked;
+      corners += (p.x[i] < 0.035 || p.x[i] > 0.365) && p.y[i] < 0.035;
+    }
+    CHECK(checked > 900);
+    CHECK(corners == 18); // 3 x 3 particles within r_e of each bottom corner
   }
-  CHECK(checked > 700);
 }
 
 TEST_CASE("emps: without gravity and walls, linear momentum is conserved to 1e-10 per step",

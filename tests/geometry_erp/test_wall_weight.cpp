@@ -71,3 +71,26 @@ TEST_CASE("erp: n_i + z(r_i) = n0 for every fluid row next to a flat wall", "[wa
     }
   }
 }
+
+TEST_CASE("erp: z(a) + z(b) - q(a, b) completes n_i to n0 in a right-angle corner",
+          "[wall_weight]") {
+  // A quadrant of fluid lattice (x, y > 0) in a corner; every particle within r_e of both walls.
+  const double l0 = 1.0;
+  for (const double r_e : {2.1, 3.1, 4.0}) {
+    const QuadraticWeight w{r_e};
+    const WallWeightTable z(l0, r_e, w);
+    const double n0 = lattice_n0(l0, r_e, w);
+    const int size = 12;
+    for (int a = 0; a < 4; ++a)
+      for (int b = 0; b < 4; ++b) {
+        double n = 0.0;
+        for (int i = 0; i < size; ++i)
+          for (int j = 0; j < size; ++j)
+            if (i != a || j != b) n += w(std::hypot((i - a) * l0, (j - b) * l0));
+        const double ra = 0.5 * l0 + a * l0, rb = 0.5 * l0 + b * l0;
+        INFO("r_e = " << r_e << ", column " << a << ", row " << b);
+        REQUIRE_THAT(n + z(ra) + z(rb) - corner_weight_sum(ra, rb, l0, r_e, w),
+                     WithinAbs(n0, 1e-12));
+      }
+  }
+}

@@ -18,11 +18,13 @@ struct TimeSpec {
 
 struct ProbeSpec {
   std::string name;
-  std::string quantity;      ///< displacement_x | displacement_y | surge_front | pressure
+  std::string quantity;      ///< displacement_x | displacement_y | surge_front | pressure |
+                             ///< mean_pressure | mean_speed | kinetic_energy
   std::string structure;     ///< for displacement probes
   std::optional<int> node;   ///< FE node index, or
   std::optional<Vec2> point; ///< reference position of a node / a fluid point
-  int line = 0;              ///< scene line, for late messages
+  std::optional<Vec2> box_min, box_max; ///< mean_pressure: the box averaged over
+  int line = 0;                         ///< scene line, for late messages
 };
 
 struct OutputSpec {
@@ -60,6 +62,8 @@ struct FluidSpec {
   double beta = 1.0;                      ///< free-surface threshold of eq. 17
   double alpha_rep = 0.0;                 ///< repulsive coefficient of eq. 27, N/m^3
   std::string wall_condition;             ///< no_slip | slip
+  std::string wall_density;               ///< added | scaled
+  double artificial_viscosity = 0.0;      ///< alpha of the closing-pair viscosity alpha c l0
   std::vector<std::vector<Vec2>> regions; ///< closed polygons filled with particles
   Vec2 domain_min = Vec2::Zero();         ///< particles leaving this box are removed (and counted)
   Vec2 domain_max = Vec2::Zero();

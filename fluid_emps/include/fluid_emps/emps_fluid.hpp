@@ -84,6 +84,7 @@ private:
   Vec2 mirror_laplacian(std::size_t i, const Vec2& x_wall, const Vec2& n_wall,
                         const Vec2& v_wall) const;
   Vec2 repulsion(double r, const Vec2& n_wall) const;
+  double corner_overlap(std::size_t i) const;
   void remove_outside();
   void damp(double t, double dt);
 

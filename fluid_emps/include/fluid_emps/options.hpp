@@ -6,6 +6,12 @@ namespace fsi::emps {
 
 enum class WallCondition { no_slip, slip };
 
+/// The wall part of pnd. added: n_i + z(r) (eq. 20), z for the rest lattice. scaled: the virtual
+/// particles compressed like the fluid next to them, n_i + z max(1, n_i / (n0 - z)): equal to
+/// eq. 20 at rest and in expansion (a sparse particle near a wall keeps its wall push), and in
+/// compression the fluid part extrapolated over the whole support.
+enum class WallDensity { added, scaled };
+
 struct FluidOptions {
   double density = 1000.0;  ///< rho, kg/m^3
   double viscosity = 0.0;   ///< kinematic nu, m^2/s; 0 skips the viscous loop entirely
@@ -14,7 +20,10 @@ struct FluidOptions {
   double sound_speed = 0.0; ///< c of eq. 15, m/s
   double beta = 1.0;        ///< free-surface threshold n* < beta n0 (eq. 17)
   double alpha_rep = 0.0;   ///< repulsive coefficient of eq. 27, N/m^3
+  /// alpha of an artificial viscosity alpha c l0 on closing pairs (not in the paper; 0: off).
+  double artificial_viscosity = 0.0;
   WallCondition wall_condition = WallCondition::no_slip;
+  WallDensity wall_density = WallDensity::added;
   /// At concave corners also apply the second wall face (z, mirror terms and repulsion of the
   /// nearest other face, geometry_erp's second face). false: the paper's nearest wall only
   /// (eq. 18), which leaks particles into 90-degree tank corners.

@@ -19,6 +19,11 @@ using WeightFunction = std::function<double(double)>;
 /// z(r) by direct summation over the virtual half-lattice.
 double wall_weight_sum(double r, double l0, double r_e, const WeightFunction& w);
 
+/// The virtual lattice counted by both faces of a right-angle corner: a particle at distances a
+/// and b from the two walls, virtual points at (a + l0/2 + m l0, b + l0/2 + k l0) behind both
+/// (m, k >= 0). z(a) + z(b) - q(a, b) is the wall part of pnd in the corner, exact on the lattice.
+double corner_weight_sum(double a, double b, double l0, double r_e, const WeightFunction& w);
+
 /// n0 = sum_{j != i} w(|x_j - x_i|) over the full square lattice (eq. 9).
 double lattice_n0(double l0, double r_e, const WeightFunction& w);
 

@@ -1,0 +1,60 @@
+"""Still-water criteria of a hydrostatic-tank run (issue 4, test 1), from DIR/probes.csv.
+
+usage: scripts/hydrostatic_check DIR [--depth 0.5] [--l0 0.0125] [--rho 1000] [--g 9.81]
+                                     [--damping 1.0]
+Prints the bottom-row pressure averaged over the last second against rho g H and
+rho g (H - l0/2), the mean particle speed at the end against sqrt(g H), and whether the kinetic
+energy grows after the damping phase.
+Exits 1 when a criterion fails: pressure within 3 % of rho g H, mean speed below 1 % of
+sqrt(g H), kinetic energy never above its value at the end of the damping phase by more than
+a factor --ke-growth (default 1.0: never grows).
+"""
+import argparse
+import csv
+import math
+import sys
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
+    p.add_argument("dir")
+    p.add_argument("--depth", type=float, default=0.5)
+    p.add_argument("--l0", type=float, default=0.0125)
+    p.add_argument("--rho", type=float, default=1000.0)
+    p.add_argument("--g", type=float, default=9.81)
+    p.add_argument("--damping", type=float, default=1.0, help="end of the damping phase, s")
+    p.add_argument("--ke-growth", type=float, default=1.0)
+    a = p.parse_args()
+    with open(f"{a.dir}/probes.csv", newline="") as f:
+        rows = list(csv.DictReader(f))
+    t = [float(r["time"]) for r in rows]
+    end = t[-1]
+    last = [r for r in rows if float(r["time"]) >= end - 1.0 - 1e-9]
+    p_bottom = sum(float(r["p_bottom"]) for r in last) / len(last)
+    rho_g_h = a.rho * a.g * a.depth
+    row = a.rho * a.g * (a.depth - 0.5 * a.l0)
+    speed = float(rows[-1]["mean_speed"])
+    scale = math.sqrt(a.g * a.depth)
+    ke = [(float(r["time"]), float(r["kinetic_energy"])) for r in rows]
+    after = [e for tt, e in ke if tt >= a.damping - 1e-9]
+    growth = max(after) / after[0] if after and after[0] > 0 else float("inf")
+    ok_p = abs(p_bottom / rho_g_h - 1.0) <= 0.03
+    ok_v = speed / scale < 0.01
+    ok_e = growth <= a.ke_growth
+    print(f"bottom-row pressure, mean over t = {end - 1:.2f}..{end:.2f} s: {p_bottom:.1f} Pa: "
+          f"{100 * (p_bottom / rho_g_h - 1):+.2f} % of rho g H = {rho_g_h:.1f} Pa, "
+          f"{100 * (p_bottom / row - 1):+.2f} % of rho g (H - l0/2) = {row:.1f} Pa "
+          f"[{'pass' if ok_p else 'FAIL'}: 3 %]")
+    print(f"mean particle speed at t = {end:.2f} s: {speed:.4f} m/s = "
+          f"{100 * speed / scale:.2f} % of sqrt(gH) [{'pass' if ok_v else 'FAIL'}: 1 %]")
+    print(f"kinetic energy after t = {a.damping} s: largest / first = {growth:.3g} "
+          f"[{'pass' if ok_e else 'FAIL'}: {a.ke_growth:g}]")
+    for tt in (1, 2, 5, 10):
+        near = min(rows, key=lambda r: abs(float(r["time"]) - tt))
+        print(f"  t = {float(near['time']):5.2f} s  mean speed {float(near['mean_speed']):.4f} m/s"
+              f"  kinetic energy {float(near['kinetic_energy']):.4g} J/m")
+    sys.exit(0 if ok_p and ok_v and ok_e else 1)
+
+
+if __name__ == "__main__":
+    main()
