@@ -248,6 +248,43 @@ TEST_CASE("apps: SIGINT stops a run with a checkpoint that continues it bitwise"
   require_same_output(dir / "whole", dir / "stopped");
 }
 
+TEST_CASE("apps: SIGTERM stops a run with a checkpoint and exit status 143",
+          "[apps][reliability]") {
+  const fs::path dir = fresh("sigterm");
+  const pid_t pid = spawn({"run", coupled, "--out", (dir / "stopped").string(), "--threads", "1",
+                           "--set", "output.interval=0.0002"},
+                          dir);
+  wait_for_lines(dir / "stopped" / "probes.csv", 3);
+  kill(pid, SIGTERM);
+  REQUIRE(wait_status(pid) == 143);
+  CHECK(slurp(dir / "stderr.txt").find("interrupted by signal 15 at step ") != std::string::npos);
+  CHECK(fs::exists(json_text(dir / "stopped" / "run.json", "checkpoint")));
+}
+
+TEST_CASE("apps: checkpoints by wall time keep the newest ones, whole", "[apps][reliability]") {
+  const fs::path out = fresh("minutes") / "run";
+  // A checkpoint after every step (1e-9 minutes), three kept.
+  REQUIRE(fsi_run(fluid, out,
+                  {"--threads", "1", "--set", "time.end=0.002", "--set",
+                   "checkpoint={interval_minutes: 1.0e-9, keep: 3}"}) == 0);
+  std::vector<std::string> names;
+  for (const auto& e : fs::directory_iterator(out))
+    if (e.path().filename().string().rfind("checkpoint_", 0) == 0)
+      names.push_back(e.path().filename().string());
+  std::sort(names.begin(), names.end());
+  const std::string steps = slurp(out / "run.json");
+  const auto at = steps.find("\"steps\": ");
+  REQUIRE(at != std::string::npos);
+  const long last = std::stol(steps.substr(at + 9));
+  char newest[48];
+  std::snprintf(newest, sizeof newest, "checkpoint_%09ld.h5", last);
+  REQUIRE(names.size() == 3);
+  CHECK(names.back() == newest);
+  // Each is a whole HDF5 file with the driver's clock.
+  for (const auto& n : names)
+    CHECK(fsi::app::read_dataset(out / n, "driver/step").values.size() == 1);
+}
+
 TEST_CASE("apps: after SIGKILL every frame fields.xmf names is readable in fields.h5",
           "[apps][reliability]") {
   const fs::path dir = fresh("sigkill");
