@@ -201,6 +201,20 @@ TEST_CASE("apps: a fluid run with an adaptive step and a moving wall continues b
   require_same_output(dir / "whole", dir / "continued");
 }
 
+TEST_CASE("apps: a structure run continues bitwise", "[apps][reliability]") {
+  const fs::path dir = fresh("restart_structure");
+  const std::vector<std::string> args = {"--threads", "1",
+                                         "--set",     "time.end=0.05",
+                                         "--set",     "checkpoint={interval_steps: 20, keep: 5}"};
+  REQUIRE(fsi_run(structure, dir / "whole", args) == 0);
+  fs::copy(dir / "whole", dir / "continued");
+  auto restart = args;
+  restart.insert(restart.end(),
+                 {"--restart", (dir / "continued" / "checkpoint_000000020.h5").string()});
+  REQUIRE(fsi_run(structure, dir / "continued", restart) == 0);
+  require_same_output(dir / "whole", dir / "continued");
+}
+
 TEST_CASE("apps: a restart refuses a checkpoint that does not fit, before computing",
           "[apps][reliability]") {
   const fs::path dir = fresh("restart_mismatch");
