@@ -169,9 +169,11 @@ RunResult run_scene(const Scene& scene, std::vector<std::unique_ptr<Model>>& mod
   Clock c;
   c.next_frame = std::min(interval, end);
   std::optional<int> resume;
+  long checkpoint_step = -1; // step of the last checkpoint on disk
   if (!options.restart.empty()) {
     c = read_archive(scene, models, options.restart, log);
     resume = c.frames;
+    checkpoint_step = c.step;
   }
   const auto start = std::chrono::system_clock::now();
   const auto wall_start = std::chrono::steady_clock::now();
@@ -187,7 +189,6 @@ RunResult run_scene(const Scene& scene, std::vector<std::unique_ptr<Model>>& mod
     return std::min(dt, c.next_frame - c.time);
   };
   auto last_checkpoint = std::chrono::steady_clock::now();
-  long checkpoint_step = -1;
   auto checkpoint = [&] {
     for (const auto& m : models) m->flush_logs();
     result.checkpoint = checkpoint_path(options.out, c.step);

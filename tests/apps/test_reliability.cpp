@@ -3,16 +3,19 @@
 // checkpoint that restarts; after SIGKILL every frame fields.xmf names is readable; each guard
 // stops the run with one message, its last state and exit status 3; output is bitwise the same
 // for the same and for different thread counts.
+#include "fsi_app/output/checkpoint_file.hpp"
 #include "fsi_app/output/fields_file.hpp"
 
 #include <catch2/catch.hpp>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <cstring>
 #include <fcntl.h>
 #include <filesystem>
 #include <fstream>
 #include <hdf5.h>
+#include <limits>
 #include <regex>
 #include <sstream>
 #include <sys/wait.h>
@@ -163,6 +166,33 @@ void wait_for_lines(const fs::path& file, std::size_t count) {
 }
 
 } // namespace
+
+TEST_CASE("apps: a checkpoint file gives back every value bit for bit", "[apps][reliability]") {
+  using limits = std::numeric_limits<double>;
+  const std::vector<double> reals = {
+      1.0 / 3.0,    -0.0, limits::infinity(), limits::quiet_NaN(), limits::denorm_min(),
+      limits::max()};
+  const std::vector<std::int64_t> ints = {std::numeric_limits<std::int64_t>::min(), -1, 0,
+                                          std::numeric_limits<std::int64_t>::max()};
+  fsi::StateArchive a;
+  a.put("fluid/x", reals);
+  a.put("fluid/hits/empty", std::vector<double>{});
+  a.put("coupling/acceleration/column_steps", ints);
+  a.put_real("driver/time", 0.1);
+  const fs::path file = fresh("archive") / "checkpoint.h5";
+  fsi::app::write_checkpoint(file, a);
+  CHECK(!fs::exists(file.string() + ".tmp"));
+  const fsi::StateArchive b = fsi::app::read_checkpoint(file);
+  const auto& x = b.reals("fluid/x", reals.size());
+  CHECK(std::memcmp(x.data(), reals.data(), reals.size() * sizeof(double)) == 0);
+  CHECK(b.reals("fluid/hits/empty").empty());
+  CHECK(b.integers("coupling/acceleration/column_steps") == ints);
+  CHECK(b.real("driver/time") == 0.1);
+  CHECK(b.all_reals().size() == 3);
+  CHECK_THROWS_WITH(b.reals("fluid/y"), "checkpoint: no entry 'fluid/y'");
+  CHECK_THROWS_WITH(b.reals("fluid/x", 7),
+                    "checkpoint: 'fluid/x' has 6 entries, this scene needs 7");
+}
 
 TEST_CASE("apps: a coupled run continued from a checkpoint is bitwise the uninterrupted run",
           "[apps][reliability]") {

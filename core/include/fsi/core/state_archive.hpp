@@ -30,12 +30,6 @@ public:
     const auto& v = integers(key, size);
     return std::vector<T>(v.begin(), v.end());
   }
-  template <class T> std::vector<T> ints(const std::string& key) const {
-    const auto& v = integers(key);
-    return std::vector<T>(v.begin(), v.end());
-  }
-
-  bool has(const std::string& key) const { return reals_.count(key) || integers_.count(key); }
 
   /// Throws InputError naming the key when it is missing (a checkpoint of another scene).
   const std::vector<double>& reals(const std::string& key) const { return find(reals_, key); }
