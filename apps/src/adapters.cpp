@@ -1,5 +1,7 @@
 #include "fsi_app/adapters.hpp"
 
+#include "fsi/core/state_archive.hpp"
+
 namespace fsi::app {
 
 FluidAdapter::FluidAdapter(emps::EmpsFluid& fluid, erp::WallSet& walls, const erp::FeInterface& fe)
@@ -58,6 +60,16 @@ void FluidAdapter::restore_state() {
   fluid_.restore(*saved_);
 }
 
+void FluidAdapter::write_state(StateArchive& archive) const {
+  fluid_.write_state(archive, "fluid/");
+  walls_.write_state(archive, "walls/");
+}
+
+void FluidAdapter::read_state(const StateArchive& archive) {
+  fluid_.read_state(archive, "fluid/");
+  walls_.read_state(archive, "walls/");
+}
+
 StructureAdapter::StructureAdapter(fem::Structure& structure, const erp::FeInterface& fe)
     : structure_(structure), fe_(fe),
       forces_(fem::Vector::Zero(2 * static_cast<Eigen::Index>(structure.num_nodes()))) {}
@@ -76,6 +88,17 @@ void StructureAdapter::advance(double, double dt) {
   const auto& report = structure_.advance(dt);
   newton_iterations_ += report.iterations;
   newton_max_ = std::max(newton_max_, report.iterations);
+}
+
+void StructureAdapter::write_state(StateArchive& archive) const {
+  structure_.write_state(archive, "structure/");
+  archive.put("run/structure/newton", std::vector<std::int64_t>{newton_iterations_, newton_max_});
+}
+
+void StructureAdapter::read_state(const StateArchive& archive) {
+  structure_.read_state(archive, "structure/");
+  const auto& counts = archive.integers("run/structure/newton", 2);
+  newton_iterations_ = counts[0], newton_max_ = static_cast<int>(counts[1]);
 }
 
 coupling::InterfaceMotion StructureAdapter::interface_motion() const {

@@ -12,7 +12,7 @@ namespace fsi::app {
 namespace {
 
 constexpr const char* kUsage = R"(usage:
-  fsi run SCENE --out DIR [--set key.path=value]... [--threads N]
+  fsi run SCENE --out DIR [--set key.path=value]... [--threads N] [--restart CHECKPOINT]
   fsi check SCENE [--set key.path=value]...
   fsi reference            print the scene-file reference (Markdown)
   fsi --help | --version
@@ -21,11 +21,15 @@ run     validates SCENE, then simulates it and writes DIR/fields.h5 (+ fields.xm
         DIR/probes.csv and DIR/run.json
 check   validates SCENE only
 --set   overrides one scene entry, e.g. --set time.end=0.1 --set structures[0].material.density=2000
-exit status: 0 success, 2 bad input, 3 the run stopped (see its message and run.json), 1 internal
+--restart continues from DIR/checkpoint_<step>.h5 (same scene and --out DIR; the output files are
+        cut back to the checkpoint and continued); see docs/reliability.md
+SIGINT/SIGTERM: the run finishes its step, writes a checkpoint and exits with 130/143
+exit status: 0 success, 2 bad input, 3 the run stopped (see its message and run.json), 1 internal,
+             130/143 interrupted by SIGINT/SIGTERM (a checkpoint was written)
 )";
 
 struct Args {
-  std::string command, scene, out;
+  std::string command, scene, out, restart;
   std::vector<std::string> overrides;
   int threads = 0;
 };
@@ -46,6 +50,8 @@ Args parse(const std::vector<std::string>& args) {
       a.overrides.push_back(arg.substr(6));
     } else if (arg == "--out") {
       a.out = value(arg);
+    } else if (arg == "--restart") {
+      a.restart = value(arg);
     } else if (arg == "--threads") {
       const std::string v = value(arg);
       try {
@@ -81,8 +87,16 @@ int dispatch(const Args& a, std::ostream& out, std::ostream& err, bool terminal)
     out << a.scene << ": ok\n";
     return 0;
   }
+  if (!a.restart.empty() && a.command != "run")
+    throw InputError("fsi " + a.command + ": --restart is for fsi run");
   if (a.threads > 0) omp_set_num_threads(a.threads);
-  run_scene(scene, models, {a.out, terminal, &err});
+  const RunResult result = run_scene(scene, models, {a.out, terminal, &err, a.restart});
+  if (result.signal != 0) {
+    err << "interrupted by signal " << result.signal << " at step " << result.step
+        << ", t = " << result.time << " s; continue with: fsi run " << a.scene << " --out " << a.out
+        << " --restart " << result.checkpoint.string() << '\n';
+    return 128 + result.signal;
+  }
   out << "results: " << a.out << "/fields.xmf (ParaView), " << a.out << "/probes.csv, " << a.out
       << "/run.json\n";
   return 0;

@@ -2,6 +2,7 @@
 
 #include "coupling/registry.hpp"
 #include "fsi/core/error.hpp"
+#include "fsi_app/output/text_file.hpp"
 
 namespace fsi::app {
 
@@ -55,11 +56,15 @@ void CoupledModel::advance(double time, double dt) {
   scheme_->advance(time, dt);
 }
 
-void CoupledModel::open_logs(const std::filesystem::path& out) {
-  step_log_ = std::make_unique<std::ofstream>(out / "coupling.csv");
-  if (!*step_log_) throw RunError("output: " + (out / "coupling.csv").string() + ": cannot create");
-  *step_log_ << "step,time,dt,iterations,residual_initial,residual_final,omega,converged,"
-                "seconds_fluid,seconds_structure,seconds_coupler\n";
+void CoupledModel::open_logs(const std::filesystem::path& out, bool resume) {
+  const std::filesystem::path file = out / "coupling.csv";
+  if (resume) // the header and one row per step before the checkpoint
+    keep_lines(file, 1 + static_cast<std::size_t>(scheme_->summary().steps));
+  step_log_ = std::make_unique<std::ofstream>(file, resume ? std::ios::app : std::ios::trunc);
+  if (!*step_log_) throw RunError("output: " + file.string() + ": cannot create");
+  if (!resume)
+    *step_log_ << "step,time,dt,iterations,residual_initial,residual_final,omega,converged,"
+                  "seconds_fluid,seconds_structure,seconds_coupler\n";
   scheme_->set_step_callback([log = step_log_.get()](const coupling::StepStats& s) {
     *log << s.step << ',' << s.t << ',' << s.dt << ',' << s.iterations << ',' << s.residual_initial
          << ',' << s.residual_final << ',';
@@ -68,6 +73,10 @@ void CoupledModel::open_logs(const std::filesystem::path& out) {
          << s.time_coupler << '\n';
     if (s.step % 1000 == 999) log->flush();
   });
+}
+
+void CoupledModel::flush_logs() {
+  if (step_log_) step_log_->flush();
 }
 
 void CoupledModel::write_frame(FieldsFile& file, const std::vector<std::string>& fields) const {

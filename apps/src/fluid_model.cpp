@@ -169,6 +169,16 @@ std::optional<double> FluidModel::probe(const ProbeSpec& probe) const {
   return std::nullopt;
 }
 
+void FluidModel::write_state(StateArchive& archive) const {
+  fluid_->write_state(archive, "fluid/");
+  walls_->write_state(archive, "walls/");
+}
+
+void FluidModel::read_state(const StateArchive& archive) {
+  fluid_->read_state(archive, "fluid/");
+  walls_->read_state(archive, "walls/");
+}
+
 void FluidModel::report(JsonObject& run) const {
   JsonObject f;
   f.add("particles_initial", static_cast<long long>(initial_count_))

@@ -11,15 +11,17 @@ double seconds(std::chrono::steady_clock::duration d) {
 }
 } // namespace
 
-Progress::Progress(double end_time, bool terminal, std::ostream& out)
-    : end_(end_time), terminal_(terminal), out_(out), start_(std::chrono::steady_clock::now()),
-      last_(start_) {}
+Progress::Progress(double end_time, bool terminal, std::ostream& out, long first_step,
+                   double first_time)
+    : end_(end_time), first_step_(first_step), first_time_(first_time), terminal_(terminal),
+      out_(out), start_(std::chrono::steady_clock::now()), last_(start_) {}
 
 std::string Progress::line(double time, long steps) const {
   const double wall = seconds(std::chrono::steady_clock::now() - start_);
   const double fraction = end_ > 0 ? time / end_ : 1.0;
-  const double rate = wall > 0 ? static_cast<double>(steps) / wall : 0.0;
-  const double eta = fraction > 0 ? wall * (1.0 - fraction) / fraction : 0.0;
+  const double rate = wall > 0 ? static_cast<double>(steps - first_step_) / wall : 0.0;
+  const double done = time - first_time_;
+  const double eta = done > 0 ? wall * (end_ - time) / done : 0.0;
   char buf[160];
   std::snprintf(buf, sizeof buf, "t = %.5g s  %5.1f %%  %.0f steps/s  ETA %dm%02ds", time,
                 100.0 * fraction, rate, static_cast<int>(eta) / 60, static_cast<int>(eta) % 60);

@@ -290,6 +290,21 @@ CouplingSpec read_coupling(Section s) {
   return c;
 }
 
+CheckpointSpec read_checkpoint_spec(Section s) {
+  CheckpointSpec c;
+  c.line = s.line();
+  if (auto n = s.optional_integer("interval_steps", Range::closed(1, 1e9),
+                                  "write a checkpoint after every this many steps"))
+    c.interval_steps = *n;
+  c.interval_minutes = s.optional_real("interval_minutes", Range::positive(),
+                                       "write a checkpoint after this much wall time, minutes");
+  c.keep = s.integer("keep", 2, Range::closed(1, 1000), "newest checkpoints kept on disk");
+  s.finish();
+  if (!s.context().documenting() && !c.interval_steps && !c.interval_minutes)
+    s.fail("", "give interval_steps, interval_minutes or both");
+  return c;
+}
+
 // A structured T6 rectangle has (2 nx + 1)(2 ny + 1) nodes on a regular grid.
 void check_rectangle_probe(const MeshSpec& m, const ProbeSpec& p, const Section& s) {
   const long nodes = (2L * m.elements_x + 1) * (2L * m.elements_y + 1);
@@ -370,6 +385,9 @@ Scene read_scene(Section top) {
   for (auto& st : structure_sections) scene.structures.push_back(read_structure(st));
   if (auto c = top.block("coupling", "partitioned coupling; needs fluid and structures"))
     scene.coupling = read_coupling(*c);
+  if (auto c = top.block("checkpoint", "periodic checkpoints for fsi run --restart; absent: "
+                                       "only on SIGINT/SIGTERM (docs/reliability.md)"))
+    scene.checkpoint = read_checkpoint_spec(*c);
   top.finish();
   if (!ctx.documenting()) cross_check(top, scene, structure_sections, probe_sections);
   return scene;

@@ -156,6 +156,20 @@ std::optional<double> StructureModel::probe(const ProbeSpec& probe) const {
   return std::nullopt;
 }
 
+void StructureModel::write_state(StateArchive& archive) const {
+  const std::string prefix = "structures/" + name_ + "/";
+  structure_->write_state(archive, prefix);
+  archive.put("run/" + prefix + "newton",
+              std::vector<std::int64_t>{newton_iterations_, steps_, newton_max_});
+}
+
+void StructureModel::read_state(const StateArchive& archive) {
+  const std::string prefix = "structures/" + name_ + "/";
+  structure_->read_state(archive, prefix);
+  const auto& counts = archive.integers("run/" + prefix + "newton", 3);
+  newton_iterations_ = counts[0], steps_ = counts[1], newton_max_ = static_cast<int>(counts[2]);
+}
+
 void StructureModel::report(JsonObject& run) const {
   JsonObject s;
   s.add("nodes", static_cast<long long>(structure_->mesh().num_nodes()))

@@ -1,5 +1,7 @@
 #include "coupling/acceleration_aitken.hpp"
 
+#include "fsi/core/state_archive.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -35,6 +37,16 @@ void AitkenRelaxation::update(const Eigen::VectorXd& x, const Eigen::VectorXd& x
   x_next = x + omega_ * r;
   r_prev_ = rs;
   ++iteration_;
+}
+
+// Only the last factor carries over (it bounds the next step's first factor); r_prev_ and the
+// iteration count restart with every step.
+void AitkenRelaxation::write_state(StateArchive& archive, const std::string& prefix) const {
+  archive.put_real(prefix + "omega", omega_);
+}
+
+void AitkenRelaxation::read_state(const StateArchive& archive, const std::string& prefix) {
+  omega_ = archive.real(prefix + "omega");
 }
 
 } // namespace fsi::coupling

@@ -1,5 +1,7 @@
 #include "coupling/acceleration_iqn_ils.hpp"
 
+#include "fsi/core/state_archive.hpp"
+
 #include <cassert>
 #include <vector>
 
@@ -86,6 +88,39 @@ void IqnIlsAcceleration::end_step(bool converged) {
   ++step_;
   // The next step (index step_) reuses steps step_ - reuse .. step_ - 1.
   std::erase_if(columns_, [&](const Column& c) { return c.step < step_ - reuse_; });
+  has_prev_ = false;
+}
+
+// The reused columns V, W of past steps (newest first, with their step) and the step counter;
+// the current step's r_prev_ / x_tilde_prev_ restart with every step.
+void IqnIlsAcceleration::write_state(StateArchive& archive, const std::string& prefix) const {
+  std::vector<double> dr, dx;
+  std::vector<std::int64_t> steps;
+  for (const Column& c : columns_) {
+    dr.insert(dr.end(), c.dr.data(), c.dr.data() + c.dr.size());
+    dx.insert(dx.end(), c.dx_tilde.data(), c.dx_tilde.data() + c.dx_tilde.size());
+    steps.push_back(c.step);
+  }
+  archive.put(prefix + "V", std::move(dr));
+  archive.put(prefix + "W", std::move(dx));
+  archive.put(prefix + "column_steps", std::move(steps));
+  archive.put_integer(prefix + "step", step_);
+}
+
+void IqnIlsAcceleration::read_state(const StateArchive& archive, const std::string& prefix) {
+  const auto& steps = archive.integers(prefix + "column_steps");
+  const auto& dr = archive.reals(prefix + "V");
+  const auto& dx = archive.reals(prefix + "W", dr.size());
+  if (steps.empty() ? !dr.empty() : dr.size() % steps.size() != 0)
+    throw InputError("checkpoint: '" + prefix + "V' does not split into its columns");
+  const auto n = static_cast<Eigen::Index>(steps.empty() ? 0 : dr.size() / steps.size());
+  columns_.clear();
+  for (std::size_t k = 0; k < steps.size(); ++k) {
+    const auto offset = static_cast<std::ptrdiff_t>(k) * n;
+    columns_.push_back({Eigen::Map<const Eigen::VectorXd>(dr.data() + offset, n),
+                        Eigen::Map<const Eigen::VectorXd>(dx.data() + offset, n), steps[k]});
+  }
+  step_ = archive.integer(prefix + "step");
   has_prev_ = false;
 }
 

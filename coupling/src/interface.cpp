@@ -1,5 +1,7 @@
 #include "coupling/interface.hpp"
 
+#include "fsi/core/error.hpp"
+
 #include <cassert>
 
 namespace fsi::coupling {
@@ -28,6 +30,22 @@ InterfaceMotion interpolate(const InterfaceMotion& a, const InterfaceMotion& b, 
     m.a[i] = (1.0 - s) * a.a[i] + s * b.a[i];
   }
   return m;
+}
+
+void FluidSolver::write_state(StateArchive&) const {
+  throw RunError("checkpoint: this fluid solver cannot write its state");
+}
+
+void FluidSolver::read_state(const StateArchive&) {
+  throw RunError("checkpoint: this fluid solver cannot read a state");
+}
+
+void StructureSolver::write_state(StateArchive&) const {
+  throw RunError("checkpoint: this structure solver cannot write its state");
+}
+
+void StructureSolver::read_state(const StateArchive&) {
+  throw RunError("checkpoint: this structure solver cannot read a state");
 }
 
 } // namespace fsi::coupling

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "fsi/core/error.hpp"
+#include "fsi/core/state_archive.hpp"
 
 namespace fsi::coupling {
 
@@ -125,6 +126,7 @@ void CouplingScheme::advance(double t, double dt) {
 
   InterfaceMotion output;
   bool converged = true;
+  std::size_t worst = 0; // interface node with the largest position residual, for messages
   for (int it = 0;; ++it) {
     if (it > 0) restore_checkpoint();
     output = evaluate(t, dt, input);
@@ -151,6 +153,9 @@ void CouplingScheme::advance(double t, double dt) {
     if (done) break;
     if (it + 1 >= options_.max_iterations) {
       converged = false;
+      for (std::size_t k = 0; k < n_nodes_; ++k)
+        if ((output.x[k] - input.x[k]).norm() > (output.x[worst] - input.x[worst]).norm())
+          worst = k;
       break;
     }
     Eigen::VectorXd next;
@@ -174,7 +179,7 @@ void CouplingScheme::advance(double t, double dt) {
     std::ostringstream s;
     s << "coupling (" << name_ << "): step " << last_.step << " at t = " << t
       << " s did not converge in " << last_.iterations << " iterations: residual "
-      << last_.residual_final << " m (";
+      << last_.residual_final << " m, largest at interface node " << worst << " (";
     for (std::size_t k = 0; k < components_.measures.size(); ++k)
       s << (k ? "; " : "") << (k ? "velocities " : "positions ")
         << components_.measures[k]->criterion() << ", value " << components_.measures[k]->value();
@@ -232,6 +237,42 @@ InterfaceMotion CouplingScheme::serial_evaluate(FluidSolver& fluid, StructureSol
   const InterfaceLoads& loads = run_fluid(
       fluid, t, dt, [&](double s) { return s == 1.0 ? input : interpolate(state_, input, s); });
   return run_structure(structure, loads, t, dt);
+}
+
+void CouplingScheme::write_state(StateArchive& a) const {
+  a.put_integer("coupling/step", step_index_);
+  a.put("coupling/state/x", flatten(state_.x));
+  a.put("coupling/state/v", flatten(state_.v));
+  a.put("coupling/state/a", flatten(state_.a));
+  a.put("coupling/loads", flatten(loads_.f));
+  a.put("coupling/summary/counts",
+        std::vector<std::int64_t>{summary_.steps, summary_.iterations, summary_.max_iterations,
+                                  summary_.unconverged});
+  a.put("coupling/summary/seconds",
+        std::vector<double>{summary_.time_fluid, summary_.time_structure, summary_.time_coupler});
+  if (components_.acceleration) components_.acceleration->write_state(a, "coupling/acceleration/");
+  write_participants(a);
+}
+
+void CouplingScheme::read_state(const StateArchive& a) {
+  assert(initialized_ && "CouplingScheme::read_state before initialize");
+  const std::size_t n = 2 * n_nodes_;
+  step_index_ = a.integer("coupling/step");
+  state_.x = unflatten(a.reals("coupling/state/x", n));
+  state_.v = unflatten(a.reals("coupling/state/v", n));
+  state_.a = unflatten(a.reals("coupling/state/a", n));
+  loads_.f = unflatten(a.reals("coupling/loads", n));
+  const auto& counts = a.integers("coupling/summary/counts", 4);
+  const auto& seconds = a.reals("coupling/summary/seconds", 3);
+  summary_.steps = counts[0];
+  summary_.iterations = counts[1];
+  summary_.max_iterations = static_cast<int>(counts[2]);
+  summary_.unconverged = counts[3];
+  summary_.time_fluid = seconds[0];
+  summary_.time_structure = seconds[1];
+  summary_.time_coupler = seconds[2];
+  if (components_.acceleration) components_.acceleration->read_state(a, "coupling/acceleration/");
+  read_participants(a);
 }
 
 } // namespace fsi::coupling

@@ -2,6 +2,7 @@
 
 #include "fsi/core/error.hpp"
 #include "fsi/core/parallel.hpp"
+#include "fsi/core/state_archive.hpp"
 #include "geometry_erp/mirror.hpp"
 #include "geometry_erp/weight.hpp"
 
@@ -84,7 +85,7 @@ EmpsFluid::EmpsFluid(const FluidOptions& options, const std::vector<Vec2>& posit
   capacity_ = static_cast<std::size_t>(std::ceil(2.0 * M_PI * reach * reach)) + 16;
   remove_outside();
   // pnd, pressure and free-surface flags of the initial state (for output at t = 0).
-  refresh_neighbours(true);
+  refresh_neighbours(true, 0, 0.0);
   query_walls();
   density_and_pressure();
 }
@@ -104,7 +105,7 @@ void EmpsFluid::damp(double t, double dt) {
   });
 }
 
-void EmpsFluid::refresh_neighbours(bool allow_reorder) {
+void EmpsFluid::refresh_neighbours(bool allow_reorder, long step, double t) {
   Timer timer(times_.neighbours);
   Particles& p = particles_;
   const std::size_t n = p.size();
@@ -118,7 +119,7 @@ void EmpsFluid::refresh_neighbours(bool allow_reorder) {
   ++builds_;
   if (!neighbours_.build(grid_, p.x.data(), p.y.data(), n, r_e_ * (1.0 + options_.skin), capacity_))
     throw RunError("fluid: more than " + std::to_string(capacity_) + " neighbours at " +
-                   where(p, neighbours_.overflow(), step_, 0.0) +
+                   where(p, neighbours_.overflow(), step, t) +
                    " (particles clustered: the step is likely unstable)");
 }
 
@@ -331,7 +332,7 @@ void EmpsFluid::advance(double t, double dt) {
     locator_->update();
   }
   const Vec2 g = options_.gravity;
-  refresh_neighbours(true);
+  refresh_neighbours(true, step_ + 1, t);
   const std::size_t n = p.size();
   visc_wall_.assign(n, Vec2::Zero());
   visc_wall2_.assign(n, Vec2::Zero());
@@ -354,7 +355,8 @@ void EmpsFluid::advance(double t, double dt) {
       p.y[i] += dt * p.vy[i];
     });
   }
-  refresh_neighbours(false);
+  check_finite(step_ + 1, t + dt); // v*, x* (before they are binned)
+  refresh_neighbours(false, step_ + 1, t + dt);
   query_walls();
   const std::size_t crossed = first_index(n, [&](std::size_t i) { return hits_.crossed[i] != 0; });
   if (crossed != none)
@@ -366,18 +368,17 @@ void EmpsFluid::advance(double t, double dt) {
   ++step_;
   Timer timer(times_.other);
   damp(t, dt);
-  check_finite(t + dt);
+  check_finite(step_, t + dt);
   remove_outside();
 }
 
-void EmpsFluid::check_finite(double t) const {
+void EmpsFluid::check_finite(long step, double t) const {
   const Particles& p = particles_;
   const std::size_t bad = first_index(p.size(), [&](std::size_t i) {
     return !std::isfinite(p.x[i] + p.y[i] + p.vx[i] + p.vy[i] + p.p[i]);
   });
   if (bad != none)
-    throw RunError("fluid: non-finite position, velocity or pressure at " +
-                   where(p, bad, step_, t));
+    throw RunError("fluid: non-finite position, velocity or pressure at " + where(p, bad, step, t));
 }
 
 void EmpsFluid::remove_outside() {
@@ -436,6 +437,103 @@ void EmpsFluid::restore(const State& s) {
     neighbours_.invalidate();
   }
   hits_layout_ = -1; // the hits belong to the abandoned step
+}
+
+void EmpsFluid::write_state(StateArchive& a, const std::string& prefix) const {
+  const Particles& p = particles_;
+  for (const auto& [name, v] : {std::pair{"x", &p.x},
+                                {"y", &p.y},
+                                {"vx", &p.vx},
+                                {"vy", &p.vy},
+                                {"p", &p.p},
+                                {"pnd", &p.pnd}})
+    a.put(prefix + name, *v);
+  a.put_ints(prefix + "surface", p.surface);
+  a.put_ints(prefix + "id", p.id);
+  a.put_integer(prefix + "step", step_);
+  a.put_integer(prefix + "removed", static_cast<std::int64_t>(removed_));
+  a.put_integer(prefix + "layout", layout_);
+  a.put_integer(prefix + "builds", builds_);
+  a.put_real(prefix + "mean_neighbours", mean_neighbours_);
+  // The list is rebuilt from its build positions on restart (same grid, same rows, same order).
+  const std::size_t built = neighbours_.built();
+  a.put(prefix + "neighbours/x_build",
+        std::vector<double>(neighbours_.x_build().begin(),
+                            neighbours_.x_build().begin() + static_cast<std::ptrdiff_t>(built)));
+  a.put(prefix + "neighbours/y_build",
+        std::vector<double>(neighbours_.y_build().begin(),
+                            neighbours_.y_build().begin() + static_cast<std::ptrdiff_t>(built)));
+  // Wall hits of the last x*, reused by the next viscous step while the layout is unchanged.
+  const bool hits_valid = hits_layout_ == layout_;
+  a.put_integer(prefix + "hits/valid", hits_valid);
+  if (!hits_valid) return;
+  const std::string h = prefix + "hits/";
+  a.put_ints(h + "segment", hits_.segment);
+  a.put_ints(h + "segment2", hits_.segment2);
+  a.put_ints(h + "crossed", hits_.crossed);
+  a.put(h + "t", hits_.t);
+  a.put(h + "r", hits_.r);
+  a.put(h + "t2", hits_.t2);
+  a.put(h + "r2", hits_.r2);
+  for (const auto& [name, v] : {std::pair{"x_wall", &hits_.x_wall},
+                                {"n_wall", &hits_.n_wall},
+                                {"v_wall", &hits_.v_wall},
+                                {"a_wall", &hits_.a_wall},
+                                {"x_wall2", &hits_.x_wall2},
+                                {"n_wall2", &hits_.n_wall2},
+                                {"v_wall2", &hits_.v_wall2}})
+    a.put(h + name, flatten(*v));
+}
+
+void EmpsFluid::read_state(const StateArchive& a, const std::string& prefix) {
+  Particles& p = particles_;
+  const std::size_t n = a.reals(prefix + "x").size();
+  p.resize(n);
+  for (const auto& [name, v] : {std::pair{"x", &p.x},
+                                {"y", &p.y},
+                                {"vx", &p.vx},
+                                {"vy", &p.vy},
+                                {"p", &p.p},
+                                {"pnd", &p.pnd}})
+    *v = a.reals(prefix + name, n);
+  p.surface = a.ints<std::uint8_t>(prefix + "surface", n);
+  p.id = a.ints<std::uint32_t>(prefix + "id", n);
+  step_ = a.integer(prefix + "step");
+  removed_ = static_cast<std::size_t>(a.integer(prefix + "removed"));
+  layout_ = a.integer(prefix + "layout");
+  builds_ = a.integer(prefix + "builds");
+  mean_neighbours_ = a.real(prefix + "mean_neighbours");
+  const auto& xb = a.reals(prefix + "neighbours/x_build");
+  const auto& yb = a.reals(prefix + "neighbours/y_build", xb.size());
+  neighbours_.invalidate();
+  if (!xb.empty()) {
+    if (xb.size() != n)
+      throw InputError("checkpoint: '" + prefix +
+                       "neighbours/x_build' does not match the particles");
+    grid_.bin(xb.data(), yb.data(), n);
+    if (!neighbours_.build(grid_, xb.data(), yb.data(), n, r_e_ * (1.0 + options_.skin), capacity_))
+      throw InputError("checkpoint: the stored neighbour list overflows");
+  }
+  hits_layout_ = -1;
+  if (a.integer(prefix + "hits/valid") == 0) return;
+  const std::string h = prefix + "hits/";
+  const std::size_t m = a.integers(h + "segment").size();
+  hits_.segment = a.ints<int>(h + "segment", m);
+  hits_.segment2 = a.ints<int>(h + "segment2", m);
+  hits_.crossed = a.ints<unsigned char>(h + "crossed", m);
+  hits_.t = a.reals(h + "t", m);
+  hits_.r = a.reals(h + "r", m);
+  hits_.t2 = a.reals(h + "t2", m);
+  hits_.r2 = a.reals(h + "r2", m);
+  for (const auto& [name, v] : {std::pair{"x_wall", &hits_.x_wall},
+                                {"n_wall", &hits_.n_wall},
+                                {"v_wall", &hits_.v_wall},
+                                {"a_wall", &hits_.a_wall},
+                                {"x_wall2", &hits_.x_wall2},
+                                {"n_wall2", &hits_.n_wall2},
+                                {"v_wall2", &hits_.v_wall2}})
+    *v = unflatten(a.reals(h + name, 2 * m));
+  hits_layout_ = layout_;
 }
 
 } // namespace fsi::emps

@@ -1,6 +1,7 @@
 #include "geometry_erp/wall_set.hpp"
 
 #include "fsi/core/error.hpp"
+#include "fsi/core/state_archive.hpp"
 
 #include <cassert>
 #include <string>
@@ -82,6 +83,19 @@ Vec2 WallSet::node_normal(int L, int fallback_segment) const {
   // A vanishing sum means two incident normals cancel: no side is defined by the node.
   if (norm < 1e-12) return segment_normal(fallback_segment);
   return sum / norm;
+}
+
+void WallSet::write_state(StateArchive& archive, const std::string& prefix) const {
+  archive.put(prefix + "x", flatten(nodes_.x));
+  archive.put(prefix + "v", flatten(nodes_.v));
+  archive.put(prefix + "a", flatten(nodes_.a));
+}
+
+void WallSet::read_state(const StateArchive& archive, const std::string& prefix) {
+  const std::size_t n = 2 * nodes_.size();
+  nodes_.x = unflatten(archive.reals(prefix + "x", n));
+  nodes_.v = unflatten(archive.reals(prefix + "v", n));
+  nodes_.a = unflatten(archive.reals(prefix + "a", n));
 }
 
 } // namespace fsi::erp

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "fsi/core/error.hpp"
+#include "fsi/core/state_archive.hpp"
 
 namespace fsi::fem {
 
@@ -58,7 +59,11 @@ void Structure::set_external_forces(const Vector& f_ext) {
   if (f_ext.size() != static_cast<Eigen::Index>(2 * mesh_.num_nodes()))
     throw InputError("structure: external forces have size " + std::to_string(f_ext.size()) +
                      ", need 2 * nodes = " + std::to_string(2 * mesh_.num_nodes()));
-  if (!f_ext.allFinite()) throw RunError("structure: external forces are not finite");
+  for (Eigen::Index d = 0; d < f_ext.size(); ++d)
+    if (!std::isfinite(f_ext[d]))
+      throw RunError("structure: the external force on node " + std::to_string(d / 2) +
+                     " is not finite (before structure step " + std::to_string(state_.step + 1) +
+                     ", t = " + std::to_string(state_.time) + " s)");
   f_ext_next_ = f_ext;
   for (int d = 0; d < dofs_->num_dofs(); ++d)
     if (dofs_->free_index(d) < 0) f_ext_next_[d] = 0.0;
@@ -82,6 +87,23 @@ void Structure::update_acceleration() {
   state_.f_ext = f_ext_next_; // the forces a^n balances
 }
 
+namespace {
+/// The node of the free dof with the largest |R| (the first non-finite one if any).
+int worst_node(const DofMap& dofs, const Vector& R) {
+  Eigen::Index worst = 0;
+  for (Eigen::Index i = 0; i < R.size(); ++i) {
+    if (!std::isfinite(R[i])) {
+      worst = i;
+      break;
+    }
+    if (std::abs(R[i]) > std::abs(R[worst])) worst = i;
+  }
+  for (int d = 0; d < dofs.num_dofs(); ++d)
+    if (dofs.free_index(d) == worst) return d / 2;
+  return -1;
+}
+} // namespace
+
 template <class Residual>
 void Structure::newton(Vector& u, Residual&& residual, StepReport& report) {
   const NewtonOptions& o = options_.newton;
@@ -93,7 +115,9 @@ void Structure::newton(Vector& u, Residual&& residual, StepReport& report) {
     residual(u, R);
     const double r = R.norm();
     report.final_residual = r;
-    if (!std::isfinite(r)) throw RunError("Newton: the residual is not finite");
+    if (!std::isfinite(r))
+      throw RunError("Newton: the residual is not finite at node " +
+                     std::to_string(worst_node(*dofs_, R)));
     if (k == 0) R_ref = std::max(r, force_scale);
     const bool residual_ok = r <= o.residual_atol + o.residual_rtol * R_ref;
     const bool increment_ok = k == 0 ? r <= o.residual_atol
@@ -110,7 +134,8 @@ void Structure::newton(Vector& u, Residual&& residual, StepReport& report) {
       s << "Newton did not converge in " << o.max_iterations << " iterations (residual " << r
         << ", tolerance " << o.residual_atol + o.residual_rtol * R_ref << "; last increment "
         << report.history.back().increment_norm << ", tolerance "
-        << o.increment_atol + o.increment_rtol * u.norm() << ")";
+        << o.increment_atol + o.increment_rtol * u.norm() << "; largest residual at node "
+        << worst_node(*dofs_, R) << ")";
       throw RunError(s.str());
     }
     int its = 0;
@@ -226,6 +251,39 @@ Energies Structure::energies() const {
   e.gravity_work = f_g_.dot(state_.u);
   e.external_work = state_.external_work;
   return e;
+}
+
+namespace {
+std::vector<double> to_std(const Vector& v) {
+  return {v.data(), v.data() + v.size()};
+}
+} // namespace
+
+void Structure::write_state(StateArchive& a, const std::string& prefix) const {
+  a.put(prefix + "u", to_std(state_.u));
+  a.put(prefix + "v", to_std(state_.v));
+  a.put(prefix + "a", to_std(state_.a));
+  a.put(prefix + "f_ext", to_std(state_.f_ext));
+  a.put(prefix + "f_ext_next", to_std(f_ext_next_));
+  a.put_real(prefix + "time", state_.time);
+  a.put_integer(prefix + "step", state_.step);
+  a.put_real(prefix + "external_work", state_.external_work);
+}
+
+void Structure::read_state(const StateArchive& a, const std::string& prefix) {
+  const std::size_t n = 2 * mesh_.num_nodes();
+  auto vector = [&](const char* name) {
+    const auto& v = a.reals(prefix + name, n);
+    return Vector(Eigen::Map<const Vector>(v.data(), static_cast<Eigen::Index>(n)));
+  };
+  state_.u = vector("u");
+  state_.v = vector("v");
+  state_.a = vector("a");
+  state_.f_ext = vector("f_ext");
+  f_ext_next_ = vector("f_ext_next");
+  state_.time = a.real(prefix + "time");
+  state_.step = a.integer(prefix + "step");
+  state_.external_work = a.real(prefix + "external_work");
 }
 
 } // namespace fsi::fem

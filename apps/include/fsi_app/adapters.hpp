@@ -23,6 +23,9 @@ public:
   const coupling::InterfaceLoads& interface_loads() const override { return loads_; }
   void save_state() override;
   void restore_state() override;
+  /// The fluid under "fluid/", all wall nodes under "walls/".
+  void write_state(StateArchive& archive) const override;
+  void read_state(const StateArchive& archive) override;
 
 private:
   void project();
@@ -46,6 +49,9 @@ public:
   coupling::InterfaceMotion interface_motion() const override;
   void save_state() override { saved_ = structure_.save(); }
   void restore_state() override { structure_.restore(*saved_); }
+  /// The structure under "structure/", with the Newton counters.
+  void write_state(StateArchive& archive) const override;
+  void read_state(const StateArchive& archive) override;
 
   /// Newton iterations of all advances so far, and the most in one.
   long newton_iterations() const { return newton_iterations_; }

@@ -18,11 +18,15 @@ public:
   void advance(double time, double dt) override;
   /// DIR/coupling.csv: one row per coupling step (iterations, residuals of eq. 68, relaxation,
   /// convergence, wall times), flushed every 1000 rows and at the end.
-  void open_logs(const std::filesystem::path& out) override;
+  void open_logs(const std::filesystem::path& out, bool resume) override;
+  void flush_logs() override;
   void declare(FieldsFile& file) const override { structure_->declare(file); }
   void write_frame(FieldsFile& file, const std::vector<std::string>& fields) const override;
   std::optional<double> probe(const ProbeSpec& probe) const override;
   void report(JsonObject& run) const override;
+  /// The coupler with both participants (coupling::CouplingScheme::write_state).
+  void write_state(StateArchive& archive) const override { scheme_->write_state(archive); }
+  void read_state(const StateArchive& archive) override { scheme_->read_state(archive); }
 
   const coupling::CouplingScheme& scheme() const { return *scheme_; }
   const FluidAdapter& fluid_adapter() const { return *fluid_adapter_; }

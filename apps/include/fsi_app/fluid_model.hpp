@@ -24,6 +24,8 @@ public:
   void write_frame(FieldsFile& file, const std::vector<std::string>& fields) const override;
   std::optional<double> probe(const ProbeSpec& probe) const override;
   void report(JsonObject& run) const override;
+  void write_state(StateArchive& archive) const override;
+  void read_state(const StateArchive& archive) override;
 
   emps::EmpsFluid& fluid() { return *fluid_; }
   erp::WallSet& walls() { return *walls_; }

@@ -1,6 +1,7 @@
 #pragma once
 // What the run driver sees of one simulated part of a scene (a structure, a fluid, or a coupled
 // system): advance, write its grids, answer its probes, report its statistics.
+#include "fsi/core/state_archive.hpp"
 #include "fsi_app/output/fields_file.hpp"
 #include "fsi_app/output/json.hpp"
 #include "fsi_app/scene.hpp"
@@ -19,8 +20,16 @@ public:
   virtual void advance(double time, double dt) = 0;
   /// The largest stable step for a Courant number, for models that limit it (the fluid).
   virtual std::optional<double> stable_dt(double /*courant*/) const { return std::nullopt; }
-  /// Opens the model's own logs in the output directory, before the first step.
-  virtual void open_logs(const std::filesystem::path& /*out*/) {}
+  /// Opens the model's own logs in the output directory, before the first step. `resume`: the
+  /// model was just read from a checkpoint; its logs keep the rows up to it and continue.
+  virtual void open_logs(const std::filesystem::path& /*out*/, bool /*resume*/) {}
+  /// Writes buffered log rows to disk (before a checkpoint, so they cover it).
+  virtual void flush_logs() {}
+  /// Checkpoint hooks: the full state between two steps (solvers, walls, coupler, the counters
+  /// of run.json), so that a run continued from it is bitwise the uninterrupted one.
+  virtual void write_state(StateArchive& archive) const = 0;
+  /// Throws InputError (naming the key) when the archive does not fit this model.
+  virtual void read_state(const StateArchive& archive) = 0;
   /// Declares static data (mesh connectivity) once, before the first frame.
   virtual void declare(FieldsFile& file) const = 0;
   /// Writes this model's grids for the current frame; `fields` lists the requested fields.

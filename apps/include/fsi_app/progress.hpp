@@ -8,13 +8,17 @@ namespace fsi::app {
 
 class Progress {
 public:
-  Progress(double end_time, bool terminal, std::ostream& out);
+  /// A restarted run counts its rate and ETA from (first_step, first_time).
+  Progress(double end_time, bool terminal, std::ostream& out, long first_step = 0,
+           double first_time = 0.0);
   void update(double time, long steps);
   void finish(double time, long steps);
 
 private:
   std::string line(double time, long steps) const;
   double end_;
+  long first_step_;
+  double first_time_;
   bool terminal_;
   std::ostream& out_;
   std::chrono::steady_clock::time_point start_, last_;

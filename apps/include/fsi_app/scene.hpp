@@ -111,6 +111,15 @@ struct CouplingSpec {
   int line = 0;     ///< scene line of the block
 };
 
+/// Periodic checkpoints (docs/reliability.md): DIR/checkpoint_<step>.h5 after every
+/// interval_steps steps and/or every interval_minutes of wall time, the newest `keep` kept.
+struct CheckpointSpec {
+  std::optional<long> interval_steps;
+  std::optional<double> interval_minutes;
+  int keep = 2;
+  int line = 0;
+};
+
 struct Scene {
   std::filesystem::path path;
   std::string name;
@@ -121,7 +130,8 @@ struct Scene {
   std::vector<WallSpec> walls;
   std::vector<StructureSpec> structures;
   std::optional<CouplingSpec> coupling;
-  std::vector<std::string> overrides; ///< `key=value` as given on the command line
+  std::optional<CheckpointSpec> checkpoint; ///< absent: checkpoints only on SIGINT/SIGTERM
+  std::vector<std::string> overrides;       ///< `key=value` as given on the command line
 };
 
 /// `FILE:LINE: KEY: what` for problems found after parsing (e.g. while building a mesh).

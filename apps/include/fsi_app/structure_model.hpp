@@ -22,6 +22,8 @@ public:
   void write_frame(FieldsFile& file, const std::vector<std::string>& fields) const override;
   std::optional<double> probe(const ProbeSpec& probe) const override;
   void report(JsonObject& run) const override;
+  void write_state(StateArchive& archive) const override;
+  void read_state(const StateArchive& archive) override;
 
   fem::Structure& structure() { return *structure_; }
 

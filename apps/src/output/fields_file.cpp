@@ -35,12 +35,52 @@ void write_array(hid_t parent, const std::string& name, hid_t mem_type, const vo
 }
 
 hid_t make_group(hid_t parent, const std::string& name, const std::filesystem::path& file) {
-  const hid_t g = H5Gcreate2(parent, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  const hid_t gcpl = H5Pcreate(H5P_GROUP_CREATE); // children listed in creation order on restart
+  H5Pset_link_creation_order(gcpl, H5P_CRT_ORDER_TRACKED | H5P_CRT_ORDER_INDEXED);
+  const hid_t g = H5Gcreate2(parent, name.c_str(), H5P_DEFAULT, gcpl, H5P_DEFAULT);
+  H5Pclose(gcpl);
   if (g < 0) h5_fail(file, "cannot create group " + name);
   return g;
 }
 
+/// Names of the links in group `path`, in creation order.
+std::vector<std::string> children(hid_t file, const std::string& path,
+                                  const std::filesystem::path& h5) {
+  std::vector<std::string> names;
+  const herr_t status = H5Literate_by_name(
+      file, path.c_str(), H5_INDEX_CRT_ORDER, H5_ITER_INC, nullptr,
+      [](hid_t, const char* name, const H5L_info_t*, void* data) -> herr_t {
+        static_cast<std::vector<std::string>*>(data)->push_back(name);
+        return 0;
+      },
+      &names, H5P_DEFAULT);
+  if (status < 0) throw InputError(h5.string() + ": cannot list " + path);
+  return names;
+}
+
+std::vector<hsize_t> dims_of(hid_t file, const std::string& path, const std::filesystem::path& h5) {
+  const hid_t set = H5Dopen2(file, path.c_str(), H5P_DEFAULT);
+  if (set < 0) throw InputError(h5.string() + ": no dataset " + path);
+  const hid_t space = H5Dget_space(set);
+  std::vector<hsize_t> dims(
+      static_cast<std::size_t>(std::max(0, H5Sget_simple_extent_ndims(space))));
+  H5Sget_simple_extent_dims(space, dims.data(), nullptr);
+  H5Sclose(space);
+  H5Dclose(set);
+  return dims;
+}
+
 } // namespace
+
+double read_frame_time(const std::filesystem::path& h5, std::int64_t file, int frame) {
+  const std::string name = "frames/" + std::to_string(frame);
+  double time = 0.0;
+  const hid_t attr = H5Aopen_by_name(file, name.c_str(), "time", H5P_DEFAULT, H5P_DEFAULT);
+  const herr_t status = attr < 0 ? -1 : H5Aread(attr, H5T_NATIVE_DOUBLE, &time);
+  if (attr >= 0) H5Aclose(attr);
+  if (status < 0) throw InputError(h5.string() + ": no frame " + std::to_string(frame));
+  return time;
+}
 
 FieldsFile::FieldsFile(const std::filesystem::path& h5, const std::filesystem::path& xmf)
     : h5_path_(h5), xmf_path_(xmf) {
@@ -49,6 +89,40 @@ FieldsFile::FieldsFile(const std::filesystem::path& h5, const std::filesystem::p
   if (file_ < 0) h5_fail(h5, "cannot create file");
   H5Gclose(make_group(file_, "meshes", h5));
   H5Gclose(make_group(file_, "frames", h5));
+  check(H5Fflush(file_, H5F_SCOPE_GLOBAL), h5, "flush failed");
+  write_xdmf();
+}
+
+FieldsFile::FieldsFile(const std::filesystem::path& h5, const std::filesystem::path& xmf,
+                       int keep_frames)
+    : h5_path_(h5), xmf_path_(xmf) {
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  file_ = H5Fopen(h5.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  if (file_ < 0)
+    throw InputError(h5.string() + ": cannot open (a restart continues the files of its run)");
+  for (const auto& grid : children(file_, "meshes", h5))
+    meshes_.push_back({grid, dims_of(file_, "meshes/" + grid + "/t6", h5).front()});
+  const auto count = static_cast<int>(children(file_, "frames", h5).size());
+  if (count < keep_frames)
+    throw InputError(h5.string() + ": has " + std::to_string(count) +
+                     " frames, the checkpoint needs " + std::to_string(keep_frames));
+  for (int k = keep_frames; k < count; ++k) // frames after the checkpoint
+    check(H5Ldelete(file_, ("frames/" + std::to_string(k)).c_str(), H5P_DEFAULT), h5,
+          "cannot delete frame " + std::to_string(k));
+  for (int k = 0; k < keep_frames; ++k) {
+    const std::string frame = "frames/" + std::to_string(k);
+    FrameRecord record{read_frame_time(h5, file_, k), {}};
+    for (const auto& grid : children(file_, frame, h5)) {
+      GridRecord g{grid, dims_of(file_, frame + "/" + grid + "/position", h5).front(), {}};
+      for (const auto& field : children(file_, frame + "/" + grid, h5)) {
+        if (field == "position") continue;
+        const auto dims = dims_of(file_, frame + "/" + grid + "/" + field, h5);
+        g.fields.emplace_back(field, dims.size() > 1 ? static_cast<int>(dims[1]) : 1);
+      }
+      record.grids.push_back(std::move(g));
+    }
+    frames_.push_back(std::move(record));
+  }
   check(H5Fflush(file_, H5F_SCOPE_GLOBAL), h5, "flush failed");
   write_xdmf();
 }
@@ -174,14 +248,14 @@ double read_frame_time(const std::filesystem::path& h5, int frame) {
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
   const hid_t file = H5Fopen(h5.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   if (file < 0) throw InputError(h5.string() + ": cannot open HDF5 file");
-  const std::string name = "frames/" + std::to_string(frame);
-  double time = 0.0;
-  const hid_t attr = H5Aopen_by_name(file, name.c_str(), "time", H5P_DEFAULT, H5P_DEFAULT);
-  const herr_t status = attr < 0 ? -1 : H5Aread(attr, H5T_NATIVE_DOUBLE, &time);
-  if (attr >= 0) H5Aclose(attr);
-  H5Fclose(file);
-  if (status < 0) throw InputError(h5.string() + ": no frame " + std::to_string(frame));
-  return time;
+  try {
+    const double time = read_frame_time(h5, file, frame);
+    H5Fclose(file);
+    return time;
+  } catch (...) {
+    H5Fclose(file);
+    throw;
+  }
 }
 
 } // namespace fsi::app

@@ -10,9 +10,14 @@
 // diag(scale) r so that positions, velocities and accelerations are comparable; the update itself
 // is made in the unscaled variables.
 #include <optional>
+#include <string>
 #include <string_view>
 
 #include <Eigen/Core>
+
+namespace fsi {
+class StateArchive;
+}
 
 namespace fsi::coupling {
 
@@ -31,6 +36,10 @@ public:
   virtual void end_step(bool converged) = 0;
   /// Relaxation factor of the last update(); empty if it was not a relaxation x + omega r.
   virtual std::optional<double> relaxation() const = 0;
+  /// Checkpoint of what carries over from one coupling step to the next (keys `prefix` + name);
+  /// read_state() continues bitwise. Called between steps only.
+  virtual void write_state(StateArchive& archive, const std::string& prefix) const = 0;
+  virtual void read_state(const StateArchive& archive, const std::string& prefix) = 0;
 };
 
 } // namespace fsi::coupling

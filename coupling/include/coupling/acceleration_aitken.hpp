@@ -19,6 +19,8 @@ public:
   void update(const Eigen::VectorXd& x, const Eigen::VectorXd& x_tilde,
               Eigen::VectorXd& x_next) override;
   void end_step(bool) override {}
+  void write_state(StateArchive& archive, const std::string& prefix) const override;
+  void read_state(const StateArchive& archive, const std::string& prefix) override;
   std::optional<double> relaxation() const override { return omega_; }
 
 private:

@@ -14,6 +14,9 @@ public:
     x_next = x + omega_ * (x_tilde - x);
   }
   void end_step(bool) override {}
+  /// Nothing carries over between steps.
+  void write_state(StateArchive&, const std::string&) const override {}
+  void read_state(const StateArchive&, const std::string&) override {}
   std::optional<double> relaxation() const override { return omega_; }
 
 private:

@@ -8,9 +8,14 @@
 #include <cstddef>
 #include <functional>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "fsi/core/types.hpp"
+
+namespace fsi {
+class StateArchive;
+}
 
 namespace fsi::coupling {
 
@@ -63,6 +68,11 @@ public:
   virtual void restore_state() = 0;
   /// Largest stable time step [s] if the solver has such a limit (CFL, viscous, ...).
   virtual std::optional<double> stable_dt() const { return std::nullopt; }
+  /// Checkpoint of the whole solver between two steps (everything its next advance() reads), so
+  /// that read_state() continues bitwise. Solvers without checkpoints keep the default, which
+  /// throws RunError (a run asked for a checkpoint this solver cannot give).
+  virtual void write_state(StateArchive& archive) const;
+  virtual void read_state(const StateArchive& archive);
   virtual void finalize() {}
 };
 
@@ -84,6 +94,11 @@ public:
   virtual InterfaceMotion interface_motion() const = 0;
   virtual void save_state() = 0;
   virtual void restore_state() = 0;
+  /// Checkpoint of the whole solver between two steps (everything its next advance() reads), so
+  /// that read_state() continues bitwise. Solvers without checkpoints keep the default, which
+  /// throws RunError (a run asked for a checkpoint this solver cannot give).
+  virtual void write_state(StateArchive& archive) const;
+  virtual void read_state(const StateArchive& archive);
   virtual void finalize() {}
 };
 

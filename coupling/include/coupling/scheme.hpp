@@ -65,6 +65,13 @@ public:
   void advance(double t, double dt);
   void finalize();
 
+  /// Checkpoint between steps: the coupler's own state under "coupling/" (step index, accepted
+  /// interface state, loads, statistics, the acceleration's history) and then each participant's
+  /// (FluidSolver / StructureSolver::write_state). read_state() continues bitwise; it throws
+  /// InputError when the archive does not fit (another interface, another acceleration).
+  void write_state(StateArchive& archive) const;
+  void read_state(const StateArchive& archive);
+
   /// Called after every step with its statistics (the per-step iteration log).
   void set_step_callback(StepCallback callback) { callback_ = std::move(callback); }
   const StepStats& last_step() const { return last_; }
@@ -82,6 +89,9 @@ protected:
   /// Initialise the solvers; return the interface state at t0.
   virtual InterfaceMotion initialize_participants(double t0) = 0;
   virtual void finalize_participants() = 0;
+  /// The participants' checkpoint hooks (write_state / read_state).
+  virtual void write_participants(StateArchive& archive) const = 0;
+  virtual void read_participants(const StateArchive& archive) = 0;
   /// Checkpoint / roll back all participants to t^n (implicit schemes).
   virtual void save_checkpoint() {}
   virtual void restore_checkpoint() {}

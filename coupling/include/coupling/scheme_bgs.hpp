@@ -15,6 +15,14 @@ public:
 protected:
   InterfaceMotion initialize_participants(double t0) override;
   void finalize_participants() override;
+  void write_participants(StateArchive& archive) const override {
+    fluid_.write_state(archive);
+    structure_.write_state(archive);
+  }
+  void read_participants(const StateArchive& archive) override {
+    fluid_.read_state(archive);
+    structure_.read_state(archive);
+  }
   void save_checkpoint() override;
   void restore_checkpoint() override;
   InterfaceMotion evaluate(double t, double dt, const InterfaceMotion& input) override {

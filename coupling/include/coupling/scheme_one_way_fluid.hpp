@@ -14,6 +14,8 @@ public:
 protected:
   InterfaceMotion initialize_participants(double t0) override;
   void finalize_participants() override;
+  void write_participants(StateArchive& archive) const override { fluid_.write_state(archive); }
+  void read_participants(const StateArchive& archive) override { fluid_.read_state(archive); }
   InterfaceMotion first_input(double t, double dt) override { return prescribed_(t + dt); }
   InterfaceMotion evaluate(double t, double dt, const InterfaceMotion& input) override;
   bool has_residual() const override { return false; }

@@ -19,7 +19,12 @@
 #include "geometry_erp/wall_weight.hpp"
 
 #include <memory>
+#include <string>
 #include <vector>
+
+namespace fsi {
+class StateArchive;
+}
 
 namespace fsi::emps {
 
@@ -73,13 +78,21 @@ public:
   State save() const;
   void restore(const State& state);
 
+  /// Checkpoint: everything the next advance() reads (particles with ids, counters, the
+  /// neighbour list's build positions, the reusable wall hits) under keys `prefix` + name, so
+  /// that a run continued from it is bitwise the run that was not interrupted.
+  void write_state(StateArchive& archive, const std::string& prefix) const;
+  /// Throws InputError naming the key when the archive does not fit this fluid.
+  void read_state(const StateArchive& archive, const std::string& prefix);
+
 private:
-  void refresh_neighbours(bool allow_reorder);
+  /// `step` and `t` name the step in progress in messages.
+  void refresh_neighbours(bool allow_reorder, long step, double t);
   void query_walls();
   void viscosity(double dt);
   void density_and_pressure();
   void pressure_gradient(double dt);
-  void check_finite(double t) const;
+  void check_finite(long step, double t) const;
   Vec2 mirror_gradient(std::size_t i, const Vec2& x_wall, const Vec2& n_wall) const;
   Vec2 mirror_laplacian(std::size_t i, const Vec2& x_wall, const Vec2& n_wall,
                         const Vec2& v_wall) const;

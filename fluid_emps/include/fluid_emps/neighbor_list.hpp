@@ -24,6 +24,11 @@ public:
   std::size_t overflow() const { return overflow_; }
   double mean_count() const;
   void invalidate() { built_n_ = 0; }
+  /// Particles of the last valid build (0 after invalidate()) and their positions then: a
+  /// checkpoint stores these, and build() from them gives the same list again.
+  std::size_t built() const { return built_n_; }
+  const std::vector<double>& x_build() const { return x_build_; }
+  const std::vector<double>& y_build() const { return y_build_; }
 
 private:
   std::size_t capacity_ = 0, built_n_ = 0, overflow_ = 0;

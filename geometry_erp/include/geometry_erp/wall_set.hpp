@@ -14,7 +14,12 @@
 #include <array>
 #include <memory>
 #include <span>
+#include <string>
 #include <vector>
+
+namespace fsi {
+class StateArchive;
+}
 
 namespace fsi::erp {
 
@@ -49,6 +54,12 @@ public:
 
   /// Sets x, v, a of every rigid polyline's nodes to the prescribed motion at time t.
   void move_rigid(double t);
+
+  /// Checkpoint of the node states x, v, a (rigid motions are functions of t, FE interface nodes
+  /// are set by the coupler; both are stored as they are). Segments are geometry, not state.
+  void write_state(StateArchive& archive, const std::string& prefix) const;
+  /// Throws InputError when the archive has another node count.
+  void read_state(const StateArchive& archive, const std::string& prefix);
 
   /// Low-level construction (used by FeInterface): one node at rest; one segment a -> b.
   int add_node(const Vec2& x);

@@ -13,6 +13,10 @@
 #include "structure_fem/mesh.hpp"
 #include "structure_fem/newmark.hpp"
 
+namespace fsi {
+class StateArchive;
+}
+
 namespace fsi::fem {
 
 /// Newton–Raphson convergence: iteration k has converged when
@@ -131,6 +135,13 @@ public:
   /// Returns to a saved state; the pending external forces become those of that state, so set
   /// the new forces after restoring.
   void restore(const StructureState& state);
+
+  /// Checkpoint: the state (u, v, a, forces of the last step, time, step, work) and the pending
+  /// external forces, under keys `prefix` + name. Everything advance() reads besides the mesh
+  /// and the options; the linear solver keeps no values between steps.
+  void write_state(StateArchive& archive, const std::string& prefix) const;
+  /// Throws InputError naming the key when the archive has another number of nodes.
+  void read_state(const StateArchive& archive, const std::string& prefix);
 
   /// Von Mises Cauchy stress per node (element nodal values averaged) [Pa].
   Vector von_mises() const;

@@ -4,6 +4,9 @@
 // (to a temporary name, then renamed), so a killed run leaves every finished frame readable and
 // the XDMF names only datasets that exist.
 //
+// A restart reopens the pair, keeps the first frames (those before its checkpoint), deletes the
+// others and rewrites the XDMF; groups track creation order so the index comes out the same.
+//
 // HDF5 layout:
 //   /meshes/<grid>/t6            int64 [elements x 6], written once per mesh grid
 //   /frames/<k>                  attribute `time` (s)
@@ -28,6 +31,9 @@ class FieldsFile {
 public:
   /// Creates (truncates) `h5` and writes `xmf` beside it.
   FieldsFile(const std::filesystem::path& h5, const std::filesystem::path& xmf);
+  /// Reopens the pair of an earlier run and keeps its first `keep_frames` frames (a restart).
+  /// Throws InputError when the file is missing or has fewer frames.
+  FieldsFile(const std::filesystem::path& h5, const std::filesystem::path& xmf, int keep_frames);
   ~FieldsFile();
   FieldsFile(const FieldsFile&) = delete;
   FieldsFile& operator=(const FieldsFile&) = delete;
@@ -74,5 +80,7 @@ struct Dataset {
 };
 Dataset read_dataset(const std::filesystem::path& h5, const std::string& name);
 double read_frame_time(const std::filesystem::path& h5, int frame);
+/// The same from an open HDF5 file id.
+double read_frame_time(const std::filesystem::path& h5, std::int64_t file, int frame);
 
 } // namespace fsi::app

@@ -10,7 +10,12 @@ namespace fsi::app {
 
 class ProbesCsv {
 public:
+  /// Creates the file with its header.
   ProbesCsv(const std::filesystem::path& file, const std::vector<std::string>& names);
+  /// Continues an existing file after its first `rows` rows (a restart); throws InputError when
+  /// its header names other probes or it has fewer rows.
+  ProbesCsv(const std::filesystem::path& file, const std::vector<std::string>& names,
+            std::size_t rows);
   void row(double time, const std::vector<double>& values);
 
 private:
