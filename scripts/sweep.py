@@ -148,9 +148,11 @@ def pareto_png(points, path, title):
             front.append((wall, 100 * error))
             best = error
     if front:
-        ax.step(*zip(*front), where="post", color="k", alpha=0.4, label="Pareto front")
-        ax.legend(fontsize=8)
+        ax.step(*zip(*front), where="post", color="k", alpha=0.4)
+        ax.plot(*zip(*front), "s", mfc="none", ms=11, color="k", label="Pareto front")
+        ax.legend(fontsize=8, loc="lower right")
     ax.set_xscale("log")
+    ax.margins(x=0.3, y=0.1)
     ax.set_xlabel("wall time (s, 1 thread)")
     ax.set_ylabel("error vs reference (%)")
     ax.set_title(title, fontsize=9)
