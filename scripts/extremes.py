@@ -1,13 +1,13 @@
 """Stability of the coupled dam break with an elastic obstacle at the extremes (issue 7).
 
 Short runs of data/scenes/dam_break_elastic_obstacle.yaml (coarse, to --end): the obstacle 100x
-stiffer and 10x softer, structure/fluid density ratio 1 and 0.5, Courant numbers 0.05-0.5 (the
+stiffer and 10x softer, structure/fluid density ratio 1 down to 0.01, Courant numbers 0.05-0.5 (the
 coupled scene has a fixed dt, so dt = C l0 / c), the coarsest and a finer resolution, each with
-several coupling schemes. Every case runs `fsi run` (--threads 1, two at a time) into OUT/CASE
-and reports `completed` or how it stopped: the run's exit status and run.json message (or the
-last line of its output when it left no run.json), or `timed out` past --timeout. A case with a
-run.json or a timeout marker is not run again, so the script resumes. The stability map goes to
-OUT/table.md and, with --doc, into a `<!-- sweep:NAME begin/end -->` block of a Markdown file.
+several coupling schemes. Every case runs `fsi run` (--threads 1, two at a time) into OUT/CASE and
+reports `completed` or how it stopped: the run's exit status and run.json message (or the last line
+of its output when it left no run.json), or `timed out` past --timeout. A case with a run.json or a
+timeout marker is not run again, so the script resumes. The stability map goes to OUT/table.md and,
+with --doc, into a `<!-- sweep:NAME begin/end -->` block of a Markdown file.
 """
 import argparse
 import concurrent.futures
@@ -35,10 +35,15 @@ def conditions(l0, dt, fine_l0, fine_dt):
         ("E_x0.1", base + at + [f"structures[0].material.youngs_modulus={0.1 * E:g}"], few),
         ("rho_ratio_1", base + at + ["structures[0].material.density=1000"], few),
         ("rho_ratio_0.5", base + at + ["structures[0].material.density=500"], list(SCHEMES)),
+        ("rho_ratio_0.1", base + at + ["structures[0].material.density=100"], few),
+        ("rho_ratio_0.01", base + at + ["structures[0].material.density=10"], few),
     ]
     for courant in (0.05, 0.2, 0.5):
         dt_c = courant * l0 / SOUND_SPEED
         out.append((f"courant_{courant}", base + [f"time.dt={dt_c:.3g}"], few))
+    dt_c = 0.5 * l0 / SOUND_SPEED
+    out.append(("rho_ratio_0.1_courant_0.5",
+                base + [f"time.dt={dt_c:.3g}", "structures[0].material.density=100"], few))
     out.append(("fine", [f"fluid.l0={fine_l0}", f"time.dt={fine_dt}"], few))
     return out
 
