@@ -42,8 +42,9 @@ def conditions(l0, dt, fine_l0, fine_dt):
         dt_c = courant * l0 / SOUND_SPEED
         out.append((f"courant_{courant}", base + [f"time.dt={dt_c:.3g}"], few))
     dt_c = 0.5 * l0 / SOUND_SPEED
-    out.append(("rho_ratio_0.1_courant_0.5",
-                base + [f"time.dt={dt_c:.3g}", "structures[0].material.density=100"], few))
+    for ratio in (0.1, 0.01):
+        out.append((f"rho_ratio_{ratio}_courant_0.5", base + [
+            f"time.dt={dt_c:.3g}", f"structures[0].material.density={1000 * ratio:g}"], few))
     out.append(("fine", [f"fluid.l0={fine_l0}", f"time.dt={fine_dt}"], few))
     return out
 
