@@ -7,6 +7,7 @@
 #include "structure_fem/loads.hpp"
 
 #include <catch2/catch.hpp>
+#include <cmath>
 
 using namespace fsi;
 using namespace fsi::app;
