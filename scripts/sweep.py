@@ -1,0 +1,229 @@
+"""Speed-accuracy sweep of a coupled scene (issue 7): resolution, coupling scheme, time step.
+
+Each case is one `fsi run` (--threads 1, two cases at a time by default) into OUT/CASE; a case
+whose run.json says `completed` is not run again, so an interrupted sweep resumes. The table
+(wall seconds, steps, coupling iterations, error against the scene's reference figure) goes to
+OUT/table.md and, with --doc, between `<!-- sweep:NAME begin/end -->` markers of a Markdown
+file; the error against wall time goes to a PNG (the Pareto front).
+"""
+import argparse
+import concurrent.futures
+import json
+import os
+import subprocess
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+# What each scene is measured by. The dam break: the upper-left corner's largest rightward
+# deflection against the centre of the published band 0.040-0.055 m (issue 7). The plate: the
+# mean mid-span deflection over the last 0.5 s against the analytic -6.85e-5 m.
+SCENES = {
+    "dam_break": {
+        "file": "data/scenes/dam_break_elastic_obstacle.yaml",
+        "probe": "corner_x",
+        "metric": "max",
+        "reference": 0.0475,
+        "what": "largest corner_x vs 0.0475 m (centre of 0.040-0.055 m)",
+    },
+    "hydrostatic_plate": {
+        "file": "data/scenes/hydrostatic_plate.yaml",
+        "probe": "mid_span",
+        "metric": "mean_last_0.5",
+        "reference": -6.85e-5,
+        "what": "mean mid_span over the last 0.5 s vs -6.85e-5 m",
+    },
+}
+
+# Coupling variants: name -> scene overrides.
+SCHEMES = {
+    "css": ["coupling.scheme=css", "coupling.predictor=none"],
+    "css_pred": ["coupling.scheme=css", "coupling.predictor=second_order"],
+    "bgs_none": ["coupling.scheme=bgs", "coupling.acceleration=none"],
+    "bgs_constant": ["coupling.scheme=bgs", "coupling.acceleration=constant"],
+    "bgs_aitken": ["coupling.scheme=bgs", "coupling.acceleration=aitken"],
+    "bgs_iqn": ["coupling.scheme=bgs", "coupling.acceleration=iqn-ils"],
+}
+
+
+def read_probe(path, name):
+    with open(path) as f:
+        header = f.readline().strip().split(",")
+        col = header.index(name)
+        rows = [line.strip().split(",") for line in f if line.strip()]
+    return [float(r[0]) for r in rows], [float(r[col]) for r in rows]
+
+
+def measure(scene, case_dir):
+    """(value, time of value or None) of the scene's figure from probes.csv."""
+    t, v = read_probe(os.path.join(case_dir, "probes.csv"), scene["probe"])
+    if scene["metric"] == "max":
+        k = max(range(len(v)), key=v.__getitem__)
+        return v[k], t[k]
+    last = [x for s, x in zip(t, v) if s >= t[-1] - 0.5 - 1e-9]
+    return sum(last) / len(last), None
+
+
+def cases(args):
+    """(name, overrides) of the plan: CSS over the levels (dt proportional to l0), every
+    coupling variant at the middle level, and CSS at the middle level with dt scaled."""
+    levels = [float(x) for x in args.levels.split(",")]
+    dts = [float(x) for x in args.dts.split(",")]
+    if len(levels) != len(dts):
+        sys.exit("sweep: --levels and --dts need the same number of entries")
+    common = [f"time.end={args.end}"] + args.set
+    out = []
+
+    def add(name, l0, dt, scheme):
+        out.append((name, common + [f"fluid.l0={l0}", f"time.dt={dt}"] + SCHEMES[scheme]))
+
+    for l0, dt in zip(levels, dts):
+        add(f"l0_{l0:g}_dt_{dt:g}_css", l0, dt, "css")
+    mid = len(levels) // 2
+    for scheme in args.schemes.split(","):
+        if scheme != "css":
+            add(f"l0_{levels[mid]:g}_dt_{dts[mid]:g}_{scheme}", levels[mid], dts[mid], scheme)
+    for factor in [float(x) for x in args.dt_factors.split(",") if x]:
+        dt = dts[mid] * factor
+        add(f"l0_{levels[mid]:g}_dt_{dt:g}_css", levels[mid], dt, "css")
+    return out
+
+
+def status(case_dir):
+    try:
+        with open(os.path.join(case_dir, "run.json")) as f:
+            return json.load(f)
+    except (OSError, ValueError):
+        return None
+
+
+def run_case(fsi, scene_file, out, name, overrides):
+    case_dir = os.path.join(out, name)
+    done = status(case_dir)
+    if done and done.get("status") == "completed":
+        return name, "skipped (completed before)"
+    cmd = [fsi, "run", os.path.join(ROOT, scene_file), "--out", case_dir, "--threads", "1"]
+    for o in overrides:
+        cmd += ["--set", o]
+    with open(case_dir + ".log", "w") as log:
+        code = subprocess.call(cmd, stdout=log, stderr=subprocess.STDOUT)
+    return name, f"exit {code}"
+
+
+def row(scene, out, name, overrides):
+    r = status(os.path.join(out, name))
+    settings = ", ".join(o for o in overrides if not o.startswith("time.end="))
+    if r is None:
+        return None, f"| {name} | {settings} | not run | | | | | |"
+    c = r.get("coupling", {})
+    iters = f"{c.get('iterations_mean', 0):.2f} / {c.get('iterations_max', 0)}"
+    if c.get("unconverged_steps"):
+        iters += f" ({c['unconverged_steps']} unconverged)"
+    if r["status"] != "completed":
+        msg = r.get("message", "").replace("|", "/")
+        return None, (f"| {name} | {settings} | failed at t = {r['simulated_time']:.4g} s: {msg} "
+                      f"| {r['wall_seconds']:.0f} | {r['steps']} | {iters} | | |")
+    value, when = measure(scene, os.path.join(out, name))
+    error = abs(value - scene["reference"]) / abs(scene["reference"])
+    at = f" at {when:.3f} s" if when is not None else ""
+    point = (r["wall_seconds"], error, name)
+    return point, (f"| {name} | {settings} | completed | {r['wall_seconds']:.0f} | {r['steps']} | "
+                   f"{iters} | {value:.4g}{at} | {100 * error:.1f} % |")
+
+
+def pareto_png(points, path, title):
+    fig, ax = plt.subplots(figsize=(7, 4.5))
+    for wall, error, name in points:
+        ax.plot(wall, 100 * error, "o")
+        ax.annotate(name, (wall, 100 * error), fontsize=7, xytext=(3, 3),
+                    textcoords="offset points")
+    front, best = [], float("inf")
+    for wall, error, _ in sorted(points):
+        if error < best:
+            front.append((wall, 100 * error))
+            best = error
+    if front:
+        ax.step(*zip(*front), where="post", color="k", alpha=0.4)
+        ax.plot(*zip(*front), "s", mfc="none", ms=11, color="k", label="Pareto front")
+        ax.legend(fontsize=8, loc="lower right")
+    ax.set_xscale("log")
+    ax.margins(x=0.3, y=0.1)
+    ax.set_xlabel("wall time (s, 1 thread)")
+    ax.set_ylabel("error vs reference (%)")
+    ax.set_title(title, fontsize=9)
+    ax.grid(True, alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(path, dpi=100)
+
+
+def write_doc(path, section, text):
+    begin, end = f"<!-- sweep:{section} begin -->", f"<!-- sweep:{section} end -->"
+    with open(path) as f:
+        doc = f.read()
+    block = f"{begin}\n{text}{end}"
+    if begin in doc and end in doc:
+        doc = doc[: doc.index(begin)] + block + doc[doc.index(end) + len(end):]
+    else:
+        doc = doc.rstrip("\n") + "\n\n" + block + "\n"
+    with open(path, "w") as f:
+        f.write(doc)
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__,
+                                formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("scene", choices=sorted(SCENES))
+    p.add_argument("out", help="output directory (one subdirectory per case)")
+    p.add_argument("--levels", default="5.84e-3,4.13e-3,2.92e-3", help="l0 values, m")
+    p.add_argument("--dts", default="1e-5,7e-6,5e-6", help="time step per level, s")
+    p.add_argument("--end", type=float, default=0.3, help="end time, s")
+    p.add_argument("--schemes", default=",".join(SCHEMES), help="variants at the middle level")
+    p.add_argument("--dt-factors", default="2,4", help="CSS at the middle level with dt x these")
+    p.add_argument("--set", action="append", default=[], help="extra scene override for all")
+    p.add_argument("--jobs", type=int, default=2, help="cases run at once (1 thread each)")
+    p.add_argument("--png", help="error-vs-wall-time plot (default OUT/pareto.png)")
+    p.add_argument("--doc", help="Markdown file whose sweep:NAME block gets the table")
+    p.add_argument("--name", help="block name in --doc (default: the scene)")
+    p.add_argument("--dry-run", action="store_true", help="list the cases and stop")
+    args = p.parse_args()
+
+    scene = SCENES[args.scene]
+    fsi = os.path.join(os.environ.get("BUILD_DIR", os.path.join(ROOT, "build")), "apps", "fsi")
+    plan = cases(args)
+    if args.dry_run:
+        for name, overrides in plan:
+            print(name, " ".join(overrides))
+        return
+    os.makedirs(args.out, exist_ok=True)
+    with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
+        jobs = [pool.submit(run_case, fsi, scene["file"], args.out, n, o) for n, o in plan]
+        for job in concurrent.futures.as_completed(jobs):
+            name, what = job.result()
+            print(f"sweep: {name}: {what}", flush=True)
+
+    lines = ["| case | settings | result | wall s | steps | iterations mean / max | "
+             f"figure | error |", "|---|---|---|---|---|---|---|---|"]
+    points = []
+    for name, overrides in plan:
+        point, line = row(scene, args.out, name, overrides)
+        lines.append(line)
+        if point:
+            points.append(point)
+    png = args.png or os.path.join(args.out, "pareto.png")
+    pareto_png(points, png, f"{args.scene}: {scene['what']}, to t = {args.end} s")
+    table = "\n".join(lines) + "\n"
+    with open(os.path.join(args.out, "table.md"), "w") as f:
+        f.write(table)
+    print(table, end="")
+    print(f"sweep: plot {png}")
+    if args.doc:
+        write_doc(args.doc, args.name or args.scene, table)
+
+
+if __name__ == "__main__":
+    main()
