@@ -2,6 +2,7 @@
 
 #include "coupling/registry.hpp"
 #include "fsi/core/error.hpp"
+#include "fsi_app/output/interface_history.hpp"
 #include "fsi_app/output/text_file.hpp"
 
 namespace fsi::app {
@@ -35,6 +36,35 @@ const StructureSpec& coupled_structure(const Scene& scene) {
 
 } // namespace
 
+// The fluid adapter as the coupler sees it, keeping the last wall motion it was given: what
+// interface.h5 records as the motion of the step.
+class CoupledModel::FluidTap final : public coupling::FluidSolver {
+public:
+  explicit FluidTap(coupling::FluidSolver& fluid) : fluid_(fluid) {}
+  void initialize() override { fluid_.initialize(); }
+  void set_interface_motion(const coupling::InterfaceMotion& m) override {
+    motion_ = m;
+    fluid_.set_interface_motion(m);
+  }
+  void advance(double t, double dt) override { fluid_.advance(t, dt); }
+  const coupling::InterfaceLoads& interface_loads() const override {
+    return fluid_.interface_loads();
+  }
+  void save_state() override { fluid_.save_state(); }
+  void restore_state() override { fluid_.restore_state(); }
+  std::optional<double> stable_dt() const override { return fluid_.stable_dt(); }
+  void finalize() override { fluid_.finalize(); }
+  void write_state(StateArchive& archive) const override { fluid_.write_state(archive); }
+  void read_state(const StateArchive& archive) override { fluid_.read_state(archive); }
+  const coupling::InterfaceMotion& motion() const { return motion_; }
+
+private:
+  coupling::FluidSolver& fluid_;
+  coupling::InterfaceMotion motion_;
+};
+
+CoupledModel::~CoupledModel() = default;
+
 CoupledModel::CoupledModel(const Scene& scene) {
   const StructureSpec& spec = coupled_structure(scene);
   structure_ = std::make_unique<StructureModel>(scene, spec);
@@ -44,8 +74,28 @@ CoupledModel::CoupledModel(const Scene& scene) {
   structure_adapter_ =
       std::make_unique<StructureAdapter>(structure_->structure(), *fluid_->fe_interface());
   const CouplingSpec c = scene.coupling.value_or(CouplingSpec{"css", "none", "aitken"});
+  tap_ = std::make_unique<FluidTap>(*fluid_adapter_);
+  record_ = c.record_interface;
+  coupling::Participants p;
+  if (c.scheme != "one_way_structure") p.fluid = tap_.get();
+  if (c.scheme != "one_way_fluid") p.structure = structure_adapter_.get();
+  if (c.scheme == "one_way_fluid" || c.scheme == "one_way_structure") {
+    const bool motion = c.scheme == "one_way_fluid";
+    replay_ = std::make_unique<InterfaceHistory>(motion ? c.motion : c.loads);
+    const auto nodes = static_cast<std::size_t>(fluid_->fe_interface()->node_count());
+    if (replay_->nodes() != nodes)
+      fail_at(scene, c.line, motion ? "coupling.motion" : "coupling.loads",
+              (motion ? c.motion : c.loads).string() + " records " +
+                  std::to_string(replay_->nodes()) + " interface nodes, this interface has " +
+                  std::to_string(nodes));
+    InterfaceHistory* h = replay_.get();
+    if (motion)
+      p.prescribed_motion = [h](double t) { return h->motion_at(t); };
+    else
+      p.prescribed_loads = [h](double t) { return h->loads_at(t); };
+  }
   try {
-    scheme_ = coupling::make_scheme(coupling_options(c), *fluid_adapter_, *structure_adapter_);
+    scheme_ = coupling::make_scheme(coupling_options(c), p);
   } catch (const InputError& e) {
     fail_at(scene, c.line, "coupling", e.what());
   }
@@ -54,9 +104,23 @@ CoupledModel::CoupledModel(const Scene& scene) {
 
 void CoupledModel::advance(double time, double dt) {
   scheme_->advance(time, dt);
+  // The motion the fluid used (one_way_structure: the structure's, there is no fluid).
+  if (history_)
+    history_->append(time + dt,
+                     scheme_->name() == "one_way_structure" ? scheme_->interface_motion()
+                                                            : tap_->motion(),
+                     scheme_->interface_loads());
 }
 
 void CoupledModel::open_logs(const std::filesystem::path& out, bool resume) {
+  if (record_ && resume)
+    throw InputError("coupling.record_interface: a restarted run cannot continue "
+                     "interface.h5; run without --restart or without record_interface");
+  if (record_) {
+    history_ = std::make_unique<InterfaceHistoryWriter>(out / "interface.h5",
+                                                        scheme_->interface_motion().size());
+    history_->append(0.0, scheme_->interface_motion(), scheme_->interface_loads());
+  }
   const std::filesystem::path file = out / "coupling.csv";
   if (resume) // the header and one row per step before the checkpoint
     keep_lines(file, 1 + static_cast<std::size_t>(scheme_->summary().steps));

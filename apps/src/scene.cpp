@@ -1,6 +1,7 @@
 #include "fsi_app/scene.hpp"
 
 #include "fsi/core/error.hpp"
+#include "fsi_app/output/interface_history.hpp"
 #include "fsi_app/overrides.hpp"
 #include "fsi_app/scene_reader.hpp"
 
@@ -268,11 +269,42 @@ StructureSpec read_structure(Section s) {
   return st;
 }
 
-CouplingSpec read_coupling(Section s) {
+// Recording and one-way replay: the replayed file must cover every step of the run.
+void read_one_way(Section& s, const TimeSpec& time, CouplingSpec& c) {
+  const bool doc = s.context().documenting();
+  c.record_interface = s.boolean("record_interface", false,
+                                 "write DIR/interface.h5: per step the interface motion the fluid "
+                                 "used and the loads the structure took");
+  auto recorded = [&](const std::string& key, const std::string& scheme, const std::string& what) {
+    if (!doc && c.scheme != scheme && s.has(key)) s.fail(key, "only for scheme " + scheme);
+    if (!doc && c.scheme != scheme) return std::filesystem::path();
+    const auto path = s.file(key, scheme + ": interface.h5 of a recorded run, its " + what +
+                                      " interpolated linearly in time");
+    if (doc) return path;
+    const double step = time.dt.value_or(time.end);
+    const double needed = std::ceil(time.end / step - 1e-9) * step; // the run's last step end
+    std::ostringstream problem;
+    try {
+      const InterfaceHistory h(path);
+      if (h.first_time() > 0.0 || h.last_time() < needed * (1.0 - 1e-12))
+        problem << path.string() << ": records t = " << h.first_time() << " .. " << h.last_time()
+                << " s, the run needs 0 .. " << needed << " s";
+    } catch (const InputError& e) {
+      problem << e.what();
+    }
+    if (!problem.str().empty()) s.fail(key, problem.str());
+    return path;
+  };
+  c.motion = recorded("motion", "one_way_fluid", "interface motion");
+  c.loads = recorded("loads", "one_way_structure", "interface loads");
+}
+
+CouplingSpec read_coupling(Section s, const TimeSpec& time) {
   CouplingSpec c;
   c.line = s.line();
-  c.scheme = s.choice("scheme", {"css", "bgs"}, "css",
-                      "conventional serial staggered, or block Gauss-Seidel iterations (eq. 69)");
+  c.scheme = s.choice("scheme", {"css", "bgs", "one_way_fluid", "one_way_structure"}, "css",
+                      "conventional serial staggered, block Gauss-Seidel iterations (eq. 69), the "
+                      "fluid against a recorded motion, or the structure under recorded loads");
   c.predictor = s.choice("predictor", {"none", "second_order"}, "none",
                          "interface predictor for CSS (eqs. 63-65)");
   c.acceleration = s.choice("acceleration", {"none", "constant", "aitken", "iqn-ils"}, "aitken",
@@ -286,6 +318,7 @@ CouplingSpec read_coupling(Section s) {
   c.stop_on_unconverged =
       s.boolean("stop_on_unconverged", false, "stop the run at the first unconverged BGS step");
   c.substeps = s.integer("substeps", 1, Range::closed(1, 10000), "fluid steps per structure step");
+  read_one_way(s, time, c);
   s.finish();
   return c;
 }
@@ -384,7 +417,7 @@ Scene read_scene(Section top) {
   auto structure_sections = top.list("structures", "FE structures (T6, St. Venant-Kirchhoff)");
   for (auto& st : structure_sections) scene.structures.push_back(read_structure(st));
   if (auto c = top.block("coupling", "partitioned coupling; needs fluid and structures"))
-    scene.coupling = read_coupling(*c);
+    scene.coupling = read_coupling(*c, scene.time);
   if (auto c = top.block("checkpoint", "periodic checkpoints for fsi run --restart; absent: "
                                        "only on SIGINT/SIGTERM (docs/reliability.md)"))
     scene.checkpoint = read_checkpoint_spec(*c);

@@ -1,5 +1,8 @@
 #pragma once
-// A fluid and one structure coupled through the scene's coupling scheme (css or bgs).
+// A fluid and one structure coupled through the scene's coupling scheme (css or bgs), or one of
+// them alone against a recorded interface.h5 (one_way_fluid: the fluid against the recorded
+// motion, the structure not solved; one_way_structure: the structure under the recorded loads,
+// the fluid not solved). The part not solved stays at its initial state in fields and probes.
 #include "coupling/scheme.hpp"
 #include "fsi_app/adapters.hpp"
 #include "fsi_app/fluid_model.hpp"
@@ -10,14 +13,22 @@
 
 namespace fsi::app {
 
+class InterfaceHistory;
+class InterfaceHistoryWriter;
+
 class CoupledModel final : public Model {
 public:
   /// Throws InputError (scene file and line) for a structure without interface tags, more than
   /// one structure, or coupling options the scheme rejects.
+  /// one_way_*: InputError (`FILE:LINE: coupling.motion|loads: what`) for a recorded file whose
+  /// node count differs from the interface's.
   explicit CoupledModel(const Scene& scene);
+  ~CoupledModel() override;
   void advance(double time, double dt) override;
   /// DIR/coupling.csv: one row per coupling step (iterations, residuals of eq. 68, relaxation,
-  /// convergence, wall times), flushed every 1000 rows and at the end.
+  /// convergence, wall times), flushed every 1000 rows and at the end. With
+  /// coupling.record_interface also DIR/interface.h5 (row 0 at t = 0, then one row per step;
+  /// not continued across a restart: refused with InputError).
   void open_logs(const std::filesystem::path& out, bool resume) override;
   void flush_logs() override;
   void declare(FieldsFile& file) const override { structure_->declare(file); }
@@ -40,6 +51,12 @@ private:
   std::unique_ptr<StructureAdapter> structure_adapter_;
   std::unique_ptr<coupling::CouplingScheme> scheme_;
   std::unique_ptr<std::ofstream> step_log_;
+  // Recording and one-way replay.
+  class FluidTap;
+  std::unique_ptr<FluidTap> tap_; ///< the fluid adapter, remembering the motion it was given
+  std::unique_ptr<InterfaceHistory> replay_;
+  std::unique_ptr<InterfaceHistoryWriter> history_;
+  bool record_ = false;
 };
 
 } // namespace fsi::app

@@ -99,7 +99,7 @@ struct StructureSpec {
 };
 
 struct CouplingSpec {
-  std::string scheme;       ///< css | bgs
+  std::string scheme;       ///< css | bgs | one_way_fluid | one_way_structure
   std::string predictor;    ///< none | second_order
   std::string acceleration; ///< none | constant | aitken | iqn-ils
   double tolerance = 1e-4;  ///< eq. 69
@@ -109,6 +109,10 @@ struct CouplingSpec {
   bool stop_on_unconverged = false;
   int substeps = 1; ///< fluid steps per structure step
   int line = 0;     ///< scene line of the block
+  // Recording and one-way replay (interface.h5, see output/interface_history.hpp).
+  bool record_interface = false;  ///< write DIR/interface.h5
+  std::filesystem::path motion{}; ///< one_way_fluid: the recorded interface motion
+  std::filesystem::path loads{};  ///< one_way_structure: the recorded interface loads
 };
 
 /// Periodic checkpoints (docs/reliability.md): DIR/checkpoint_<step>.h5 after every
