@@ -26,6 +26,8 @@ std::shared_ptr<const erp::Motion> make_motion(const Scene& scene, const WallSpe
   return std::make_shared<erp::TableRotation>(m.table.string(), m.table_scale);
 }
 
+} // namespace
+
 emps::FluidOptions fluid_options(const Scene& scene) {
   const FluidSpec& f = *scene.fluid;
   emps::FluidOptions o;
@@ -57,8 +59,6 @@ emps::FluidOptions fluid_options(const Scene& scene) {
   }
   return o;
 }
-
-} // namespace
 
 FluidModel::FluidModel(const Scene& scene, const fem::Mesh* structure,
                        const std::vector<std::string>& interface_tags)

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <yaml-cpp/depthguard.h>
 
 namespace fsi::app {
 
@@ -54,6 +55,9 @@ void apply_override(YAML::Node& root, const std::string& text, ReadContext& ctx)
   YAML::Node value;
   try {
     value = YAML::Load(value_text);
+  } catch (const YAML::DeepRecursion& e) {
+    throw InputError("--set " + text + ": " + path + ": value nested too deeply (" +
+                     std::to_string(e.depth()) + " levels)");
   } catch (const YAML::Exception& e) {
     throw InputError("--set " + text + ": " + path + ": value is not valid YAML: " + e.msg);
   }

@@ -3,12 +3,16 @@
 #include "fsi/core/error.hpp"
 #include "fsi_app/output/interface_history.hpp"
 #include "fsi_app/overrides.hpp"
+#include "fsi_app/resources.hpp"
 #include "fsi_app/scene_reader.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <iterator>
 #include <set>
 #include <sstream>
+#include <yaml-cpp/depthguard.h>
 
 namespace fsi::app {
 
@@ -411,7 +415,8 @@ Scene read_scene(Section top) {
   std::vector<Section> probe_sections;
   scene.output = read_output(top.required_block("output", "what is written, and how often"),
                              scene.time.end, probe_sections);
-  if (auto f = top.block("fluid", "EMPS fluid; absent: no fluid")) scene.fluid = read_fluid(*f);
+  const auto fluid_section = top.block("fluid", "EMPS fluid; absent: no fluid");
+  if (fluid_section) scene.fluid = read_fluid(*fluid_section);
   for (auto& w : top.list("walls", "polygon walls (ERP), static or with prescribed motion"))
     scene.walls.push_back(read_wall(w));
   auto structure_sections = top.list("structures", "FE structures (T6, St. Venant-Kirchhoff)");
@@ -422,7 +427,10 @@ Scene read_scene(Section top) {
                                        "only on SIGINT/SIGTERM (docs/reliability.md)"))
     scene.checkpoint = read_checkpoint_spec(*c);
   top.finish();
-  if (!ctx.documenting()) cross_check(top, scene, structure_sections, probe_sections);
+  if (!ctx.documenting()) {
+    cross_check(top, scene, structure_sections, probe_sections);
+    check_resources(scene, fluid_section, structure_sections, available_memory());
+  }
   return scene;
 }
 
@@ -433,19 +441,28 @@ void fail_at(const Scene& scene, int line, const std::string& key, const std::st
 }
 
 Scene load_scene(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw InputError(file.string() + ": cannot open scene file");
+  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  return parse_scene(text, file, overrides);
+}
+
+Scene parse_scene(const std::string& text, const std::filesystem::path& file,
+                  const std::vector<std::string>& overrides) {
   ReadContext ctx;
   ctx.file = file.string();
   ctx.dir = file.parent_path();
   YAML::Node root;
   try {
-    root = YAML::LoadFile(file.string());
-  } catch (const YAML::BadFile&) {
-    throw InputError(file.string() + ": cannot open scene file");
+    root = YAML::Load(text);
+  } catch (const YAML::DeepRecursion& e) {
+    throw InputError(file.string() + ":" + std::to_string(e.mark.line + 1) +
+                     ": yaml: nested too deeply (" + std::to_string(e.depth()) + " levels)");
   } catch (const YAML::ParserException& e) {
     throw InputError(file.string() + ":" + std::to_string(e.mark.line + 1) + ": yaml: " + e.msg);
   }
   if (!root.IsMap()) throw InputError(file.string() + ":1: scene: expected a block of keys");
-  for (const auto& text : overrides) apply_override(root, text, ctx);
+  for (const auto& o : overrides) apply_override(root, o, ctx);
   Scene scene = read_scene(Section(root, "", ctx));
   scene.path = file;
   scene.overrides = overrides;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <charconv>
+#include <cmath>
 #include <fstream>
 #include <map>
 #include <set>
@@ -14,12 +15,14 @@ namespace fsi::fem {
 
 namespace {
 
+/// Largest integer accepted anywhere (tags, counts): far beyond any real mesh, small enough that
+/// no count or sign flip overflows.
+constexpr long kLargest = 1L << 40;
+
 /// Whitespace-separated tokens of a text file, with the line each came from.
 class Lexer {
 public:
-  explicit Lexer(std::string path) : path_(std::move(path)) {
-    std::ifstream in(path_);
-    if (!in) throw InputError(path_ + ": cannot open the mesh file");
+  Lexer(std::istream& in, std::string path) : path_(std::move(path)) {
     for (std::string line; std::getline(in, line);) lines_.push_back(line);
   }
   int line() const { return static_cast<int>(line_) + 1; }
@@ -47,6 +50,7 @@ public:
     const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
     if (ec != std::errc() || end != t.data() + t.size())
       fail("expected an integer for " + what + ", found \"" + t + "\"");
+    if (v < -kLargest || v > kLargest) fail(what + " " + t + " is out of range");
     return v;
   }
   double real(const std::string& what) {
@@ -54,10 +58,10 @@ public:
     try {
       std::size_t used = 0;
       const double v = std::stod(t, &used);
-      if (used == t.size()) return v;
+      if (used == t.size() && std::isfinite(v)) return v;
     } catch (const std::exception&) {
     }
-    fail("expected a number for " + what + ", found \"" + t + "\"");
+    fail("expected a finite number for " + what + ", found \"" + t + "\"");
   }
   /// The unread rest of the current line (used for quoted names).
   std::string rest_of_line() {
@@ -106,7 +110,14 @@ struct RawLine {
 } // namespace
 
 Mesh read_gmsh(const std::string& path, const std::vector<std::string>& required_groups) {
-  Lexer lex(path);
+  std::ifstream in(path);
+  if (!in) throw InputError(path + ": cannot open the mesh file");
+  return read_gmsh(in, path, required_groups);
+}
+
+Mesh read_gmsh(std::istream& in, const std::string& path,
+               const std::vector<std::string>& required_groups) {
+  Lexer lex(in, path);
   lex.expect("$MeshFormat");
   const std::string version = lex.token("the format version");
   if (version != "4.1") lex.fail("unsupported .msh version " + version + ", need 4.1");

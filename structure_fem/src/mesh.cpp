@@ -76,7 +76,7 @@ void validate_mesh(const Mesh& mesh, const MeshSourceLines& lines) {
   // Duplicate nodes: same coordinates up to 1e-10 of the bounding-box diagonal.
   Vec2 lo = mesh.X[0], hi = mesh.X[0];
   for (const auto& x : mesh.X) lo = lo.cwiseMin(x), hi = hi.cwiseMax(x);
-  const double diag = (hi - lo).norm();
+  const double diag = std::hypot(hi.x() - lo.x(), hi.y() - lo.y()); // no overflow at 1e160 m
   const double tol = 1e-10 * diag;
   std::vector<std::size_t> order(n_nodes);
   std::iota(order.begin(), order.end(), std::size_t{0});
@@ -96,6 +96,9 @@ void validate_mesh(const Mesh& mesh, const MeshSourceLines& lines) {
     for (std::size_t k = 0; k < 6; ++k)
       X[k] = mesh.X[static_cast<std::size_t>(mesh.elements[e][k])];
     const double area = t6_area(X);
+    if (!std::isfinite(area))
+      throw InputError(where(mesh, lines.element_line, e) + element_name(e) +
+                       ": area is not a finite number (coordinates too large)");
     if (std::abs(area) <= 1e-12 * diag * diag)
       throw InputError(where(mesh, lines.element_line, e) + element_name(e) +
                        ": zero-area element");

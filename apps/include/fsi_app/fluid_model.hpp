@@ -10,6 +10,10 @@
 
 namespace fsi::app {
 
+/// The solver options of the scene's fluid block; without a domain, the box around walls and
+/// regions with a margin of 4 r_e.
+emps::FluidOptions fluid_options(const Scene& scene);
+
 class FluidModel final : public Model {
 public:
   /// Builds walls, fills the regions with particles and maps the options. A coupled structure's

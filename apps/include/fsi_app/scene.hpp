@@ -146,6 +146,11 @@ struct Scene {
 /// Throws fsi::InputError (`FILE:LINE: KEY: what`) on the first problem.
 Scene load_scene(const std::filesystem::path& file, const std::vector<std::string>& overrides);
 
+/// The same for scene text already in memory; `file` names it in messages and relative paths
+/// resolve against its directory.
+Scene parse_scene(const std::string& text, const std::filesystem::path& file,
+                  const std::vector<std::string>& overrides);
+
 /// The scene-file reference (Markdown), generated from the same declarations load_scene uses.
 std::string scene_reference();
 

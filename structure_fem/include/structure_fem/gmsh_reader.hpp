@@ -1,5 +1,6 @@
 #pragma once
 // Gmsh .msh 4.1 ASCII import of second-order triangle meshes.
+#include <istream>
 #include <string>
 #include <vector>
 
@@ -14,5 +15,9 @@ namespace fsi::fem {
 /// Throws InputError `path:line: what` for malformed input, linear or other element types,
 /// missing groups and the mesh problems of validate_mesh.
 Mesh read_gmsh(const std::string& path, const std::vector<std::string>& required_groups = {});
+
+/// The same from a stream; `path` names it in messages and in Mesh::source.
+Mesh read_gmsh(std::istream& in, const std::string& path,
+               const std::vector<std::string>& required_groups = {});
 
 } // namespace fsi::fem

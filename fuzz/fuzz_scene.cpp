@@ -1,0 +1,16 @@
+// libFuzzer target: scene_input (see inputs.hpp). Any exception but InputError, and any message
+// not of the one-line form, is a finding.
+#include "inputs.hpp"
+
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const std::string message =
+      fsi::fuzz::scene_input(std::string(reinterpret_cast<const char*>(data), size));
+  if (fsi::fuzz::well_formed("scene", message)) return 0;
+  std::fprintf(stderr, "malformed error message: %s\n", message.c_str());
+  std::abort();
+}

@@ -1,0 +1,23 @@
+#pragma once
+// The parsers the fuzz targets drive, shared with the regression test of the inputs they found.
+// Each returns the InputError message, or "" when the input parses; anything else escapes.
+#include <string>
+
+namespace fsi::fuzz {
+
+/// The whole text is a scene file (named `fuzz/scene.yaml`), read and validated (with the
+/// resource check).
+std::string scene_input(const std::string& text);
+
+/// Each line is one `--set` argument, applied to data/scenes/dam_break_elastic_obstacle.yaml.
+std::string override_input(const std::string& text);
+
+/// The whole text is a Gmsh .msh file (named `fuzz.msh`).
+std::string gmsh_input(const std::string& text);
+
+/// Whether `message` (from one of the above; `target` is scene, override or gmsh) is empty or one
+/// line `FILE:LINE: KEY: what` (scene), `FILE:LINE: what` or `FILE: what` for a whole-file
+/// problem (gmsh), or naming the `--set` argument (override).
+bool well_formed(const std::string& target, const std::string& message);
+
+} // namespace fsi::fuzz
