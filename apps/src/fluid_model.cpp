@@ -1,8 +1,8 @@
 #include "fsi_app/fluid_model.hpp"
 
 #include "fsi/core/error.hpp"
+#include "fsi_app/wall_motion.hpp"
 #include "geometry_erp/fill.hpp"
-#include "geometry_erp/motion.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -11,20 +11,6 @@
 namespace fsi::app {
 
 namespace {
-
-std::shared_ptr<const erp::Motion> make_motion(const Scene& scene, const WallSpec& wall) {
-  const MotionSpec& m = *wall.motion;
-  const bool rotation = m.dof == "rotation";
-  if (m.kind == "sinusoid") {
-    if (rotation) return std::make_shared<erp::SinusoidRotation>(m.amplitude, m.period, m.phase);
-    const Vec2 direction = m.dof == "x" ? Vec2(1, 0) : Vec2(0, 1);
-    return std::make_shared<erp::SinusoidTranslation>(m.amplitude * direction, m.period, m.phase);
-  }
-  if (!rotation)
-    fail_at(scene, wall.line, "walls." + wall.name + ".motion",
-            "a table motion drives a rotation only (dof: rotation)");
-  return std::make_shared<erp::TableRotation>(m.table.string(), m.table_scale);
-}
 
 emps::FluidOptions fluid_options(const Scene& scene) {
   const FluidSpec& f = *scene.fluid;

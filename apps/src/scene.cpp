@@ -33,16 +33,20 @@ TimeSpec read_time(Section s) {
 
 const std::vector<std::string> kFieldNames = {"velocity",     "pressure",     "pnd",
                                               "free_surface", "displacement", "von_mises"};
-const std::vector<std::string> kProbeQuantities = {"displacement_x", "displacement_y",
-                                                   "surge_front", "pressure"};
+const std::vector<std::string> kProbeQuantities = {"displacement_x",      "displacement_y",
+                                                   "displacement_x_tank", "displacement_y_tank",
+                                                   "surge_front",         "pressure"};
 
 ProbeSpec read_probe(Section s) {
   ProbeSpec p;
   p.line = s.line();
   p.name = s.text("name", "column name in probes.csv (letters, digits, _)");
   p.quantity = s.choice("quantity", kProbeQuantities, "",
-                        "what is sampled: a node's displacement, the surge front (largest x of "
-                        "particles with pnd >= n0/2, i.e. not spray), or the pressure at a point");
+                        "what is sampled: a node's displacement; a node's displacement in the "
+                        "frame of the wall its structure is clamped to (clamped_motion: the "
+                        "rigid motion undone, x and y along the tank's axes); the surge front "
+                        "(largest x of particles with pnd >= n0/2, i.e. not spray); or the "
+                        "pressure at a point");
   p.structure = s.text("structure", "", "structure name, for displacement probes");
   p.node = s.optional_integer("node", Range::non_negative(), "FE node index (or give point)");
   p.point = s.optional_vec2("point", "reference position of the FE node, or the fluid point, m");
@@ -215,6 +219,10 @@ StructureSpec read_structure(Section s) {
   st.plane = mat.choice("plane", {"strain", "stress"}, "strain", "2D idealisation");
   mat.finish();
   st.clamped = s.names("clamped", {}, "boundary tags whose nodes are fixed");
+  st.clamped_motion =
+      s.text("clamped_motion", "",
+             "name of a wall with a motion: the clamped nodes follow its rigid motion (u, v, a "
+             "prescribed; e.g. a beam clamped to a rolling tank); empty: they stay fixed");
   st.interface = s.names("interface", {}, "boundary tags wetted by the fluid");
   if (auto nb = s.block("newmark", "Newmark-beta coefficients (eqs. 40-41)")) {
     st.newmark_beta = nb->real("beta", 0.3025, Range::left_open(0.0, 0.5), "beta_NB");
@@ -312,6 +320,17 @@ void cross_check(Section& top, const Scene& scene, std::vector<Section>& structu
         if (!tags.count(l.boundary))
           structure_sections[i].fail("loads", "unknown boundary tag '" + l.boundary + "'");
     }
+    if (!st.clamped_motion.empty()) {
+      if (st.clamped.empty())
+        structure_sections[i].fail("clamped_motion", "needs clamped boundary tags to move");
+      const auto w = std::find_if(scene.walls.begin(), scene.walls.end(),
+                                  [&](const WallSpec& x) { return x.name == st.clamped_motion; });
+      if (w == scene.walls.end())
+        structure_sections[i].fail("clamped_motion", "no wall named '" + st.clamped_motion + "'");
+      if (!w->motion)
+        structure_sections[i].fail("clamped_motion",
+                                   "wall '" + st.clamped_motion + "' has no motion");
+    }
   }
   for (std::size_t i = 0; i < scene.output.probes.size(); ++i) {
     const auto& p = scene.output.probes[i];
@@ -321,6 +340,9 @@ void cross_check(Section& top, const Scene& scene, std::vector<Section>& structu
       if (it == scene.structures.end())
         probe_sections[i].fail("structure", "no structure named '" + p.structure + "'");
       if (it->mesh.kind == "rectangle") check_rectangle_probe(it->mesh, p, probe_sections[i]);
+      if (p.quantity.ends_with("_tank") && it->clamped_motion.empty())
+        probe_sections[i].fail("quantity", "'" + p.quantity + "' needs structure '" + p.structure +
+                                               "' to have a clamped_motion");
     } else if (!scene.fluid) {
       probe_sections[i].fail("quantity", "'" + p.quantity + "' needs a fluid block");
     }

@@ -18,7 +18,7 @@ struct TimeSpec {
 
 struct ProbeSpec {
   std::string name;
-  std::string quantity;      ///< displacement_x | displacement_y | surge_front | pressure
+  std::string quantity;      ///< displacement_x|y, displacement_x|y_tank, surge_front, pressure
   std::string structure;     ///< for displacement probes
   std::optional<int> node;   ///< FE node index, or
   std::optional<Vec2> point; ///< reference position of a node / a fluid point
@@ -86,6 +86,7 @@ struct StructureSpec {
   double youngs_modulus = 0.0, poisson_ratio = 0.0, density = 0.0;
   std::string plane;                  ///< strain | stress
   std::vector<std::string> clamped;   ///< boundary tags held fixed
+  std::string clamped_motion;         ///< wall whose rigid motion the clamped nodes follow
   std::vector<std::string> interface; ///< boundary tags wetted by the fluid
   double newmark_beta = 0.3025, newmark_gamma = 0.6;
   double newton_tolerance = 1e-8, increment_tolerance = 1e-10;
