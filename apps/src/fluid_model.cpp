@@ -66,9 +66,16 @@ FluidModel::FluidModel(const Scene& scene, const fem::Mesh* structure,
                        structure->X[static_cast<std::size_t>(e[2])]});
   }
   const FluidSpec& f = *scene.fluid;
-  Vec2 origin = f.regions.front().front();
-  for (const auto& p : f.regions.front()) origin = origin.cwiseMin(p);
-  const auto positions = erp::fill_lattice(origin, f.l0, f.regions, holes, walls_.get());
+  std::vector<Vec2> positions;
+  // Each region on its own lattice from its lower-left corner, so a region a whole number of l0
+  // wide has l0/2 gaps at both sides; earlier regions are holes for later ones (no doubles).
+  for (const auto& region : f.regions) {
+    Vec2 origin = region.front();
+    for (const auto& p : region) origin = origin.cwiseMin(p);
+    const auto filled = erp::fill_lattice(origin, f.l0, {region}, holes, walls_.get());
+    positions.insert(positions.end(), filled.begin(), filled.end());
+    holes.push_back(region);
+  }
   if (positions.empty())
     fail_at(scene, f.line, "fluid.regions", "no particle fits in the regions at this l0");
   initial_count_ = positions.size();

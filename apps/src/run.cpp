@@ -124,6 +124,7 @@ void run_scene(const Scene& scene, std::vector<std::unique_ptr<Model>>& models,
 
   JsonObject run;
   run.add("scene", scene.path.string())
+      .add("name", scene.name)
       .add_raw("overrides", json_strings(scene.overrides))
       .add("version", version())
       .add("git_revision", git_revision())

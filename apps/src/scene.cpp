@@ -103,7 +103,11 @@ MotionSpec read_motion(Section s) {
   if (doc || m.kind == "table") {
     m.table = s.file("table", "CSV with header; columns time (s) and value");
     const std::string unit = s.choice("unit", {"deg", "rad", "m"}, "rad", "unit of the values");
-    m.table_scale = unit == "deg" ? M_PI / 180.0 : 1.0;
+    const double scale =
+        s.real("scale", 1.0, Range::any(),
+               "factor on the values, e.g. -1 for a table whose positive angles turn clockwise "
+               "(the scene's turn counter-clockwise)");
+    m.table_scale = scale * (unit == "deg" ? M_PI / 180.0 : 1.0);
     if (!doc && (unit == "m") != (m.dof != "rotation"))
       s.fail("unit", "'" + unit + "' does not match dof '" + m.dof + "'");
   }
@@ -163,7 +167,9 @@ FluidSpec read_fluid(Section s) {
       s.real("damping_time", 0.0, Range::non_negative(),
              "initial damping phase T_d: velocities damped at a rate 20/T_d (1 - t/T_d) "
              "(quiet hydrostatic starts), s");
-  for (auto& region : s.list("regions", "areas filled with particles at spacing l0"))
+  for (auto& region :
+       s.list("regions", "areas filled with particles at spacing l0, each on its own "
+                         "lattice from its lower-left corner (l0/2 from its edges)"))
     f.regions.push_back(read_region(region));
   if (!doc && f.regions.empty()) s.fail("regions", "at least one region is required");
   if (auto d = s.block("domain", "particles leaving this box are removed and counted")) {
@@ -222,7 +228,8 @@ StructureSpec read_structure(Section s) {
   st.clamped_motion =
       s.text("clamped_motion", "",
              "name of a wall with a motion: the clamped nodes follow its rigid motion (u, v, a "
-             "prescribed; e.g. a beam clamped to a rolling tank); empty: they stay fixed");
+             "prescribed; e.g. a beam clamped to a rolling tank), starting from static "
+             "equilibrium with the wall at t = 0; empty: they stay fixed");
   st.interface = s.names("interface", {}, "boundary tags wetted by the fluid");
   if (auto nb = s.block("newmark", "Newmark-beta coefficients (eqs. 40-41)")) {
     st.newmark_beta = nb->real("beta", 0.3025, Range::left_open(0.0, 0.5), "beta_NB");

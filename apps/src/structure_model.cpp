@@ -126,6 +126,14 @@ std::unique_ptr<fem::Structure> build_structure(const Scene& scene, const Struct
     structure->set_external_forces(loads);
     structure->update_acceleration();
   }
+  if (clamped_motion) { // start at rest, in equilibrium with the clamped nodes where the wall is
+    try {
+      structure->solve_static({.load_steps = 1, .time = 0.0});
+      structure->update_acceleration();
+    } catch (const RunError& e) {
+      fail_at(scene, spec.line, key + ".clamped_motion", e.what());
+    }
+  }
   return structure;
 }
 

@@ -39,7 +39,7 @@ struct MotionSpec {
   double period = 1.0;         ///< s
   double phase = 0.0;          ///< rad
   std::filesystem::path table; ///< CSV time,value (value in the unit of `unit`)
-  double table_scale = 1.0;    ///< multiplies the table values into rad or m
+  double table_scale = 1.0;    ///< multiplies the table values into rad or m (unit and scale)
 };
 
 struct WallSpec {
