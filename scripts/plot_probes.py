@@ -1,6 +1,19 @@
-"""Probe histories of one run (DIR/probes.csv) into DIR/probes.png, with optional references."""
+"""Probe histories of one run (DIR/probes.csv) into DIR/probes.png, with published figures.
+
+The overlays come from data/ref/<scene name>/plot.json (scene name from DIR/run.json), so a new
+scene gets its references by adding that file, not by changing this script. Format:
+  {"probes": {"<probe name or *>": [overlay, ...]},
+   "secondary": {"file": F, "time": COL, "value": COL, "label": L, "scale": 1}}
+with overlays
+  {"kind": "curve", "file": F, "time": COL, "value": COL, "label": L, "scale": 1}
+  {"kind": "line", "value": V, "label": L}                  horizontal line
+  {"kind": "band", "t": [T0, T1], "value": [V0, V1], "label": L}  acceptance box
+  {"kind": "vline", "t": T, "label": L}                     a published event time
+Files are relative to plot.json; a missing file is reported and skipped ("if present").
+"""
 import argparse
 import csv
+import json
 import os
 import sys
 
@@ -8,6 +21,8 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
 def read_columns(path):
@@ -21,31 +36,99 @@ def read_columns(path):
     return cols
 
 
+def scene_name(run_dir):
+    try:
+        with open(os.path.join(run_dir, "run.json")) as f:
+            run = json.load(f)
+    except (OSError, ValueError):
+        return None
+    return run.get("name") or os.path.splitext(os.path.basename(run.get("scene", "")))[0]
+
+
+def load_references(path):
+    """The scene's plot.json and its directory, or (None, None)."""
+    if not path or not os.path.isfile(path):
+        return None, None
+    with open(path) as f:
+        return json.load(f), os.path.dirname(path)
+
+
+def read_curve(spec, base):
+    path = os.path.join(base, spec["file"])
+    if not os.path.isfile(path):
+        print(f"plot: reference {path} not present, skipped")
+        return None
+    data = read_columns(path)
+    scale = spec.get("scale", 1.0)
+    return data[spec["time"]], [scale * v for v in data[spec["value"]]]
+
+
+def draw_overlay(ax, spec, base):
+    kind, label = spec["kind"], spec.get("label")
+    if kind == "curve":
+        curve = read_curve(spec, base)
+        if curve:
+            ax.plot(*curve, "-", lw=1.0, alpha=0.8, label=label)
+    elif kind == "line":
+        ax.axhline(spec["value"], color="k", ls="--", lw=1.0, label=label)
+    elif kind == "band":
+        (t0, t1), (v0, v1) = spec["t"], spec["value"]
+        ax.fill_between([t0, t1], v0, v1, color="tab:green", alpha=0.2, label=label)
+    elif kind == "vline":
+        ax.axvline(spec["t"], color="tab:gray", ls=":", lw=1.2, label=label)
+    else:
+        sys.exit(f"plot: {base}/plot.json: unknown overlay kind '{kind}'")
+
+
 def main():
-    parser = argparse.ArgumentParser(description=__doc__)
-    parser.add_argument("dir", help="run output directory holding probes.csv")
+    parser = argparse.ArgumentParser(description=__doc__,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("dir", help="run output directory holding probes.csv (and run.json)")
     parser.add_argument("--ref", action="append", default=[],
-                        help="PROBE=FILE.csv:TIME_COLUMN:VALUE_COLUMN:LABEL")
+                        help="extra curve: PROBE=FILE.csv:TIME_COLUMN:VALUE_COLUMN:LABEL")
+    parser.add_argument("--references", help="plot.json to use instead of the scene's")
     args = parser.parse_args()
     probes = read_columns(os.path.join(args.dir, "probes.csv"))
     names = [n for n in probes if n != "time"]
     if not names:
         sys.exit(f"plot: {args.dir}/probes.csv has no probe columns")
-    refs = {}
+    name = scene_name(args.dir)
+    default = os.path.join(ROOT, "data", "ref", name, "plot.json") if name else None
+    refs, base = load_references(args.references or default)
+    extra = {}
     for spec in args.ref:
         probe, rest = spec.split("=", 1)
         path, tcol, vcol, label = rest.split(":", 3)
         data = read_columns(path)
-        refs.setdefault(probe, []).append((data[tcol], data[vcol], label))
-    fig, axes = plt.subplots(len(names), 1, figsize=(8, 2.8 * len(names)), squeeze=False)
-    for ax, name in zip(axes[:, 0], names):
-        ax.plot(probes["time"], probes[name], label="fsi")
-        for t, v, label in refs.get(name, []):
+        extra.setdefault(probe, []).append((data[tcol], data[vcol], label))
+    fig, axes = plt.subplots(len(names), 1, figsize=(9, 3.2 * len(names)), squeeze=False)
+    for ax, probe in zip(axes[:, 0], names):
+        ax.plot(probes["time"], probes[probe], color="tab:blue", lw=1.5, label="fsi")
+        if refs:
+            for spec in refs.get("probes", {}).get(probe, []) + refs.get("probes", {}).get("*", []):
+                draw_overlay(ax, spec, base)
+        for t, v, label in extra.get(probe, []):
             ax.plot(t, v, "o", ms=3, label=label)
-        ax.set_ylabel(name)
+        ax.set_ylabel(probe)
+        ax.set_xlabel("time (s)")
         ax.grid(True, alpha=0.3)
-        ax.legend(loc="best", fontsize=8)
-    axes[-1, 0].set_xlabel("time (s)")
+        handles, labels = ax.get_legend_handles_labels()
+        secondary = refs.get("secondary") if refs else None
+        if secondary:
+            curve = read_curve(secondary, base)
+            if curve:
+                ax2 = ax.twinx()
+                t_end = max(probes["time"])
+                t, v = zip(*[(a, b) for a, b in zip(*curve) if a <= t_end] or [(0.0, 0.0)])
+                ax2.plot(t, v, color="tab:red", lw=0.8, alpha=0.6)
+                ax2.set_ylabel(secondary["label"], color="tab:red")
+                ax2.tick_params(axis="y", colors="tab:red")
+                handles += ax2.get_lines()
+                labels += [secondary["label"]]
+        ax.legend(handles, labels, loc="best", fontsize=8)
+    title = name or os.path.basename(os.path.abspath(args.dir))
+    axes[0, 0].set_title(title + (" (references: data/ref/%s/plot.json)" % name if refs else ""),
+                         fontsize=9)
     fig.tight_layout()
     out = os.path.join(args.dir, "probes.png")
     fig.savefig(out, dpi=100)

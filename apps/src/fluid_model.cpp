@@ -1,32 +1,14 @@
 #include "fsi_app/fluid_model.hpp"
 
 #include "fsi/core/error.hpp"
+#include "fsi_app/wall_motion.hpp"
 #include "geometry_erp/fill.hpp"
-#include "geometry_erp/motion.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
 namespace fsi::app {
-
-namespace {
-
-std::shared_ptr<const erp::Motion> make_motion(const Scene& scene, const WallSpec& wall) {
-  const MotionSpec& m = *wall.motion;
-  const bool rotation = m.dof == "rotation";
-  if (m.kind == "sinusoid") {
-    if (rotation) return std::make_shared<erp::SinusoidRotation>(m.amplitude, m.period, m.phase);
-    const Vec2 direction = m.dof == "x" ? Vec2(1, 0) : Vec2(0, 1);
-    return std::make_shared<erp::SinusoidTranslation>(m.amplitude * direction, m.period, m.phase);
-  }
-  if (!rotation)
-    fail_at(scene, wall.line, "walls." + wall.name + ".motion",
-            "a table motion drives a rotation only (dof: rotation)");
-  return std::make_shared<erp::TableRotation>(m.table.string(), m.table_scale);
-}
-
-} // namespace
 
 emps::FluidOptions fluid_options(const Scene& scene) {
   const FluidSpec& f = *scene.fluid;
@@ -83,9 +65,22 @@ FluidModel::FluidModel(const Scene& scene, const fem::Mesh* structure,
                        structure->X[static_cast<std::size_t>(e[2])]});
   }
   const FluidSpec& f = *scene.fluid;
-  Vec2 origin = f.regions.front().front();
-  for (const auto& p : f.regions.front()) origin = origin.cwiseMin(p);
-  const auto positions = erp::fill_lattice(origin, f.l0, f.regions, holes, walls_.get());
+  std::vector<Vec2> positions;
+  // Each region on its own lattice from its lower-left corner, so a region a whole number of l0
+  // wide has l0/2 gaps at both sides; earlier regions are holes for later ones (no doubles).
+  // Regions and walls are both given in the reference configuration: the fill keeps l0/2 from
+  // the walls as written, not as moved to t = 0 (a tank starting at a small angle would
+  // otherwise lose a row of particles on one side).
+  erp::WallSet reference;
+  for (std::size_t w = 0; w < scene.walls.size(); ++w)
+    reference.add_polyline(scene.walls[w].polyline, scene.walls[w].closed, static_cast<int>(w));
+  for (const auto& region : f.regions) {
+    Vec2 origin = region.front();
+    for (const auto& p : region) origin = origin.cwiseMin(p);
+    const auto filled = erp::fill_lattice(origin, f.l0, {region}, holes, &reference);
+    positions.insert(positions.end(), filled.begin(), filled.end());
+    holes.push_back(region);
+  }
   if (positions.empty())
     fail_at(scene, f.line, "fluid.regions", "no particle fits in the regions at this l0");
   initial_count_ = positions.size();

@@ -273,6 +273,7 @@ RunResult run_scene(const Scene& scene, std::vector<std::unique_ptr<Model>>& mod
 
   JsonObject run;
   run.add("scene", scene.path.string())
+      .add("name", scene.name)
       .add_raw("overrides", json_strings(scene.overrides))
       .add("version", version())
       .add("git_revision", git_revision())

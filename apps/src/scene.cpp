@@ -39,19 +39,21 @@ TimeSpec read_time(Section s) {
 const std::vector<std::string> kFieldNames = {"velocity",     "pressure",     "pnd",
                                               "free_surface", "displacement", "von_mises"};
 const std::vector<std::string> kProbeQuantities = {
-    "displacement_x", "displacement_y", "surge_front",   "pressure",
-    "mean_pressure",  "mean_speed",     "kinetic_energy"};
+    "displacement_x", "displacement_y", "displacement_x_tank", "displacement_y_tank", "surge_front",
+    "pressure",       "mean_pressure",  "mean_speed",          "kinetic_energy"};
 
 ProbeSpec read_probe(Section s) {
   ProbeSpec p;
   p.line = s.line();
   p.name = s.text("name", "column name in probes.csv (letters, digits, _)");
   p.quantity = s.choice("quantity", kProbeQuantities, "",
-                        "what is sampled: a node's displacement; the surge front (largest x of "
-                        "particles with pnd >= n0/2, i.e. not spray); the pressure at a point "
-                        "(MPS-weighted mean within r_e); mean_pressure, the plain mean over the "
-                        "particles inside the box min..max; mean_speed and kinetic_energy (J per m "
-                        "of depth) of all particles");
+                        "what is sampled: a node's displacement; a node's displacement in the "
+                        "frame of the wall its structure is clamped to (clamped_motion: the "
+                        "rigid motion undone, x and y along the tank's axes); the surge front "
+                        "(largest x of particles with pnd >= n0/2, i.e. not spray); the pressure "
+                        "at a point (MPS-weighted mean within r_e); mean_pressure, the plain mean "
+                        "over the particles inside the box min..max; mean_speed and "
+                        "kinetic_energy (J per m of depth) of all particles");
   p.structure = s.text("structure", "", "structure name, for displacement probes");
   p.node = s.optional_integer("node", Range::non_negative(), "FE node index (or give point)");
   p.point = s.optional_vec2("point", "reference position of the FE node, or the fluid point, m");
@@ -116,7 +118,11 @@ MotionSpec read_motion(Section s) {
   if (doc || m.kind == "table") {
     m.table = s.file("table", "CSV with header; columns time (s) and value");
     const std::string unit = s.choice("unit", {"deg", "rad", "m"}, "rad", "unit of the values");
-    m.table_scale = unit == "deg" ? M_PI / 180.0 : 1.0;
+    const double scale =
+        s.real("scale", 1.0, Range::any(),
+               "factor on the values, e.g. -1 for a table whose positive angles turn clockwise "
+               "(the scene's turn counter-clockwise)");
+    m.table_scale = scale * (unit == "deg" ? M_PI / 180.0 : 1.0);
     if (!doc && (unit == "m") != (m.dof != "rotation"))
       s.fail("unit", "'" + unit + "' does not match dof '" + m.dof + "'");
   }
@@ -185,7 +191,9 @@ FluidSpec read_fluid(Section s) {
       s.real("damping_time", 0.0, Range::non_negative(),
              "initial damping phase T_d: velocities damped at a rate 20/T_d (1 - t/T_d) "
              "(quiet hydrostatic starts), s");
-  for (auto& region : s.list("regions", "areas filled with particles at spacing l0"))
+  for (auto& region :
+       s.list("regions", "areas filled with particles at spacing l0, each on its own "
+                         "lattice from its lower-left corner (l0/2 from its edges)"))
     f.regions.push_back(read_region(region));
   if (!doc && f.regions.empty()) s.fail("regions", "at least one region is required");
   if (auto d = s.block("domain", "particles leaving this box are removed and counted")) {
@@ -241,6 +249,11 @@ StructureSpec read_structure(Section s) {
   st.plane = mat.choice("plane", {"strain", "stress"}, "strain", "2D idealisation");
   mat.finish();
   st.clamped = s.names("clamped", {}, "boundary tags whose nodes are fixed");
+  st.clamped_motion =
+      s.text("clamped_motion", "",
+             "name of a wall with a motion: the clamped nodes follow its rigid motion (u, v, a "
+             "prescribed; e.g. a beam clamped to a rolling tank), starting from static "
+             "equilibrium with the wall at t = 0; empty: they stay fixed");
   st.interface = s.names("interface", {}, "boundary tags wetted by the fluid");
   if (auto nb = s.block("newmark", "Newmark-beta coefficients (eqs. 40-41)")) {
     st.newmark_beta = nb->real("beta", 0.3025, Range::left_open(0.0, 0.5), "beta_NB");
@@ -385,6 +398,17 @@ void cross_check(Section& top, const Scene& scene, std::vector<Section>& structu
         if (!tags.count(l.boundary))
           structure_sections[i].fail("loads", "unknown boundary tag '" + l.boundary + "'");
     }
+    if (!st.clamped_motion.empty()) {
+      if (st.clamped.empty())
+        structure_sections[i].fail("clamped_motion", "needs clamped boundary tags to move");
+      const auto w = std::find_if(scene.walls.begin(), scene.walls.end(),
+                                  [&](const WallSpec& x) { return x.name == st.clamped_motion; });
+      if (w == scene.walls.end())
+        structure_sections[i].fail("clamped_motion", "no wall named '" + st.clamped_motion + "'");
+      if (!w->motion)
+        structure_sections[i].fail("clamped_motion",
+                                   "wall '" + st.clamped_motion + "' has no motion");
+    }
   }
   for (std::size_t i = 0; i < scene.output.probes.size(); ++i) {
     const auto& p = scene.output.probes[i];
@@ -394,6 +418,9 @@ void cross_check(Section& top, const Scene& scene, std::vector<Section>& structu
       if (it == scene.structures.end())
         probe_sections[i].fail("structure", "no structure named '" + p.structure + "'");
       if (it->mesh.kind == "rectangle") check_rectangle_probe(it->mesh, p, probe_sections[i]);
+      if (p.quantity.ends_with("_tank") && it->clamped_motion.empty())
+        probe_sections[i].fail("quantity", "'" + p.quantity + "' needs structure '" + p.structure +
+                                               "' to have a clamped_motion");
     } else if (!scene.fluid) {
       probe_sections[i].fail("quantity", "'" + p.quantity + "' needs a fluid block");
     }

@@ -1,11 +1,13 @@
 #include "fsi_app/structure_model.hpp"
 
 #include "fsi/core/error.hpp"
+#include "fsi_app/wall_motion.hpp"
 #include "structure_fem/gmsh_reader.hpp"
 #include "structure_fem/loads.hpp"
 #include "structure_fem/rectangle_mesher.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 
 namespace fsi::app {
@@ -76,6 +78,13 @@ int probe_node(const Scene& scene, const fem::Mesh& mesh, const ProbeSpec& probe
   return best;
 }
 
+std::optional<TankFrame> tank_frame(const Scene& scene, const StructureSpec& spec) {
+  if (spec.clamped_motion.empty()) return std::nullopt;
+  const WallSpec& wall = moving_wall(scene, spec.clamped_motion, spec.line,
+                                     "structures." + spec.name + ".clamped_motion");
+  return TankFrame{make_motion(scene, wall), wall.motion->pivot};
+}
+
 std::unique_ptr<fem::Structure> build_structure(const Scene& scene, const StructureSpec& spec) {
   fem::Mesh mesh = build_mesh(scene, spec);
   const std::string key = "structures." + spec.name;
@@ -92,7 +101,14 @@ std::unique_ptr<fem::Structure> build_structure(const Scene& scene, const Struct
   o.material.plane =
       spec.plane == "stress" ? fem::PlaneModel::plane_stress : fem::PlaneModel::plane_strain;
   o.gravity = scene.gravity;
-  for (const auto& tag : spec.clamped) o.clamped.push_back({tag, true, true, {}});
+  fem::PrescribedMotion clamped_motion; // empty: fixed
+  if (const auto frame = tank_frame(scene, spec)) {
+    clamped_motion = [frame](const Vec2& X, double t) { // the tank's rigid motion at X
+      const erp::NodeState n = erp::rigid_node_state(frame->motion->at(t), frame->pivot, X);
+      return fem::PrescribedKinematics{n.x - X, n.v, n.a};
+    };
+  }
+  for (const auto& tag : spec.clamped) o.clamped.push_back({tag, true, true, {}, clamped_motion});
   o.newmark.beta = spec.newmark_beta;
   o.newmark.gamma = spec.newmark_gamma;
   o.newton.residual_rtol = spec.newton_tolerance;
@@ -110,11 +126,19 @@ std::unique_ptr<fem::Structure> build_structure(const Scene& scene, const Struct
     structure->set_external_forces(loads);
     structure->update_acceleration();
   }
+  if (clamped_motion) { // start at rest, in equilibrium with the clamped nodes where the wall is
+    try {
+      structure->solve_static({.load_steps = 1, .time = 0.0});
+      structure->update_acceleration();
+    } catch (const RunError& e) {
+      fail_at(scene, spec.line, key + ".clamped_motion", e.what());
+    }
+  }
   return structure;
 }
 
 StructureModel::StructureModel(const Scene& scene, const StructureSpec& spec)
-    : name_(spec.name), structure_(build_structure(scene, spec)) {
+    : name_(spec.name), structure_(build_structure(scene, spec)), frame_(tank_frame(scene, spec)) {
   for (const auto& p : scene.output.probes)
     if (p.structure == spec.name)
       probe_nodes_.emplace_back(p.name, probe_node(scene, structure_->mesh(), p));
@@ -150,9 +174,20 @@ void StructureModel::write_frame(FieldsFile& file, const std::vector<std::string
 }
 
 std::optional<double> StructureModel::probe(const ProbeSpec& probe) const {
-  for (const auto& [name, node] : probe_nodes_)
-    if (name == probe.name)
-      return structure_->displacement()[2 * node + (probe.quantity == "displacement_y" ? 1 : 0)];
+  for (const auto& [name, node] : probe_nodes_) {
+    if (name != probe.name) continue;
+    const int c = probe.quantity.starts_with("displacement_y") ? 1 : 0;
+    if (!probe.quantity.ends_with("_tank")) return structure_->displacement()[2 * node + c];
+    // In the tank's frame: x = p + d + R (X_t - p) for the tank-fixed point X_t that the node is
+    // at now, so X_t - X = R^T (x - p - d) + p - X (the rigid motion undone).
+    const erp::RigidKinematics k = frame_->motion->at(structure_->time());
+    const Vec2 X = structure_->mesh().X[static_cast<std::size_t>(node)];
+    const Vec2 x = structure_->positions()[static_cast<std::size_t>(node)];
+    const Vec2 r = x - frame_->pivot - k.d;
+    const Vec2 local(std::cos(k.theta) * r.x() + std::sin(k.theta) * r.y(),
+                     -std::sin(k.theta) * r.x() + std::cos(k.theta) * r.y());
+    return (local + frame_->pivot - X)[c];
+  }
   return std::nullopt;
 }
 

@@ -9,15 +9,20 @@
 namespace fsi::fem {
 
 DofMap::DofMap(const Mesh& mesh, const std::vector<DirichletCondition>& conditions)
-    : free_of_dof_(2 * mesh.num_nodes(), 0) {
-  for (const auto& c : conditions)
+    : free_of_dof_(2 * mesh.num_nodes(), 0), condition_of_dof_(2 * mesh.num_nodes(), -1) {
+  for (std::size_t i = 0; i < conditions.size(); ++i) {
+    const auto& c = conditions[i];
     for (int node : c.tag.empty() ? c.nodes : mesh.node_set(c.tag)) {
       if (node < 0 || static_cast<std::size_t>(node) >= mesh.num_nodes())
         throw InputError("clamped: node index " + std::to_string(node) + " out of range (" +
                          std::to_string(mesh.num_nodes()) + " nodes)");
-      if (c.fix_x) free_of_dof_[2 * static_cast<std::size_t>(node)] = -1;
-      if (c.fix_y) free_of_dof_[2 * static_cast<std::size_t>(node) + 1] = -1;
+      for (std::size_t comp = 0; comp < 2; ++comp)
+        if (comp == 0 ? c.fix_x : c.fix_y) {
+          free_of_dof_[2 * static_cast<std::size_t>(node) + comp] = -1;
+          condition_of_dof_[2 * static_cast<std::size_t>(node) + comp] = static_cast<int>(i);
+        }
     }
+  }
   for (auto& f : free_of_dof_)
     if (f == 0) f = num_free_++;
 }
@@ -118,6 +123,23 @@ SparseMatrix Assembler::mass() {
                [&](std::size_t e) { Ke_[e] = t6_mass(element_nodes(e), material_.density()); });
   SparseMatrix M = pattern_;
   scatter_matrices(M);
+  return M;
+}
+
+SparseMatrix Assembler::full_mass() const {
+  std::vector<Eigen::Triplet<double>> triplets;
+  triplets.reserve(elements_.size() * 144);
+  for (std::size_t e = 0; e < elements_.size(); ++e) {
+    const Mat12 m = t6_mass(element_nodes(e), material_.density());
+    for (int j = 0; j < 12; ++j)
+      for (int i = 0; i < 12; ++i)
+        triplets.emplace_back(2 * mesh_.elements[e][static_cast<std::size_t>(i / 2)] + i % 2,
+                              2 * mesh_.elements[e][static_cast<std::size_t>(j / 2)] + j % 2,
+                              m(i, j));
+  }
+  const auto n = static_cast<Eigen::Index>(2 * mesh_.num_nodes());
+  SparseMatrix M(n, n);
+  M.setFromTriplets(triplets.begin(), triplets.end());
   return M;
 }
 

@@ -40,6 +40,9 @@ Structure::Structure(Mesh mesh, StructureOptions options)
   assembler_ = std::make_unique<Assembler>(mesh_, *material_, *dofs_);
   solver_ = make_linear_solver(options_.linear_solver);
   M_ = assembler_->mass();
+  M_all_ = assembler_->full_mass();
+  for (int d = 0; d < dofs_->num_dofs(); ++d)
+    if (dofs_->free_index(d) < 0) constrained_.emplace_back(d, dofs_->condition(d));
   K_ = assembler_->pattern();
   K_eff_ = assembler_->pattern();
   f_g_ = assembler_->gravity_forces(options_.gravity);
@@ -47,6 +50,7 @@ Structure::Structure(Mesh mesh, StructureOptions options)
   state_.u = state_.v = state_.a = state_.f_ext = Vector::Zero(n);
   f_ext_next_ = Vector::Zero(n);
   f_int_ = Vector::Zero(n);
+  prescribe(0.0, state_.u, state_.v, state_.a);
   if (dofs_->num_free() > 0) {
     solver_->analyze(M_); // the pattern of M, K and K_eff is the same: analysed once per mesh
     update_acceleration();
@@ -76,13 +80,37 @@ void Structure::factor_and_solve(const SparseMatrix& K, const Vector& rhs, Vecto
   iterations = solver_->iterations();
 }
 
+void Structure::prescribe(double t, Vector& u, Vector& v, Vector& a) const {
+  for (const auto& [dof, condition] : constrained_) {
+    const PrescribedMotion& motion = options_.clamped[static_cast<std::size_t>(condition)].motion;
+    if (!motion) {
+      u[dof] = v[dof] = a[dof] = 0.0;
+      continue;
+    }
+    const PrescribedKinematics k = motion(mesh_.X[static_cast<std::size_t>(dof / 2)], t);
+    u[dof] = k.u[dof % 2];
+    v[dof] = k.v[dof % 2];
+    a[dof] = k.a[dof % 2];
+  }
+}
+
+Vector Structure::constrained_inertia(const Vector& a) const {
+  Vector a_c = Vector::Zero(a.size());
+  for (const auto& entry : constrained_) a_c[entry.first] = a[entry.first];
+  return dofs_->restrict_to_free(M_all_ * a_c);
+}
+
 void Structure::update_acceleration() {
+  Vector u = state_.u, v = state_.v;
+  prescribe(state_.time, u, v, state_.a);
   assembler_->assemble(state_.u, f_int_, nullptr);
-  const Vector r = dofs_->restrict_to_free(f_ext_next_ + f_g_ - f_int_);
+  const Vector r =
+      dofs_->restrict_to_free(f_ext_next_ + f_g_ - f_int_) - constrained_inertia(state_.a);
   Vector a_free;
   int its = 0;
   factor_and_solve(M_, r, a_free, its);
-  state_.a.setZero();
+  for (int d = 0; d < dofs_->num_dofs(); ++d)
+    if (dofs_->free_index(d) >= 0) state_.a[d] = 0.0;
   dofs_->add_free(a_free, state_.a);
   state_.f_ext = f_ext_next_; // the forces a^n balances
 }
@@ -153,12 +181,15 @@ const StepReport& Structure::advance(double dt) {
   StepReport report;
   report.step = s.step + 1;
   report.time = s.time + dt;
-  Vector u = predict(dt).u; // eq. 64 as the first guess
+  const Prediction prescribed = predict(dt); // constrained entries: the prescribed motion
+  Vector u = prescribed.u;                   // eq. 64 as the first guess
+  const Vector inertia_c = constrained_inertia(prescribed.a);
   const double c0 = nm.mass_factor();
   auto residual = [&](const Vector& u_next, Vector& R) {
     assembler_->assemble(u_next, f_int_, &K_);
     const Vector a_next = nm.acceleration(u_next, s.u, s.v, s.a); // eq. 40
-    R = M_ * dofs_->restrict_to_free(a_next) + dofs_->restrict_to_free(f_int_ - f_ext_next_ - f_g_);
+    R = M_ * dofs_->restrict_to_free(a_next) + inertia_c +
+        dofs_->restrict_to_free(f_int_ - f_ext_next_ - f_g_);
     const Eigen::Index nnz = K_.nonZeros();
     Eigen::Map<Eigen::VectorXd>(K_eff_.valuePtr(), nnz) =
         c0 * Eigen::Map<const Eigen::VectorXd>(M_.valuePtr(), nnz) +
@@ -171,8 +202,12 @@ const StepReport& Structure::advance(double dt) {
     msg << e.what() << " (structure step " << report.step << ", t = " << report.time << ")";
     throw RunError(msg.str());
   }
-  const Vector a = nm.acceleration(u, s.u, s.v, s.a);
-  const Vector v = nm.velocity(a, s.v, s.a); // eq. 41
+  Vector a = nm.acceleration(u, s.u, s.v, s.a);
+  Vector v = nm.velocity(a, s.v, s.a); // eq. 41
+  for (const auto& entry : constrained_) {
+    v[entry.first] = prescribed.v[entry.first];
+    a[entry.first] = prescribed.a[entry.first];
+  }
   state_.external_work += 0.5 * (state_.f_ext + f_ext_next_).dot(u - state_.u);
   state_.u = u;
   state_.v = v;
@@ -191,8 +226,14 @@ std::vector<StepReport> Structure::solve_static(const StaticOptions& options) {
   std::vector<StepReport> reports;
   Vector u = state_.u;
   const Vector f_total = f_ext_next_ + f_g_;
+  const double time = options.time.value_or(state_.time);
+  Vector u_target = u, v_target = state_.v, a_target = state_.a;
+  prescribe(time, u_target, v_target, a_target);
   for (int i = 1; i <= options.load_steps; ++i) {
     const double lambda = static_cast<double>(i) / options.load_steps;
+    for (const auto& entry : constrained_)
+      u[entry.first] =
+          state_.u[entry.first] + lambda * (u_target[entry.first] - state_.u[entry.first]);
     StepReport report;
     report.step = i;
     report.time = lambda;
@@ -215,7 +256,12 @@ std::vector<StepReport> Structure::solve_static(const StaticOptions& options) {
   state_.u = u;
   state_.v.setZero();
   state_.a.setZero();
+  for (const auto& entry : constrained_) {
+    state_.v[entry.first] = v_target[entry.first];
+    state_.a[entry.first] = a_target[entry.first];
+  }
   state_.f_ext = f_ext_next_;
+  state_.time = time;
   return reports;
 }
 
@@ -228,9 +274,11 @@ std::vector<Vec2> Structure::positions() const {
 
 Prediction Structure::predict(double dt) const {
   const StructureState& s = state_;
-  return {s.u + dt * s.v + 0.5 * dt * dt * s.a, // eq. 64
-          s.v + dt * s.a,                       // eq. 65
-          s.a};                                 // eq. 63
+  Prediction p{s.u + dt * s.v + 0.5 * dt * dt * s.a, // eq. 64
+               s.v + dt * s.a,                       // eq. 65
+               s.a};                                 // eq. 63
+  prescribe(s.time + dt, p.u, p.v, p.a);
+  return p;
 }
 
 void Structure::restore(const StructureState& state) {
@@ -245,8 +293,7 @@ Vector Structure::von_mises() const {
 
 Energies Structure::energies() const {
   Energies e;
-  const Vector v = dofs_->restrict_to_free(state_.v);
-  e.kinetic = 0.5 * v.dot(M_ * v);
+  e.kinetic = 0.5 * state_.v.dot(M_all_ * state_.v);
   e.strain = assembler_->strain_energy(state_.u);
   e.gravity_work = f_g_.dot(state_.u);
   e.external_work = state_.external_work;

@@ -18,8 +18,8 @@ struct TimeSpec {
 
 struct ProbeSpec {
   std::string name;
-  std::string quantity;      ///< displacement_x | displacement_y | surge_front | pressure |
-                             ///< mean_pressure | mean_speed | kinetic_energy
+  std::string quantity;      ///< displacement_x|y, displacement_x|y_tank, surge_front, pressure,
+                             ///< mean_pressure, mean_speed, kinetic_energy
   std::string structure;     ///< for displacement probes
   std::optional<int> node;   ///< FE node index, or
   std::optional<Vec2> point; ///< reference position of a node / a fluid point
@@ -41,7 +41,7 @@ struct MotionSpec {
   double period = 1.0;         ///< s
   double phase = 0.0;          ///< rad
   std::filesystem::path table; ///< CSV time,value (value in the unit of `unit`)
-  double table_scale = 1.0;    ///< multiplies the table values into rad or m
+  double table_scale = 1.0;    ///< multiplies the table values into rad or m (unit and scale)
 };
 
 struct WallSpec {
@@ -90,6 +90,7 @@ struct StructureSpec {
   double youngs_modulus = 0.0, poisson_ratio = 0.0, density = 0.0;
   std::string plane;                  ///< strain | stress
   std::vector<std::string> clamped;   ///< boundary tags held fixed
+  std::string clamped_motion;         ///< wall whose rigid motion the clamped nodes follow
   std::vector<std::string> interface; ///< boundary tags wetted by the fluid
   double newmark_beta = 0.3025, newmark_gamma = 0.6;
   double newton_tolerance = 1e-8, increment_tolerance = 1e-10;

@@ -2,6 +2,7 @@
 // Global assembly over T6 elements: the sparse pattern on the free degrees of freedom is built
 // once; element matrices are computed in parallel (fsi::parallel_for) into a preallocated buffer
 // and scattered serially in element order, so results do not depend on the thread count.
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -10,13 +11,25 @@
 
 namespace fsi::fem {
 
-/// Zero displacement of the chosen components on every node of the edges tagged `tag`, or, if
-/// `tag` is empty, on the listed node indices (fix_x only: a roller sliding along y).
+/// Displacement, velocity and acceleration prescribed on a node at one time.
+struct PrescribedKinematics {
+  Vec2 u = Vec2::Zero(), v = Vec2::Zero(), a = Vec2::Zero();
+};
+
+/// The prescribed kinematics of the node with reference position X at time t (e.g. the rigid
+/// motion of the tank a beam is clamped to). Must be a pure function of (X, t): a step may be
+/// re-run after restore().
+using PrescribedMotion = std::function<PrescribedKinematics(const Vec2& X, double t)>;
+
+/// Prescribed displacement of the chosen components on every node of the edges tagged `tag`, or,
+/// if `tag` is empty, on the listed node indices (fix_x only: a roller sliding along y). Without a
+/// motion the displacement is zero; with one, the chosen components follow motion(X, t).
 struct DirichletCondition {
   std::string tag;
   bool fix_x = true;
   bool fix_y = true;
   std::vector<int> nodes;
+  PrescribedMotion motion = {};
 };
 
 /// Numbering of the free degrees of freedom. Dof 2K + c is component c of node K.
@@ -28,12 +41,16 @@ public:
   int num_free() const { return num_free_; }
   /// Index among the free dofs, or -1 if the dof is constrained.
   int free_index(int dof) const { return free_of_dof_[static_cast<std::size_t>(dof)]; }
+  /// The condition (index into the constructor's list) that constrains the dof; the last one
+  /// listed wins. -1 for a free dof.
+  int condition(int dof) const { return condition_of_dof_[static_cast<std::size_t>(dof)]; }
   Vector restrict_to_free(const Vector& full) const;
   /// full[dof] += free[free_index(dof)] for every free dof.
   void add_free(const Vector& free, Vector& full) const;
 
 private:
   std::vector<int> free_of_dof_;
+  std::vector<int> condition_of_dof_;
   int num_free_ = 0;
 };
 
@@ -51,6 +68,9 @@ public:
   void assemble(const Vector& u, Vector& f_int, SparseMatrix* K);
   /// Consistent mass on the free dofs, with pattern()'s structure.
   SparseMatrix mass();
+  /// Consistent mass on all dofs (2 * nodes square): its free-constrained block carries the
+  /// inertia of prescribed accelerations into the free equations.
+  SparseMatrix full_mass() const;
   /// Consistent body force of gravity g [m/s^2] on all dofs: f_K = integral rho N_K g.
   Vector gravity_forces(const Vec2& g);
   /// Total strain energy integral W(E) (per unit thickness) [J/m].

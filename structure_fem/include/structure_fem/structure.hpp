@@ -4,7 +4,9 @@
 // value-type state for save/restore in iterative coupling. Units SI, per unit thickness (forces
 // in N/m). Node arrays have size 2 * nodes, entry 2K + c for component c of node K.
 #include <memory>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "structure_fem/assembly.hpp"
@@ -37,7 +39,7 @@ struct NewtonOptions {
 struct StructureOptions {
   MaterialOptions material;
   Vec2 gravity{0.0, 0.0};                  ///< body acceleration g [m/s^2]
-  std::vector<DirichletCondition> clamped; ///< zero-displacement conditions by edge tag
+  std::vector<DirichletCondition> clamped; ///< fixed or prescribed-motion conditions
   NewmarkOptions newmark;
   NewtonOptions newton;
   LinearSolverOptions linear_solver;
@@ -63,6 +65,9 @@ struct StepReport {
 
 struct StaticOptions {
   int load_steps = 1; ///< the load (f_ext + gravity) is applied in equal increments, >= 1
+  /// Time at which prescribed motions are evaluated; their displacements are applied in the same
+  /// increments as the load, and the structure is at this time afterwards. Default: time().
+  std::optional<double> time = std::nullopt;
 };
 
 /// The full kinematic state; cheap to copy (iterative coupling re-runs a step from it).
@@ -91,7 +96,8 @@ struct Energies {
 class Structure {
 public:
   /// Validates options and mesh, builds the assembly pattern, mass and gravity forces, analyses
-  /// the pattern once, and starts at rest with u = 0 and a^0 from M a^0 = f_g.
+  /// the pattern once, and starts at rest with u = 0 and a^0 from M a^0 = f_g (constrained dofs
+  /// start at their prescribed u, v, a at t = 0).
   Structure(Mesh mesh, StructureOptions options);
   ~Structure();
   Structure(const Structure&) = delete;
@@ -108,12 +114,15 @@ public:
   const Vector& external_forces() const { return f_ext_next_; }
 
   /// One Newmark step (eqs. 40-41) t -> t + dt, Newton–Raphson on u^{n+1} starting from the
-  /// predictor (eq. 64). Throws RunError (with step and time) if Newton or the linear solver
-  /// fails or an element inverts; the state is then unchanged.
+  /// predictor (eq. 64). Constrained dofs take their prescribed u, v, a at t + dt; the inertia of
+  /// the prescribed accelerations enters the free equations through the consistent mass. Throws
+  /// RunError (with step and time) if Newton or the linear solver fails or an element inverts;
+  /// the state is then unchanged.
   const StepReport& advance(double dt);
 
   /// Static equilibrium f_int(u) = f_ext + f_g with load stepping from the current u; sets
-  /// v = a = 0. Returns one report per load step. Throws RunError like advance().
+  /// v = a = 0 on the free dofs (constrained dofs: their prescribed v, a). Returns one report per
+  /// load step. Throws RunError like advance().
   std::vector<StepReport> solve_static(const StaticOptions& options = {});
 
   /// Re-solves M a = f_ext + f_g - f_int(u) for the current u with the forces just set, which
@@ -128,7 +137,7 @@ public:
   double time() const { return state_.time; }
   long step() const { return state_.step; }
 
-  /// Second-order predictor for t + dt (eqs. 63-65).
+  /// Second-order predictor for t + dt (eqs. 63-65); constrained dofs: their prescribed values.
   Prediction predict(double dt) const;
 
   StructureState save() const { return state_; }
@@ -145,6 +154,7 @@ public:
 
   /// Von Mises Cauchy stress per node (element nodal values averaged) [Pa].
   Vector von_mises() const;
+  /// Energies of the free motion; the work of prescribed motions is not counted.
   Energies energies() const;
 
   /// The report of the last advance().
@@ -154,6 +164,10 @@ private:
   /// Newton on the free dofs; residual(u, R, K) fills R (free) and K (effective tangent).
   template <class Residual> void newton(Vector& u, Residual&& residual, StepReport& report);
   void factor_and_solve(const SparseMatrix& K, const Vector& rhs, Vector& x, int& iterations);
+  /// Sets the constrained entries of u, v, a to the prescribed motion at time t.
+  void prescribe(double t, Vector& u, Vector& v, Vector& a) const;
+  /// M_fc a_c on the free dofs: the inertia of the constrained accelerations in a.
+  Vector constrained_inertia(const Vector& a) const;
 
   Mesh mesh_;
   StructureOptions options_;
@@ -162,6 +176,8 @@ private:
   std::unique_ptr<Assembler> assembler_;
   std::unique_ptr<LinearSolver> solver_;
   SparseMatrix M_, K_, K_eff_;
+  SparseMatrix M_all_;                           ///< consistent mass on all dofs
+  std::vector<std::pair<int, int>> constrained_; ///< (dof, condition) of every constrained dof
   Vector f_g_, f_ext_next_, f_int_;
   StructureState state_;
   StepReport report_;

@@ -1,0 +1,20 @@
+#pragma once
+// The prescribed rigid motion of a scene wall, shared by the walls it moves and by structures
+// clamped to it (structures[].clamped_motion) and probes in its frame (displacement_*_tank).
+#include "fsi_app/scene.hpp"
+#include "geometry_erp/motion.hpp"
+
+#include <memory>
+#include <string>
+
+namespace fsi::app {
+
+/// The motion of a wall that has a motion block. Throws InputError (scene file and line) for a
+/// motion the scene cannot drive (a table for a translation).
+std::shared_ptr<const erp::Motion> make_motion(const Scene& scene, const WallSpec& wall);
+
+/// The wall called `name`; fail_at(line, key) if there is none or it has no motion.
+const WallSpec& moving_wall(const Scene& scene, const std::string& name, int line,
+                            const std::string& key);
+
+} // namespace fsi::app
