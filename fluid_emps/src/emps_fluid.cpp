@@ -7,6 +7,7 @@
 #include "geometry_erp/weight.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -439,6 +440,16 @@ void EmpsFluid::restore(const State& s) {
   hits_layout_ = -1; // the hits belong to the abandoned step
 }
 
+namespace {
+/// The Vec2 arrays of the wall hits, by checkpoint name.
+template <class Hits> auto vector_hits(Hits& h) {
+  return std::array{std::pair{"x_wall", &h.x_wall},   std::pair{"n_wall", &h.n_wall},
+                    std::pair{"v_wall", &h.v_wall},   std::pair{"a_wall", &h.a_wall},
+                    std::pair{"x_wall2", &h.x_wall2}, std::pair{"n_wall2", &h.n_wall2},
+                    std::pair{"v_wall2", &h.v_wall2}};
+}
+} // namespace
+
 void EmpsFluid::write_state(StateArchive& a, const std::string& prefix) const {
   const Particles& p = particles_;
   for (const auto& [name, v] : {std::pair{"x", &p.x},
@@ -475,14 +486,7 @@ void EmpsFluid::write_state(StateArchive& a, const std::string& prefix) const {
   a.put(h + "r", hits_.r);
   a.put(h + "t2", hits_.t2);
   a.put(h + "r2", hits_.r2);
-  for (const auto& [name, v] : {std::pair{"x_wall", &hits_.x_wall},
-                                {"n_wall", &hits_.n_wall},
-                                {"v_wall", &hits_.v_wall},
-                                {"a_wall", &hits_.a_wall},
-                                {"x_wall2", &hits_.x_wall2},
-                                {"n_wall2", &hits_.n_wall2},
-                                {"v_wall2", &hits_.v_wall2}})
-    a.put(h + name, flatten(*v));
+  for (const auto& [name, v] : vector_hits(hits_)) a.put(h + name, flatten(*v));
 }
 
 void EmpsFluid::read_state(const StateArchive& a, const std::string& prefix) {
@@ -525,14 +529,7 @@ void EmpsFluid::read_state(const StateArchive& a, const std::string& prefix) {
   hits_.r = a.reals(h + "r", m);
   hits_.t2 = a.reals(h + "t2", m);
   hits_.r2 = a.reals(h + "r2", m);
-  for (const auto& [name, v] : {std::pair{"x_wall", &hits_.x_wall},
-                                {"n_wall", &hits_.n_wall},
-                                {"v_wall", &hits_.v_wall},
-                                {"a_wall", &hits_.a_wall},
-                                {"x_wall2", &hits_.x_wall2},
-                                {"n_wall2", &hits_.n_wall2},
-                                {"v_wall2", &hits_.v_wall2}})
-    *v = unflatten(a.reals(h + name, 2 * m));
+  for (const auto& [name, v] : vector_hits(hits_)) *v = unflatten(a.reals(h + name, 2 * m));
   hits_layout_ = layout_;
 }
 
