@@ -25,7 +25,12 @@ std::vector<Step> parse_path(const std::string& path, const std::string& text) {
     std::size_t j = i;
     while (j < path.size() && path[j] != '.' && path[j] != '[') ++j;
     if (j == i) throw bad("empty key in path");
-    steps.push_back({path.substr(i, j - i)});
+    const std::string key = path.substr(i, j - i);
+    if (!std::all_of(key.begin(), key.end(), [](char c) {
+          return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+        }))
+      throw bad("'" + key + "' is not a scene key (letters, digits and _)");
+    steps.push_back({key});
     while (j < path.size() && path[j] == '[') {
       const std::size_t close = path.find(']', j);
       const std::string digits =

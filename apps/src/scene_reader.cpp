@@ -69,12 +69,13 @@ std::string Section::key_path(const std::string& key) const {
 std::string Section::location(const std::string& key) const {
   const std::string full = key_path(key);
   for (const auto& [path, text] : ctx_->overrides)
-    if (full == path || full.rfind(path + ".", 0) == 0 || full.rfind(path + "[", 0) == 0)
+    if (full == path || full.rfind(path + ".", 0) == 0 || full.rfind(path + "[", 0) == 0 ||
+        path.rfind(full + ".", 0) == 0 || path.rfind(full + "[", 0) == 0)
       return ctx_->file + ": --set " + path + "=" + text;
   int line = key_line_ > 0 ? key_line_ : 1;
   if (!key.empty() && node_.IsMap())
     for (auto it = node_.begin(); it != node_.end(); ++it)
-      if (it->first.Scalar() == key) line = it->first.Mark().line + 1;
+      if (it->first.Scalar() == key) line = std::max(1, it->first.Mark().line + 1);
   return ctx_->file + ":" + std::to_string(line);
 }
 
