@@ -154,11 +154,12 @@ Vec2 EmpsFluid::mirror_laplacian(std::size_t i, const Vec2& x_wall, const Vec2& 
   return (no_slip ? erp::R_inv() : erp::R_ref(n_wall)) * Vec2(ux, uy);
 }
 
-// v* = v + dt (nu <lap v>^ERP + g) (eqs. 11, 13, 24); visc_wall_ keeps the viscous wall forces.
+// nu <lap v>^ERP into scratch_ (eqs. 11, 24; advance adds it and g to v, eq. 13); visc_wall_
+// keeps the viscous wall forces.
 // With artificial_viscosity alpha, closing pairs also feel alpha c l0 times the eq. 11 operator
 // restricted to their line of centres (Monaghan's artificial viscosity in MPS form; not in the
 // paper, pairwise antisymmetric so momentum is kept).
-void EmpsFluid::viscosity(double dt) {
+void EmpsFluid::viscosity() {
   Timer timer(times_.viscosity);
   Particles& p = particles_;
   const std::size_t n = p.size();
@@ -195,10 +196,6 @@ void EmpsFluid::viscosity(double dt) {
     scratch_[2 * i + 1] = nu * (c_lap * sy + m1.y() + m2.y()) + nu_art * c_lap * ay;
     visc_wall_[i] = mu_V * m1; // V_i mu R <lap v>_i' (eq. 52, viscous wall part)
     visc_wall2_[i] = mu_V * m2;
-  });
-  parallel_for(n, [&](std::size_t i) {
-    p.vx[i] += dt * scratch_[2 * i];
-    p.vy[i] += dt * scratch_[2 * i + 1];
   });
 }
 
@@ -335,21 +332,32 @@ void EmpsFluid::advance(double t, double dt) {
   const Vec2 g = options_.gravity;
   refresh_neighbours(true, step_ + 1, t);
   const std::size_t n = p.size();
-  visc_wall_.assign(n, Vec2::Zero());
-  visc_wall2_.assign(n, Vec2::Zero());
+  // The viscous loop writes every particle's viscous wall forces; without it they are zero.
+  const bool viscous = options_.viscosity > 0 || options_.artificial_viscosity > 0;
+  if (viscous) {
+    visc_wall_.resize(n);
+    visc_wall2_.resize(n);
+  } else {
+    visc_wall_.assign(n, Vec2::Zero());
+    visc_wall2_.assign(n, Vec2::Zero());
+  }
   for (auto* a : {&wall_forces_.segment, &wall_forces_.segment2}) a->resize(n);
   for (auto* a : {&wall_forces_.t, &wall_forces_.t2}) a->resize(n);
   for (auto* a : {&wall_forces_.x_wall, &wall_forces_.f, &wall_forces_.x_wall2, &wall_forces_.f2})
     a->resize(n);
-  if (options_.viscosity > 0 || options_.artificial_viscosity > 0) {
+  if (viscous) {
     // The wall hits of the last step's x* serve x^n (which differs by dt^2 |grad p| / rho, and
     // they see the walls at t^n) unless particles were reordered or removed since.
     if (hits_layout_ != layout_) query_walls();
-    viscosity(dt);
+    viscosity();
   }
   {
     Timer timer(times_.other);
-    parallel_for(n, [&](std::size_t i) {
+    parallel_for(n, [&](std::size_t i) { // v* = v + dt (nu <lap v> + g), x* = x + dt v* (eq. 13)
+      if (viscous) {
+        p.vx[i] += dt * scratch_[2 * i];
+        p.vy[i] += dt * scratch_[2 * i + 1];
+      }
       p.vx[i] += dt * g.x();
       p.vy[i] += dt * g.y();
       p.x[i] += dt * p.vx[i];

@@ -89,7 +89,7 @@ private:
   /// `step` and `t` name the step in progress in messages.
   void refresh_neighbours(bool allow_reorder, long step, double t);
   void query_walls();
-  void viscosity(double dt);
+  void viscosity();
   void density_and_pressure();
   void pressure_gradient(double dt);
   void check_finite(long step, double t) const;
