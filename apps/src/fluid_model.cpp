@@ -48,8 +48,7 @@ FluidModel::FluidModel(const Scene& scene, const fem::Mesh* structure,
   int group = 0;
   for (const auto& w : scene.walls) {
     if (w.motion)
-      walls_->add_rigid_polyline(w.polyline, w.closed, group++, w.motion->pivot,
-                                 make_motion(scene, w));
+      walls_->add_rigid_polyline(w.polyline, w.closed, group++, w.motion->pivot, make_motion(w));
     else
       walls_->add_polyline(w.polyline, w.closed, group++);
   }

@@ -82,7 +82,7 @@ std::optional<TankFrame> tank_frame(const Scene& scene, const StructureSpec& spe
   if (spec.clamped_motion.empty()) return std::nullopt;
   const WallSpec& wall = moving_wall(scene, spec.clamped_motion, spec.line,
                                      "structures." + spec.name + ".clamped_motion");
-  return TankFrame{make_motion(scene, wall), wall.motion->pivot};
+  return TankFrame{make_motion(wall), wall.motion->pivot};
 }
 
 std::unique_ptr<fem::Structure> build_structure(const Scene& scene, const StructureSpec& spec) {

@@ -4,17 +4,16 @@
 
 namespace fsi::app {
 
-std::shared_ptr<const erp::Motion> make_motion(const Scene& scene, const WallSpec& wall) {
+std::shared_ptr<const erp::Motion> make_motion(const WallSpec& wall) {
   const MotionSpec& m = *wall.motion;
   const bool rotation = m.dof == "rotation";
+  const Vec2 direction = m.dof == "x" ? Vec2(1, 0) : Vec2(0, 1);
   if (m.kind == "sinusoid") {
     if (rotation) return std::make_shared<erp::SinusoidRotation>(m.amplitude, m.period, m.phase);
-    const Vec2 direction = m.dof == "x" ? Vec2(1, 0) : Vec2(0, 1);
     return std::make_shared<erp::SinusoidTranslation>(m.amplitude * direction, m.period, m.phase);
   }
   if (!rotation)
-    fail_at(scene, wall.line, "walls." + wall.name + ".motion",
-            "a table motion drives a rotation only (dof: rotation)");
+    return std::make_shared<erp::TableTranslation>(m.table.string(), m.table_scale * direction);
   return std::make_shared<erp::TableRotation>(m.table.string(), m.table_scale);
 }
 

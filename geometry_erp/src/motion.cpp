@@ -53,6 +53,12 @@ TableTranslation::TableTranslation(const std::string& csv_path, double scale) {
   dy_ = CubicSpline(table.columns[0], scaled(table.columns[2], scale));
 }
 
+TableTranslation::TableTranslation(const std::string& csv_path, const Vec2& direction) {
+  const CsvTable table = read_csv_table(csv_path, 2);
+  dx_ = CubicSpline(table.columns[0], scaled(table.columns[1], direction.x()));
+  dy_ = CubicSpline(table.columns[0], scaled(table.columns[1], direction.y()));
+}
+
 RigidKinematics TableTranslation::at(double t) const {
   const SplineValue x = dx_(t), y = dy_(t);
   RigidKinematics k;

@@ -74,6 +74,12 @@ TEST_CASE("erp: CSV tables: spline through the rows, v and a second-order consis
   CHECK_THAT(rotation->at(t).theta,
              Catch::Matchers::WithinAbs(
                  0.3 * std::sin(2.0 * std::numbers::pi * t / 1.2) + 0.05 * t * t, 1e-4));
+  // A two-column table along one direction: d = s(t) direction.
+  const TableTranslation along_y(data("motion_rotation.csv"), Vec2(0.0, 2.0));
+  CHECK_THAT(along_y.at(0.5).d.y(), Catch::Matchers::WithinRel(2.0 * theta_row, 1e-14));
+  CHECK(along_y.at(0.5).d.x() == 0.0);
+  CHECK_THAT(along_y.at(0.725).d_dot.y(),
+             Catch::Matchers::WithinRel(2.0 * rotation->at(0.725).omega, 1e-14));
   // Degrees scaling.
   const TableRotation degrees(data("motion_rotation.csv"), std::numbers::pi / 180.0);
   CHECK_THAT(degrees.at(0.5).theta,

@@ -9,9 +9,9 @@
 
 namespace fsi::app {
 
-/// The motion of a wall that has a motion block. Throws InputError (scene file and line) for a
-/// motion the scene cannot drive (a table for a translation).
-std::shared_ptr<const erp::Motion> make_motion(const Scene& scene, const WallSpec& wall);
+/// The motion of a wall that has a motion block (the table, if any, read here: InputError with
+/// the table's file and line).
+std::shared_ptr<const erp::Motion> make_motion(const WallSpec& wall);
 
 /// The wall called `name`; fail_at(line, key) if there is none or it has no motion.
 const WallSpec& moving_wall(const Scene& scene, const std::string& name, int line,

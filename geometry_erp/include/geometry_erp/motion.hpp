@@ -51,6 +51,8 @@ private:
 class TableTranslation final : public Motion {
 public:
   explicit TableTranslation(const std::string& csv_path, double scale = 1.0);
+  /// Along one direction: columns time, s; d(t) = s(t) `direction` (its length scales s).
+  TableTranslation(const std::string& csv_path, const Vec2& direction);
   RigidKinematics at(double t) const override;
 
 private:
