@@ -68,7 +68,7 @@ void validate(const FluidOptions& o) {
 
 EmpsFluid::EmpsFluid(const FluidOptions& options, const std::vector<Vec2>& positions,
                      erp::WallSet& walls)
-    : options_((validate(options), options)), walls_(&walls),
+    : options_((validate(options), options)),
       locator_(erp::make_wall_locator(walls, options.r_e())),
       z_(options.l0, options.r_e(), erp::QuadraticWeight{options.r_e()}), r_e_(options.r_e()),
       n0_(erp::lattice_n0(options.l0, r_e_, erp::QuadraticWeight{r_e_})),

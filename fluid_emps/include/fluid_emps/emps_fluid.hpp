@@ -102,7 +102,6 @@ private:
   void damp(double t, double dt);
 
   FluidOptions options_;
-  erp::WallSet* walls_;
   std::unique_ptr<erp::WallLocator> locator_;
   erp::WallWeightTable z_;
   double r_e_, n0_, lambda0_;
