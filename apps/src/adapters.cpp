@@ -88,17 +88,28 @@ void StructureAdapter::advance(double, double dt) {
   const auto& report = structure_.advance(dt);
   newton_iterations_ += report.iterations;
   newton_max_ = std::max(newton_max_, report.iterations);
+  newton_halvings_ += report.halvings;
+  steps_with_halvings_ += report.halvings > 0 ? 1 : 0;
+  if (report.substeps > 1) ++substepped_steps_, substeps_ += report.substeps;
 }
 
 void StructureAdapter::write_state(StateArchive& archive) const {
   structure_.write_state(archive, "structure/");
   archive.put("run/structure/newton", std::vector<std::int64_t>{newton_iterations_, newton_max_});
+  archive.put("run/structure/halvings",
+              std::vector<std::int64_t>{newton_halvings_, steps_with_halvings_, substepped_steps_,
+                                        substeps_});
 }
 
 void StructureAdapter::read_state(const StateArchive& archive) {
   structure_.read_state(archive, "structure/");
   const auto& counts = archive.integers("run/structure/newton", 2);
   newton_iterations_ = counts[0], newton_max_ = static_cast<int>(counts[1]);
+  if (archive.all_integers().count("run/structure/halvings")) { // absent before the safeguard
+    const auto& h = archive.integers("run/structure/halvings", 4);
+    newton_halvings_ = h[0], steps_with_halvings_ = h[1];
+    substepped_steps_ = h[2], substeps_ = h[3];
+  }
 }
 
 coupling::InterfaceMotion StructureAdapter::interface_motion() const {

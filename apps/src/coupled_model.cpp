@@ -171,7 +171,12 @@ void CoupledModel::report(JsonObject& run) const {
       .add("newton_iterations_mean",
            s.steps ? static_cast<double>(structure_adapter_->newton_iterations()) /
                          static_cast<double>(s.steps)
-                   : 0.0);
+                   : 0.0)
+      .add("newton_halvings", static_cast<long long>(structure_adapter_->newton_halvings()))
+      .add("steps_with_newton_halvings",
+           static_cast<long long>(structure_adapter_->steps_with_halvings()))
+      .add("substepped_steps", static_cast<long long>(structure_adapter_->substepped_steps()))
+      .add("substeps", static_cast<long long>(structure_adapter_->substeps()));
   run.add("coupling", c);
 }
 

@@ -242,11 +242,18 @@ StructureSpec read_structure(Section s) {
   st.line = s.line();
   st.name = s.text("name", "structure name (probes refer to it)");
   st.mesh = read_mesh(s.required_block("mesh", "the T6 mesh"));
-  auto mat = s.required_block("material", "St. Venant-Kirchhoff material");
+  auto mat = s.required_block("material", "hyperelastic material (eq. 35 by default)");
   st.youngs_modulus = mat.real("youngs_modulus", Range::positive(), "E, Pa");
   st.poisson_ratio = mat.real("poisson_ratio", Range::open(-1.0, 0.5), "nu");
   st.density = mat.real("density", Range::positive(), "rho_s, kg/m^3");
   st.plane = mat.choice("plane", {"strain", "stress"}, "strain", "2D idealisation");
+  st.material_model =
+      mat.choice("model", {"saint_venant_kirchhoff", "neo_hookean"}, "saint_venant_kirchhoff",
+                 "strain energy: the paper's St. Venant-Kirchhoff (eq. 35), or compressible "
+                 "neo-Hookean (plane strain only), which cannot be crushed flat by a finite "
+                 "load (docs/structure_fem.md)");
+  if (st.material_model == "neo_hookean" && st.plane != "strain")
+    mat.fail("model", "neo_hookean is implemented in plane strain only (plane: strain)");
   mat.finish();
   st.clamped = s.names("clamped", {}, "boundary tags whose nodes are fixed");
   st.clamped_motion =
@@ -270,6 +277,11 @@ StructureSpec read_structure(Section s) {
                                       "increment norm relative to the displacement norm");
     st.newton_max_iterations = nr->integer("max_iterations", 20, Range::closed(1, 1000),
                                            "iterations before the run stops");
+    st.newton_substep_levels = nr->integer(
+        "substep_levels", 0, Range::closed(0, 10),
+        "a step whose Newton fails (no convergence, or an inverted element) is retried as 2, 4, "
+        "... 2^levels sub-steps with the loads linear in time, each to the same tolerances; "
+        "counted in run.json (docs/structure_fem.md); 0: the run stops");
     nr->finish();
   }
   st.linear_solver = s.choice("linear_solver", {"cholmod", "umfpack", "ldlt", "cg"}, "cholmod",

@@ -100,6 +100,9 @@ std::unique_ptr<fem::Structure> build_structure(const Scene& scene, const Struct
   o.material.density = spec.density;
   o.material.plane =
       spec.plane == "stress" ? fem::PlaneModel::plane_stress : fem::PlaneModel::plane_strain;
+  o.material.model = spec.material_model == "neo_hookean"
+                         ? fem::MaterialModel::neo_hookean
+                         : fem::MaterialModel::saint_venant_kirchhoff;
   o.gravity = scene.gravity;
   fem::PrescribedMotion clamped_motion; // empty: fixed
   if (const auto frame = tank_frame(scene, spec)) {
@@ -114,6 +117,7 @@ std::unique_ptr<fem::Structure> build_structure(const Scene& scene, const Struct
   o.newton.residual_rtol = spec.newton_tolerance;
   o.newton.increment_rtol = spec.increment_tolerance;
   o.newton.max_iterations = spec.newton_max_iterations;
+  o.newton.max_substep_levels = spec.newton_substep_levels;
   o.linear_solver.kind = solver_kind(spec.linear_solver);
   fem::Vector loads = fem::Vector::Zero(2 * static_cast<Eigen::Index>(mesh.num_nodes()));
   for (const auto& l : spec.loads) {
@@ -148,6 +152,9 @@ void StructureModel::advance(double /*time*/, double dt) {
   const auto& report = structure_->advance(dt);
   newton_iterations_ += report.iterations;
   newton_max_ = std::max(newton_max_, report.iterations);
+  newton_halvings_ += report.halvings;
+  steps_with_halvings_ += report.halvings > 0 ? 1 : 0;
+  if (report.substeps > 1) ++substepped_steps_, substeps_ += report.substeps;
   ++steps_;
 }
 
@@ -196,6 +203,9 @@ void StructureModel::write_state(StateArchive& archive) const {
   structure_->write_state(archive, prefix);
   archive.put("run/" + prefix + "newton",
               std::vector<std::int64_t>{newton_iterations_, steps_, newton_max_});
+  archive.put("run/" + prefix + "halvings",
+              std::vector<std::int64_t>{newton_halvings_, steps_with_halvings_, substepped_steps_,
+                                        substeps_});
 }
 
 void StructureModel::read_state(const StateArchive& archive) {
@@ -203,6 +213,11 @@ void StructureModel::read_state(const StateArchive& archive) {
   structure_->read_state(archive, prefix);
   const auto& counts = archive.integers("run/" + prefix + "newton", 3);
   newton_iterations_ = counts[0], steps_ = counts[1], newton_max_ = static_cast<int>(counts[2]);
+  if (archive.all_integers().count("run/" + prefix + "halvings")) { // absent before the safeguard
+    const auto& h = archive.integers("run/" + prefix + "halvings", 4);
+    newton_halvings_ = h[0], steps_with_halvings_ = h[1];
+    substepped_steps_ = h[2], substeps_ = h[3];
+  }
 }
 
 void StructureModel::report(JsonObject& run) const {
@@ -211,7 +226,11 @@ void StructureModel::report(JsonObject& run) const {
       .add("elements", static_cast<long long>(structure_->mesh().num_elements()))
       .add("newton_iterations_mean",
            steps_ ? static_cast<double>(newton_iterations_) / static_cast<double>(steps_) : 0.0)
-      .add("newton_iterations_max", newton_max_);
+      .add("newton_iterations_max", newton_max_)
+      .add("newton_halvings", static_cast<long long>(newton_halvings_))
+      .add("steps_with_newton_halvings", static_cast<long long>(steps_with_halvings_))
+      .add("substepped_steps", static_cast<long long>(substepped_steps_))
+      .add("substeps", static_cast<long long>(substeps_));
   run.add("structure_" + name_, s);
 }
 

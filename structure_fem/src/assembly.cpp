@@ -108,7 +108,7 @@ void Assembler::assemble(const Vector& u, Vector& f_int, SparseMatrix* K) {
       std::ostringstream s;
       s << "element " << mesh_.element_label[e] << ": det F = " << detF_[e]
         << " <= 0 at a quadrature point (inverted element)";
-      throw RunError(s.str());
+      throw InvertedElement(s.str());
     }
   f_int.setZero(2 * static_cast<Eigen::Index>(mesh_.num_nodes()));
   for (std::size_t e = 0; e < elements_.size(); ++e)

@@ -28,6 +28,11 @@ void validate(const StructureOptions& o) {
   non_negative("increment_rtol", n.increment_rtol);
   non_negative("increment_atol", n.increment_atol);
   non_negative("roundoff_rtol", n.roundoff_rtol);
+  if (n.max_substep_levels < 0 || n.max_substep_levels > 10)
+    throw InputError("newton: max_substep_levels = " + std::to_string(n.max_substep_levels) +
+                     ": must be in [0, 10]");
+  if (n.max_halvings < 0)
+    throw InputError("newton: max_halvings = " + std::to_string(n.max_halvings) + ": must be >= 0");
   if (!o.gravity.allFinite()) throw InputError("structure: gravity must be finite");
 }
 
@@ -35,7 +40,7 @@ Structure::Structure(Mesh mesh, StructureOptions options)
     : mesh_(std::move(mesh)), options_(std::move(options)) {
   validate(options_);
   validate_mesh(mesh_);
-  material_ = std::make_unique<StVenantKirchhoff>(options_.material);
+  material_ = make_material(options_.material);
   dofs_ = std::make_unique<DofMap>(mesh_, options_.clamped);
   assembler_ = std::make_unique<Assembler>(mesh_, *material_, *dofs_);
   solver_ = make_linear_solver(options_.linear_solver);
@@ -137,10 +142,11 @@ void Structure::newton(Vector& u, Residual&& residual, StepReport& report) {
   const NewtonOptions& o = options_.newton;
   const double force_scale = dofs_->restrict_to_free(f_ext_next_ + f_g_).norm();
   report.history.clear();
+  report.halvings = 0;
   Vector R, du;
   double R_ref = 0.0;
+  residual(u, R);
   for (int k = 0;; ++k) {
-    residual(u, R);
     const double r = R.norm();
     report.final_residual = r;
     if (!std::isfinite(r))
@@ -168,14 +174,72 @@ void Structure::newton(Vector& u, Residual&& residual, StepReport& report) {
     }
     int its = 0;
     factor_and_solve(K_eff_, -R, du, its);
-    dofs_->add_free(du, u);
     report.history.push_back({r, du.norm(), its});
+    for (int halving = 0;; ++halving) { // u + du, or u + du / 2^m if u + du is inverted
+      Vector u_trial = u;
+      dofs_->add_free(du, u_trial);
+      try {
+        residual(u_trial, R);
+      } catch (const InvertedElement& e) {
+        if (halving == o.max_halvings)
+          throw InvertedElement(std::string(e.what()) + " in Newton iteration " +
+                                std::to_string(k + 1) + " after " + std::to_string(halving) +
+                                " halvings of the increment");
+        du *= 0.5;
+        ++report.halvings;
+        continue;
+      }
+      u = std::move(u_trial);
+      break;
+    }
   }
 }
 
 const StepReport& Structure::advance(double dt) {
   if (!(dt > 0.0) || !std::isfinite(dt))
     throw InputError("structure: time step dt = " + std::to_string(dt) + ": must be > 0");
+  const StructureState start = state_;
+  const Vector f_end = f_ext_next_;
+  std::string first_failure;
+  for (int level = 0; level <= options_.newton.max_substep_levels; ++level) {
+    const int n = 1 << level; // sub-steps dt / n, the loads linear in time from f^n to f^{n+1}
+    StepReport total;
+    try {
+      for (int i = 1; i <= n; ++i) {
+        f_ext_next_ = i == n ? f_end : Vector(start.f_ext + (f_end - start.f_ext) * i / n);
+        const StepReport r = step(i == n ? start.time + dt - state_.time : dt / n);
+        total.iterations += r.iterations;
+        total.halvings += r.halvings;
+        total.final_residual = r.final_residual;
+        total.history.insert(total.history.end(), r.history.begin(), r.history.end());
+      }
+    } catch (const RunError& e) {
+      if (level == 0) first_failure = e.what();
+      state_ = start;
+      f_ext_next_ = f_end;
+      continue;
+    }
+    if (level > 0) { // the work integral over the sub-steps, with the step's forces as one
+      state_.external_work =
+          start.external_work + 0.5 * (start.f_ext + f_end).dot(state_.u - start.u);
+    }
+    state_.step = start.step + 1;
+    state_.time = start.time + dt;
+    total.step = state_.step;
+    total.time = state_.time;
+    total.substeps = n;
+    report_ = std::move(total);
+    return report_;
+  }
+  std::ostringstream msg;
+  msg << first_failure;
+  if (options_.newton.max_substep_levels > 0)
+    msg << "; also with " << (1 << options_.newton.max_substep_levels) << " sub-steps";
+  msg << " (structure step " << start.step + 1 << ", t = " << start.time + dt << ")";
+  throw RunError(msg.str());
+}
+
+StepReport Structure::step(double dt) {
   const Newmark nm{options_.newmark.beta, options_.newmark.gamma, dt};
   const StructureState& s = state_;
   StepReport report;
@@ -195,13 +259,7 @@ const StepReport& Structure::advance(double dt) {
         c0 * Eigen::Map<const Eigen::VectorXd>(M_.valuePtr(), nnz) +
         Eigen::Map<const Eigen::VectorXd>(K_.valuePtr(), nnz);
   };
-  try {
-    if (dofs_->num_free() > 0) newton(u, residual, report);
-  } catch (const RunError& e) {
-    std::ostringstream msg;
-    msg << e.what() << " (structure step " << report.step << ", t = " << report.time << ")";
-    throw RunError(msg.str());
-  }
+  if (dofs_->num_free() > 0) newton(u, residual, report);
   Vector a = nm.acceleration(u, s.u, s.v, s.a);
   Vector v = nm.velocity(a, s.v, s.a); // eq. 41
   for (const auto& entry : constrained_) {
@@ -215,8 +273,7 @@ const StepReport& Structure::advance(double dt) {
   state_.f_ext = f_ext_next_;
   state_.time = report.time;
   state_.step = report.step;
-  report_ = std::move(report);
-  return report_;
+  return report;
 }
 
 std::vector<StepReport> Structure::solve_static(const StaticOptions& options) {

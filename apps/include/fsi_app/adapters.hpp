@@ -56,6 +56,10 @@ public:
   /// Newton iterations of all advances so far, and the most in one.
   long newton_iterations() const { return newton_iterations_; }
   int newton_max() const { return newton_max_; }
+  long newton_halvings() const { return newton_halvings_; }
+  long steps_with_halvings() const { return steps_with_halvings_; }
+  long substepped_steps() const { return substepped_steps_; }
+  long substeps() const { return substeps_; }
 
 private:
   fem::Structure& structure_;
@@ -64,6 +68,8 @@ private:
   std::optional<fem::StructureState> saved_;
   long newton_iterations_ = 0;
   int newton_max_ = 0;
+  long newton_halvings_ = 0, steps_with_halvings_ = 0; ///< Newton safeguard (Structure::newton)
+  long substepped_steps_ = 0, substeps_ = 0;           ///< retried steps, their sub-steps
 };
 
 } // namespace fsi::app

@@ -89,13 +89,15 @@ struct StructureSpec {
   MeshSpec mesh;
   double youngs_modulus = 0.0, poisson_ratio = 0.0, density = 0.0;
   std::string plane;                  ///< strain | stress
+  std::string material_model;         ///< saint_venant_kirchhoff | neo_hookean
   std::vector<std::string> clamped;   ///< boundary tags held fixed
   std::string clamped_motion;         ///< wall whose rigid motion the clamped nodes follow
   std::vector<std::string> interface; ///< boundary tags wetted by the fluid
   double newmark_beta = 0.3025, newmark_gamma = 0.6;
   double newton_tolerance = 1e-8, increment_tolerance = 1e-10;
   int newton_max_iterations = 20;
-  std::string linear_solver; ///< cg | cholmod | umfpack | ldlt
+  int newton_substep_levels = 0; ///< retries of a failed step with 2^level sub-steps
+  std::string linear_solver;     ///< cg | cholmod | umfpack | ldlt
   std::vector<PointLoadSpec> loads;
 };
 

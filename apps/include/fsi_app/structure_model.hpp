@@ -46,6 +46,8 @@ private:
   std::vector<std::pair<std::string, int>> probe_nodes_; // probe name -> node
   long newton_iterations_ = 0, steps_ = 0;
   int newton_max_ = 0;
+  long newton_halvings_ = 0, steps_with_halvings_ = 0; ///< Newton safeguard (Structure::newton)
+  long substepped_steps_ = 0, substeps_ = 0;           ///< retried steps, their sub-steps
 };
 
 } // namespace fsi::app

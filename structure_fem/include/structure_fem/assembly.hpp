@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "fsi/core/error.hpp"
 #include "structure_fem/element_t6.hpp"
 #include "structure_fem/mesh.hpp"
 
@@ -52,6 +53,12 @@ private:
   std::vector<int> free_of_dof_;
   std::vector<int> condition_of_dof_;
   int num_free_ = 0;
+};
+
+/// det F <= 0 at a quadrature point: thrown by Assembler::assemble; Newton halves an increment
+/// that leads there (Structure::newton), any other caller stops the run.
+struct InvertedElement : RunError {
+  using RunError::RunError;
 };
 
 class Assembler {

@@ -34,6 +34,14 @@ struct NewtonOptions {
   double increment_rtol = 1e-8;  ///< >= 0
   double increment_atol = 1e-14; ///< [m], >= 0
   double roundoff_rtol = 1e-13;  ///< >= 0
+  /// An iterate u + du with an inverted element (det F <= 0) is not a configuration of the body:
+  /// du is halved, at most this many times, before the step fails with the inversion. The
+  /// convergence test uses the full ||du||, and the converged u has det F > 0 everywhere.
+  int max_halvings = 10; ///< >= 0
+  /// A dynamic step that fails (Newton does not converge, or an element inverts) is taken again
+  /// from the same state as 2, 4, ... 2^max_substep_levels sub-steps, the external forces linear
+  /// in time between those of t^n and t^{n+1}; each sub-step meets the same tolerances. 0: off.
+  int max_substep_levels = 0; ///< in [0, 10]
 };
 
 struct StructureOptions {
@@ -59,6 +67,8 @@ struct StepReport {
   long step = 0;      ///< dynamic: index of the step just taken; static: load step
   double time = 0.0;  ///< dynamic: t^{n+1}; static: load factor
   int iterations = 0; ///< Newton iterations (linear solves)
+  int halvings = 0;   ///< increments halved because the iterate had an inverted element
+  int substeps = 1;   ///< dynamic: sub-steps the step needed (1: none; NewtonOptions)
   double final_residual = 0.0;
   std::vector<NewtonIterationLog> history;
 };
@@ -115,9 +125,10 @@ public:
 
   /// One Newmark step (eqs. 40-41) t -> t + dt, Newton–Raphson on u^{n+1} starting from the
   /// predictor (eq. 64). Constrained dofs take their prescribed u, v, a at t + dt; the inertia of
-  /// the prescribed accelerations enters the free equations through the consistent mass. Throws
-  /// RunError (with step and time) if Newton or the linear solver fails or an element inverts;
-  /// the state is then unchanged.
+  /// the prescribed accelerations enters the free equations through the consistent mass. A failed
+  /// step is retried with sub-steps if NewtonOptions::max_substep_levels > 0. Throws RunError
+  /// (with step and time) if Newton or the linear solver fails or an element inverts at every
+  /// level; the state is then unchanged.
   const StepReport& advance(double dt);
 
   /// Static equilibrium f_int(u) = f_ext + f_g with load stepping from the current u; sets
@@ -163,6 +174,8 @@ public:
 private:
   /// Newton on the free dofs; residual(u, R, K) fills R (free) and K (effective tangent).
   template <class Residual> void newton(Vector& u, Residual&& residual, StepReport& report);
+  /// One Newmark step from state_ with f_ext_next_; throws RunError without step and time.
+  StepReport step(double dt);
   void factor_and_solve(const SparseMatrix& K, const Vector& rhs, Vector& x, int& iterations);
   /// Sets the constrained entries of u, v, a to the prescribed motion at time t.
   void prescribe(double t, Vector& u, Vector& v, Vector& a) const;
