@@ -13,6 +13,7 @@
 #include <numbers>
 #include <omp.h>
 #include <sstream>
+#include <type_traits>
 
 namespace fsi::emps {
 
@@ -168,35 +169,48 @@ void EmpsFluid::viscosity() {
   const double nu = options_.viscosity, mu_V = options_.density * nu * options_.volume();
   const double nu_art = options_.artificial_viscosity * options_.sound_speed * options_.l0;
   scratch_.resize(2 * n);
-  parallel_for(n, [&](std::size_t i) {
-    const double xi = p.x[i], yi = p.y[i], vxi = p.vx[i], vyi = p.vy[i];
-    double sx = 0, sy = 0, ax = 0, ay = 0;
-    const std::uint32_t* row = neighbours_.row(i);
-    for (std::uint32_t k = 0, c = neighbours_.count(i); k < c; ++k) {
-      const std::uint32_t j = row[k];
-      const double dx = p.x[j] - xi, dy = p.y[j] - yi, r2 = dx * dx + dy * dy;
-      if (r2 >= re2) continue;
-      const double w = weight(std::sqrt(r2), inv_re);
-      const double dvx = p.vx[j] - vxi, dvy = p.vy[j] - vyi;
-      sx += dvx * w;
-      sy += dvy * w;
-      const double approach = dvx * dx + dvy * dy; // < 0: the pair closes in
-      if (approach < 0 && r2 > 0) {
-        const double s = approach * w / r2; // ((v_j - v_i) . e) e w / r
-        ax += s * dx;
-        ay += s * dy;
+  // The closing-pair sum only when alpha > 0: it costs as much as the rest of the loop.
+  const auto sweep = [&](auto artificial) {
+    parallel_for(n, [&](std::size_t i) {
+      const double xi = p.x[i], yi = p.y[i], vxi = p.vx[i], vyi = p.vy[i];
+      double sx = 0, sy = 0, ax = 0, ay = 0;
+      const std::uint32_t* row = neighbours_.row(i);
+      for (std::uint32_t k = 0, c = neighbours_.count(i); k < c; ++k) {
+        const std::uint32_t j = row[k];
+        const double dx = p.x[j] - xi, dy = p.y[j] - yi, r2 = dx * dx + dy * dy;
+        if (r2 >= re2) continue;
+        const double w = weight(std::sqrt(r2), inv_re);
+        const double dvx = p.vx[j] - vxi, dvy = p.vy[j] - vyi;
+        sx += dvx * w;
+        sy += dvy * w;
+        if constexpr (decltype(artificial)::value) {
+          const double approach = dvx * dx + dvy * dy; // < 0: the pair closes in
+          if (approach < 0 && r2 > 0) {
+            const double s = approach * w / r2; // ((v_j - v_i) . e) e w / r
+            ax += s * dx;
+            ay += s * dy;
+          }
+        }
       }
-    }
-    Vec2 m1 = Vec2::Zero(), m2 = Vec2::Zero();
-    if (nu > 0 && hits_.segment[i] >= 0)
-      m1 = c_lap * mirror_laplacian(i, hits_.x_wall[i], hits_.n_wall[i], hits_.v_wall[i]);
-    if (nu > 0 && hits_.segment2[i] >= 0)
-      m2 = c_lap * mirror_laplacian(i, hits_.x_wall2[i], hits_.n_wall2[i], hits_.v_wall2[i]);
-    scratch_[2 * i] = nu * (c_lap * sx + m1.x() + m2.x()) + nu_art * c_lap * ax;
-    scratch_[2 * i + 1] = nu * (c_lap * sy + m1.y() + m2.y()) + nu_art * c_lap * ay;
-    visc_wall_[i] = mu_V * m1; // V_i mu R <lap v>_i' (eq. 52, viscous wall part)
-    visc_wall2_[i] = mu_V * m2;
-  });
+      Vec2 m1 = Vec2::Zero(), m2 = Vec2::Zero();
+      if (nu > 0 && hits_.segment[i] >= 0)
+        m1 = c_lap * mirror_laplacian(i, hits_.x_wall[i], hits_.n_wall[i], hits_.v_wall[i]);
+      if (nu > 0 && hits_.segment2[i] >= 0)
+        m2 = c_lap * mirror_laplacian(i, hits_.x_wall2[i], hits_.n_wall2[i], hits_.v_wall2[i]);
+      scratch_[2 * i] = nu * (c_lap * sx + m1.x() + m2.x());
+      scratch_[2 * i + 1] = nu * (c_lap * sy + m1.y() + m2.y());
+      if constexpr (decltype(artificial)::value) {
+        scratch_[2 * i] += nu_art * c_lap * ax;
+        scratch_[2 * i + 1] += nu_art * c_lap * ay;
+      }
+      visc_wall_[i] = mu_V * m1; // V_i mu R <lap v>_i' (eq. 52, viscous wall part)
+      visc_wall2_[i] = mu_V * m2;
+    });
+  };
+  if (nu_art > 0)
+    sweep(std::true_type{});
+  else
+    sweep(std::false_type{});
 }
 
 // n*_i = sum_j w_ij + z(r_wall,i) (eqs. 9, 20; or scaled, see WallDensity); p_i = c^2 rho/n0 (n*_i
