@@ -29,7 +29,7 @@ inline double weight(double r, double inv_re) {
 }
 
 std::size_t first_index(std::size_t n, const auto& bad) {
-  return parallel_reduce(
+  return parallel_reduce_balanced(
       n, none, [&](std::size_t i) { return bad(i) ? i : none; },
       [](std::size_t a, std::size_t b) { return std::min(a, b); });
 }
@@ -171,7 +171,7 @@ void EmpsFluid::viscosity() {
   scratch_.resize(2 * n);
   // The closing-pair sum only when alpha > 0: it costs as much as the rest of the loop.
   const auto sweep = [&](auto artificial) {
-    parallel_for(n, [&](std::size_t i) {
+    parallel_for_balanced(n, [&](std::size_t i) {
       const double xi = p.x[i], yi = p.y[i], vxi = p.vx[i], vyi = p.vy[i];
       double sx = 0, sy = 0, ax = 0, ay = 0;
       const std::uint32_t* row = neighbours_.row(i);
@@ -223,12 +223,12 @@ void EmpsFluid::density_and_pressure() {
   const double stiffness = options_.sound_speed * options_.sound_speed * options_.density / n0_;
   const double surface = options_.beta * n0_;
   const bool scaled = options_.wall_density == WallDensity::scaled;
-  const double pairs = parallel_reduce(
-      n, 0.0,
+  const std::size_t pairs = parallel_reduce_balanced(
+      n, std::size_t{0},
       [&](std::size_t i) {
         const double xi = p.x[i], yi = p.y[i];
         double pnd = 0;
-        int within = 0;
+        std::size_t within = 0;
         const std::uint32_t* row = neighbours_.row(i);
         for (std::uint32_t k = 0, c = neighbours_.count(i); k < c; ++k) {
           const std::uint32_t j = row[k];
@@ -245,10 +245,10 @@ void EmpsFluid::density_and_pressure() {
         const bool free = pnd < surface;
         p.surface[i] = free;
         p.p[i] = free ? 0.0 : stiffness * (pnd - n0_);
-        return static_cast<double>(within);
+        return within;
       },
-      [](double a, double b) { return a + b; });
-  mean_neighbours_ = n ? pairs / static_cast<double>(n) : 0.0;
+      [](std::size_t a, std::size_t b) { return a + b; });
+  mean_neighbours_ = n ? static_cast<double>(pairs) / static_cast<double>(n) : 0.0;
 }
 
 // The virtual lattice both faces count at a corner, counted once: exact for a right angle
@@ -294,7 +294,7 @@ void EmpsFluid::pressure_gradient(double dt) {
   const double c_grad = d / n0_;
   const double inv_rho = 1.0 / options_.density, V = options_.volume();
   scratch_.resize(2 * n);
-  parallel_for(n, [&](std::size_t i) {
+  parallel_for_balanced(n, [&](std::size_t i) {
     const double xi = p.x[i], yi = p.y[i], pi = p.p[i];
     double gx = 0, gy = 0;
     const std::uint32_t* row = neighbours_.row(i);

@@ -16,7 +16,7 @@ bool NeighborList::build(const CellGrid& grid, const double* x, const double* y,
   y_build_.assign(y, y + n);
   const double r2 = radius * radius;
   const std::size_t none = std::numeric_limits<std::size_t>::max();
-  const std::size_t bad = parallel_reduce(
+  const std::size_t bad = parallel_reduce_balanced(
       n, none,
       [&](std::size_t i) {
         std::uint32_t* out = &index_[i * capacity];

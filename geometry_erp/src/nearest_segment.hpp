@@ -114,7 +114,7 @@ template <class Point, class Visit>
 void batch_query(const WallSet& walls, double r_e, bool second_face, std::size_t n, Point&& point,
                  Visit&& visit, WallHits& hits) {
   hits.resize(n);
-  parallel_for(n, [&](std::size_t i) {
+  parallel_for_balanced(n, [&](std::size_t i) {
     const Vec2 p = point(i);
     Nearest best{-1, 0.0, r_e * r_e};
     visit(p, best.d2, [&](const SegmentGeometry& g) { consider_segment(g, p, best); });
