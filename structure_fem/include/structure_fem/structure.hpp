@@ -194,7 +194,6 @@ private:
   Vector f_g_, f_ext_next_, f_int_;
   StructureState state_;
   StepReport report_;
-  bool analysed_ = false;
 };
 
 } // namespace fsi::fem
