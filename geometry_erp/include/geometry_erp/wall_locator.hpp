@@ -61,7 +61,7 @@ inline constexpr LocatorKind default_locator = LocatorKind::grid;
 
 /// A spatial index over the segments of one WallSet, which must outlive it. Call update() after
 /// nodes move or segments are added, before the next query. Queries are const, run through
-/// fsi::parallel_for and do not allocate once `hits` has the particle count.
+/// fsi::parallel_for_balanced and do not allocate once `hits` has the particle count.
 class WallLocator {
 public:
   virtual ~WallLocator() = default;
