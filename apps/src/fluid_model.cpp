@@ -25,6 +25,8 @@ emps::FluidOptions fluid_options(const Scene& scene) {
   o.artificial_viscosity = f.artificial_viscosity;
   o.wall_density =
       f.wall_density == "scaled" ? emps::WallDensity::scaled : emps::WallDensity::added;
+  o.corner_faces = f.corner_faces;
+  o.convex_corners = f.convex_corners;
   o.gravity = scene.gravity;
   o.damping_time = f.damping_time;
   o.domain_min = f.domain_min;

@@ -187,6 +187,14 @@ FluidSpec read_fluid(Section s) {
       "wall part of pnd: added, n_i + z(r) as eq. 20; scaled, n_i + z max(1, n_i / (n0 - z)): "
       "the virtual particles compressed like the fluid next to them (equal to "
       "eq. 20 at rest and in expansion)");
+  f.corner_faces = s.boolean(
+      "corner_faces", true,
+      "at concave wall corners also apply the nearest other face (its z, mirror terms and "
+      "repulsion, the doubly counted quadrant once); false: the nearest wall only, eq. 18");
+  f.convex_corners =
+      s.boolean("convex_corners", true,
+                "at convex wall corners count the solid's wedge in pnd, not the half-plane of z(r) "
+                "(eq. 20 over-counts up to 17 % of n0 there; false: eq. 20 as in the paper)");
   f.damping_time =
       s.real("damping_time", 0.0, Range::non_negative(),
              "initial damping phase T_d: velocities damped at a rate 20/T_d (1 - t/T_d) "

@@ -223,6 +223,7 @@ void EmpsFluid::density_and_pressure() {
   const double stiffness = options_.sound_speed * options_.sound_speed * options_.density / n0_;
   const double surface = options_.beta * n0_;
   const bool scaled = options_.wall_density == WallDensity::scaled;
+  const bool convex = options_.convex_corners;
   const std::size_t pairs = parallel_reduce_balanced(
       n, std::size_t{0},
       [&](std::size_t i) {
@@ -240,6 +241,7 @@ void EmpsFluid::density_and_pressure() {
         double z = 0.0; // wall part (eq. 20), a corner's overlap counted once
         if (hits_.segment[i] >= 0) z += z_(hits_.r[i]);
         if (hits_.segment2[i] >= 0) z += z_(hits_.r2[i]) - corner_overlap(i);
+        if (convex && hits_.segment[i] >= 0) z += convex_correction(i);
         pnd += scaled ? z * std::max(1.0, pnd / std::max(n0_ - z, 0.25 * n0_)) : z;
         p.pnd[i] = pnd;
         const bool free = pnd < surface;
@@ -258,6 +260,40 @@ double EmpsFluid::corner_overlap(std::size_t i) const {
   const double share = std::acos(cos_turn) / (0.5 * std::numbers::pi);
   return share * erp::corner_weight_sum(hits_.r[i], hits_.r2[i], options_.l0, r_e_,
                                         erp::QuadraticWeight{r_e_});
+}
+
+// The solid at a convex corner is a wedge, not the half-plane that z(r) of the nearest face or
+// vertex assumes (eq. 20). For each convex end of the nearest segment within r_e: next to the
+// vertex (the vertex nearest) the wedge's lattice q(d_in, d_out) replaces z(r); next to a face,
+// the quadrant beyond each convex end's other face, q(r, depth behind it), is taken out. Exact on
+// the lattice for a right angle, scaled by turn / 90 degrees otherwise, as corner_overlap.
+double EmpsFluid::convex_correction(std::size_t i) const {
+  const erp::WallSet& walls = locator_->walls();
+  const int s = hits_.segment[i];
+  const auto& ends = walls.segments().node[static_cast<std::size_t>(s)];
+  const Vec2 x(particles_.x[i], particles_.y[i]);
+  const erp::QuadraticWeight w{r_e_};
+  double dz = 0.0;
+  for (int end = 0; end < 2; ++end) {
+    const int L = ends[static_cast<std::size_t>(end)];
+    const Vec2 d = x - walls.nodes().x[static_cast<std::size_t>(L)];
+    if (d.squaredNorm() >= r_e_ * r_e_) continue;
+    const auto joint = walls.convex_joint(L);
+    if (!joint) continue;
+    const double share = joint->turn / (0.5 * std::numbers::pi);
+    if (hits_.t[i] == static_cast<double>(end)) { // the vertex is the nearest point
+      const double q =
+          erp::corner_weight_sum(std::max(d.dot(joint->n_in), 0.0),
+                                 std::max(d.dot(joint->n_out), 0.0), options_.l0, r_e_, w);
+      return share * (q - z_(hits_.r[i]));
+    }
+    if (hits_.t[i] == 0.0 || hits_.t[i] == 1.0) continue; // the other end is nearest
+    const Vec2& n_other = s == joint->in_segment ? joint->n_out : joint->n_in;
+    const double behind = -d.dot(n_other);
+    if (behind > 0.0)
+      dz -= share * erp::corner_weight_sum(hits_.r[i], behind, options_.l0, r_e_, w);
+  }
+  return dz;
 }
 
 // R_ref <grad p>_i' (eqs. 25-26) without the d/n0 factor: the gradient sum at the mirror point

@@ -3,7 +3,9 @@
 #include "fsi/core/error.hpp"
 #include "fsi/core/state_archive.hpp"
 
+#include <algorithm>
 #include <cassert>
+#include <cmath>
 #include <string>
 
 namespace fsi::erp {
@@ -83,6 +85,24 @@ Vec2 WallSet::node_normal(int L, int fallback_segment) const {
   // A vanishing sum means two incident normals cancel: no side is defined by the node.
   if (norm < 1e-12) return segment_normal(fallback_segment);
   return sum / norm;
+}
+
+std::optional<ConvexJoint> WallSet::convex_joint(int L) const {
+  const auto& incident = incident_[static_cast<std::size_t>(L)];
+  if (incident.size() != 2) return std::nullopt;
+  int in = incident[0], out = incident[1];
+  if (segments_.node[static_cast<std::size_t>(in)][1] != L) std::swap(in, out);
+  const auto& [a, l_in] = segments_.node[static_cast<std::size_t>(in)];
+  const auto& [l_out, b] = segments_.node[static_cast<std::size_t>(out)];
+  if (l_in != L || l_out != L) return std::nullopt; // two segments meeting head to head
+  const Vec2& x = nodes_.x[static_cast<std::size_t>(L)];
+  const Vec2 u_in = (x - nodes_.x[static_cast<std::size_t>(a)]).normalized();
+  const Vec2 u_out = (nodes_.x[static_cast<std::size_t>(b)] - x).normalized();
+  // Fluid on the left: a right turn (u_in x u_out < 0) puts the solid inside the angle.
+  if (u_in.x() * u_out.y() - u_in.y() * u_out.x() >= 0.0) return std::nullopt;
+  const double turn = std::acos(std::clamp(u_in.dot(u_out), -1.0, 1.0));
+  if (turn <= convex_joint_min_turn) return std::nullopt;
+  return ConvexJoint{in, out, Vec2(-u_in.y(), u_in.x()), Vec2(-u_out.y(), u_out.x()), turn};
 }
 
 void WallSet::write_state(StateArchive& archive, const std::string& prefix) const {

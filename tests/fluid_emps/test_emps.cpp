@@ -78,6 +78,42 @@ TEST_CASE("emps: a lattice at rest in a tank, corners included, stays at rest wi
   }
 }
 
+TEST_CASE("emps: a lattice at rest around a block's convex corners has pnd = n0", "[emps]") {
+  // A 0.1 x 0.1 m block (an open polyline, clockwise: fluid outside) on a tank floor, fluid all
+  // round it. Near the block's top corners the solid is a quadrant, not the half-plane that
+  // z(r) of the nearest face or vertex counts: with the convex correction every particle reads
+  // n0 to round-off; eq. 20 alone over-counts by 17 % of n0 on the corner's diagonal.
+  const double l0 = 0.01;
+  erp::WallSet walls;
+  walls.add_polyline(std::vector<Vec2>{{0.0, 0.5}, {0.0, 0.0}, {0.5, 0.0}, {0.5, 0.5}}, false, 0);
+  walls.add_polyline(std::vector<Vec2>{{0.2, 0.0}, {0.2, 0.1}, {0.3, 0.1}, {0.3, 0.0}}, false, 1);
+  const auto positions =
+      erp::fill_lattice({0, 0}, l0, {{{0, 0}, {0.5, 0}, {0.5, 0.3}, {0, 0.3}}},
+                        {{{0.2, 0.0}, {0.3, 0.0}, {0.3, 0.1}, {0.2, 0.1}}}, &walls);
+  const double r_e = 3.1 * l0;
+  const auto near_top_corner = [&](double x, double y) {
+    return std::hypot(x - 0.2, y - 0.1) < r_e || std::hypot(x - 0.3, y - 0.1) < r_e;
+  };
+  for (const bool convex : {true, false}) {
+    auto options = water(l0);
+    options.convex_corners = convex;
+    emps::EmpsFluid fluid(options, positions, walls);
+    const auto& p = fluid.particles();
+    double worst = 0.0;
+    int corner_particles = 0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      if (p.y[i] > 0.3 - 3.5 * l0) continue; // the free surface's support is not full
+      worst = std::max(worst, std::abs(p.pnd[i] / fluid.n0() - 1.0));
+      corner_particles += near_top_corner(p.x[i], p.y[i]);
+    }
+    CHECK(corner_particles == 2 * 24); // lattice points within r_e of each corner, outside it
+    if (convex)
+      CHECK(worst < 1e-12);
+    else
+      CHECK_THAT(worst, WithinAbs(0.169, 0.001)); // z(0.71 l0) against the quadrant's lattice
+  }
+}
+
 TEST_CASE("emps: without gravity and walls, linear momentum is conserved to 1e-10 per step",
           "[emps]") {
   // The fluid-fluid gradient (eq. 10) is antisymmetric in pairs; an impulsively started blob

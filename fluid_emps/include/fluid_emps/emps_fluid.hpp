@@ -98,6 +98,7 @@ private:
                         const Vec2& v_wall) const;
   Vec2 repulsion(double r, const Vec2& n_wall) const;
   double corner_overlap(std::size_t i) const;
+  double convex_correction(std::size_t i) const;
   void remove_outside();
   void damp(double t, double dt);
 

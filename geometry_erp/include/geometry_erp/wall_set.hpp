@@ -13,6 +13,7 @@
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -35,6 +36,17 @@ struct WallSegments {
   std::vector<int> group;
   std::size_t size() const { return node.size(); }
 };
+
+/// A convex corner: a node joining an incoming segment (ending there) and an outgoing one
+/// (starting there) that turn towards the solid, so the solid's angle is 180 degrees - turn.
+struct ConvexJoint {
+  int in_segment, out_segment;
+  Vec2 n_in, n_out; ///< the two faces' fluid normals
+  double turn;      ///< angle between the faces' directions, radians
+};
+
+/// Joints turning by less than this are the gentle bends of a curved wall, not corners: 30 deg.
+inline constexpr double convex_joint_min_turn = 0.5235987755982988;
 
 /// Indices of what one add_* call created.
 struct WallRange {
@@ -78,6 +90,10 @@ public:
   /// True for the free end of an open polyline (a node on one segment only): beyond it there is
   /// no solid, so a particle whose nearest wall point is such a node is never behind the wall.
   bool open_end(int L) const { return incident_[static_cast<std::size_t>(L)].size() == 1; }
+  /// Node L as a convex corner at the current positions: exactly two incident segments, one
+  /// ending and one starting at L, turning right (towards the solid) by more than
+  /// convex_joint_min_turn; nullopt otherwise.
+  std::optional<ConvexJoint> convex_joint(int L) const;
 
 private:
   struct RigidPolyline {
