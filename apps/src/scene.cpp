@@ -191,10 +191,10 @@ FluidSpec read_fluid(Section s) {
       "corner_faces", true,
       "at concave wall corners also apply the nearest other face (its z, mirror terms and "
       "repulsion, the doubly counted quadrant once); false: the nearest wall only, eq. 18");
-  f.convex_corners =
-      s.boolean("convex_corners", true,
-                "at convex wall corners count the solid's wedge in pnd, not the half-plane of z(r) "
-                "(eq. 20 over-counts up to 17 % of n0 there; false: eq. 20 as in the paper)");
+  f.convex_corners = s.boolean(
+      "convex_corners", true,
+      "at convex wall corners count the solid's own virtual lattice in pnd and in the wall "
+      "pressure term (eqs. 20 and 25 assume a half-plane there; false: as in the paper)");
   f.damping_time =
       s.real("damping_time", 0.0, Range::non_negative(),
              "initial damping phase T_d: velocities damped at a rate 20/T_d (1 - t/T_d) "

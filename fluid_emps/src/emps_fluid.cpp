@@ -241,7 +241,7 @@ void EmpsFluid::density_and_pressure() {
         double z = 0.0; // wall part (eq. 20), a corner's overlap counted once
         if (hits_.segment[i] >= 0) z += z_(hits_.r[i]);
         if (hits_.segment2[i] >= 0) z += z_(hits_.r2[i]) - corner_overlap(i);
-        if (convex && hits_.segment[i] >= 0) z += convex_correction(i);
+        if (convex && hits_.segment[i] >= 0) z += convex_part(i).dz;
         pnd += scaled ? z * std::max(1.0, pnd / std::max(n0_ - z, 0.25 * n0_)) : z;
         p.pnd[i] = pnd;
         const bool free = pnd < surface;
@@ -262,38 +262,47 @@ double EmpsFluid::corner_overlap(std::size_t i) const {
                                         erp::QuadraticWeight{r_e_});
 }
 
-// The solid at a convex corner is a wedge, not the half-plane that z(r) of the nearest face or
-// vertex assumes (eq. 20). For each convex end of the nearest segment within r_e: next to the
-// vertex (the vertex nearest) the wedge's lattice q(d_in, d_out) replaces z(r); next to a face,
-// the quadrant beyond each convex end's other face, q(r, depth behind it), is taken out. Exact on
-// the lattice for a right angle, scaled by turn / 90 degrees otherwise, as corner_overlap.
-double EmpsFluid::convex_correction(std::size_t i) const {
+// The solid at a convex corner is a wedge, not the half-plane that z(r) and the mirror of the
+// nearest face or vertex assume (eqs. 20, 25). For each convex end of the nearest segment within
+// r_e: next to the vertex (the vertex nearest) the solid is the wedge's lattice, at distances
+// d_in, d_out from the two face lines; next to a face it is the half-plane less the quadrant
+// beyond each convex end's other face (depth h behind it). pnd counts that lattice (q instead of
+// z), and the wall's pressure term is that lattice's eq. 10 sum with p_i' = p_i (eq. 26), in
+// place of the mirror. Exact on the lattice at a right angle; a turn below 90 degrees mixes
+// with the half-plane in proportion turn / 90 degrees, as corner_overlap.
+EmpsFluid::ConvexPart EmpsFluid::convex_part(std::size_t i) const {
   const erp::WallSet& walls = locator_->walls();
   const int s = hits_.segment[i];
   const auto& ends = walls.segments().node[static_cast<std::size_t>(s)];
   const Vec2 x(particles_.x[i], particles_.y[i]);
+  const double r = hits_.r[i], l0 = options_.l0;
   const erp::QuadraticWeight w{r_e_};
-  double dz = 0.0;
+  ConvexPart part;
   for (int end = 0; end < 2; ++end) {
     const int L = ends[static_cast<std::size_t>(end)];
     const Vec2 d = x - walls.nodes().x[static_cast<std::size_t>(L)];
     if (d.squaredNorm() >= r_e_ * r_e_) continue;
     const auto joint = walls.convex_joint(L);
     if (!joint) continue;
-    const double share = joint->turn / (0.5 * std::numbers::pi);
+    const double share = std::min(joint->turn / (0.5 * std::numbers::pi), 1.0);
     if (hits_.t[i] == static_cast<double>(end)) { // the vertex is the nearest point
-      const double q =
-          erp::corner_weight_sum(std::max(d.dot(joint->n_in), 0.0),
-                                 std::max(d.dot(joint->n_out), 0.0), options_.l0, r_e_, w);
-      return share * (q - z_(hits_.r[i]));
+      const double a = std::max(d.dot(joint->n_in), 0.0), b = std::max(d.dot(joint->n_out), 0.0);
+      const Vec2 g = erp::corner_gradient_sum(a, b, l0, r_e_, w);
+      return {share * (erp::corner_weight_sum(a, b, l0, r_e_, w) - z_(r)), share,
+              -(g.x() * joint->n_in + g.y() * joint->n_out)};
     }
     if (hits_.t[i] == 0.0 || hits_.t[i] == 1.0) continue; // the other end is nearest
     const Vec2& n_other = s == joint->in_segment ? joint->n_out : joint->n_in;
-    const double behind = -d.dot(n_other);
-    if (behind > 0.0)
-      dz -= share * erp::corner_weight_sum(hits_.r[i], behind, options_.l0, r_e_, w);
+    const double h = -d.dot(n_other);
+    if (h <= 0.0) continue;
+    const Vec2& n_face = hits_.n_wall[i];
+    if (part.share == 0.0) part.g = -erp::wall_gradient_sum(r, l0, r_e_, w) * n_face;
+    const Vec2 g = erp::corner_gradient_sum(r, h, l0, r_e_, w); // points at -n_face, +n_other
+    part.dz -= share * erp::corner_weight_sum(r, h, l0, r_e_, w);
+    part.g -= share * (g.y() * n_other - g.x() * n_face);
+    part.share = std::max(part.share, share);
   }
-  return dz;
+  return part;
 }
 
 // R_ref <grad p>_i' (eqs. 25-26) without the d/n0 factor: the gradient sum at the mirror point
@@ -329,6 +338,7 @@ void EmpsFluid::pressure_gradient(double dt) {
   const double inv_re = 1.0 / r_e_, re2 = r_e_ * r_e_;
   const double c_grad = d / n0_;
   const double inv_rho = 1.0 / options_.density, V = options_.volume();
+  const bool convex = options_.convex_corners;
   scratch_.resize(2 * n);
   parallel_for_balanced(n, [&](std::size_t i) {
     const double xi = p.x[i], yi = p.y[i], pi = p.p[i];
@@ -345,9 +355,14 @@ void EmpsFluid::pressure_gradient(double dt) {
     // Wall parts R_ref <grad p>_i' + f_rep of each face (eqs. 25-27).
     Vec2 w1 = Vec2::Zero(), w2 = Vec2::Zero();
     const int s1 = hits_.segment[i], s2 = hits_.segment2[i];
-    if (s1 >= 0)
-      w1 = c_grad * mirror_gradient(i, hits_.x_wall[i], hits_.n_wall[i]) +
-           repulsion(hits_.r[i], hits_.n_wall[i]);
+    if (s1 >= 0) {
+      Vec2 mirror = mirror_gradient(i, hits_.x_wall[i], hits_.n_wall[i]);
+      if (convex) {
+        const ConvexPart part = convex_part(i);
+        mirror = (1.0 - part.share) * mirror + part.share * 2.0 * pi * part.g;
+      }
+      w1 = c_grad * mirror + repulsion(hits_.r[i], hits_.n_wall[i]);
+    }
     if (s2 >= 0)
       w2 = c_grad * mirror_gradient(i, hits_.x_wall2[i], hits_.n_wall2[i]) +
            repulsion(hits_.r2[i], hits_.n_wall2[i]);

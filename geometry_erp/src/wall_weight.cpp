@@ -30,6 +30,30 @@ double corner_weight_sum(double a, double b, double l0, double r_e, const Weight
   return q;
 }
 
+double wall_gradient_sum(double r, double l0, double r_e, const WeightFunction& w) {
+  const int n = reach(l0, r_e);
+  double g = 0.0;
+  for (int m = 0; r + 0.5 * l0 + m * l0 < r_e; ++m) {
+    const double dy = r + 0.5 * l0 + m * l0;
+    for (int i = -n; i <= n; ++i) {
+      const double rho2 = i * l0 * i * l0 + dy * dy;
+      g += dy / rho2 * w(std::sqrt(rho2));
+    }
+  }
+  return g;
+}
+
+Vec2 corner_gradient_sum(double a, double b, double l0, double r_e, const WeightFunction& w) {
+  Vec2 g = Vec2::Zero();
+  for (int m = 0; a + 0.5 * l0 + m * l0 < r_e; ++m)
+    for (int k = 0; b + 0.5 * l0 + k * l0 < r_e; ++k) {
+      const double da = a + 0.5 * l0 + m * l0, db = b + 0.5 * l0 + k * l0;
+      const double rho2 = da * da + db * db;
+      g += Vec2(da, db) * (w(std::sqrt(rho2)) / rho2);
+    }
+  return g;
+}
+
 double lattice_n0(double l0, double r_e, const WeightFunction& w) {
   const int n = reach(l0, r_e);
   double n0 = 0.0;

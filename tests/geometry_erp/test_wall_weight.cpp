@@ -94,3 +94,41 @@ TEST_CASE("erp: z(a) + z(b) - q(a, b) completes n_i to n0 in a right-angle corne
       }
   }
 }
+
+TEST_CASE("erp: eq. 10's lattice sums of a flat wall and of a convex corner balance the fluid's",
+          "[wall_weight]") {
+  // On the full lattice sum_j (x_j - x_i) w / r^2 = 0. Next to a flat wall (fluid at y > 0) the
+  // fluid part is +wall_gradient_sum along the normal; beside a convex corner (solid x > 0,
+  // y < 0) the three fluid quadrants' part is minus the solid quadrant's corner_gradient_sum.
+  const double l0 = 1.0;
+  for (const double r_e : {2.1, 3.1, 4.0}) {
+    const QuadraticWeight w{r_e};
+    const int reach = 6;
+    for (int k = 0; k < 4; ++k) { // flat wall, particle in row k, column 0
+      double gy = 0.0;
+      for (int row = 0; row < k + reach; ++row)
+        for (int i = -reach; i <= reach; ++i) {
+          const double dy = (row - k) * l0, r2 = i * l0 * i * l0 + dy * dy;
+          if (r2 > 0.0) gy += dy / r2 * w(std::sqrt(r2));
+        }
+      INFO("r_e = " << r_e << ", row " << k);
+      REQUIRE_THAT(gy, WithinAbs(wall_gradient_sum(0.5 * l0 + k * l0, l0, r_e, w), 1e-12));
+    }
+    for (int a = 0; a < 4; ++a) // particle at (-a', b') outside the corner, a' = l0/2 + a l0
+      for (int b = 0; b < 4; ++b) {
+        const double xa = -(0.5 + a) * l0, yb = (0.5 + b) * l0;
+        double gx = 0.0, gy = 0.0;
+        for (int i = -reach - a; i <= reach; ++i)
+          for (int j = -reach; j <= reach + b; ++j) {
+            const double x = (i + 0.5) * l0, y = (j + 0.5) * l0;
+            if (x > 0.0 && y < 0.0) continue; // the solid
+            const double dx = x - xa, dy = y - yb, r2 = dx * dx + dy * dy;
+            if (r2 > 0.0) gx += dx / r2 * w(std::sqrt(r2)), gy += dy / r2 * w(std::sqrt(r2));
+          }
+        const auto q = corner_gradient_sum(-xa, yb, l0, r_e, w); // towards +x and -y
+        INFO("r_e = " << r_e << ", a = " << a << ", b = " << b);
+        REQUIRE_THAT(gx + q.x(), WithinAbs(0.0, 1e-12));
+        REQUIRE_THAT(gy - q.y(), WithinAbs(0.0, 1e-12));
+      }
+  }
+}

@@ -98,7 +98,13 @@ private:
                         const Vec2& v_wall) const;
   Vec2 repulsion(double r, const Vec2& n_wall) const;
   double corner_overlap(std::size_t i) const;
-  double convex_correction(std::size_t i) const;
+  /// A convex corner's part of particle i's wall terms: pnd correction dz, and the solid's
+  /// lattice sum g of eq. 10 that replaces the mirror's in proportion `share`.
+  struct ConvexPart {
+    double dz = 0.0, share = 0.0;
+    Vec2 g = Vec2::Zero();
+  };
+  ConvexPart convex_part(std::size_t i) const;
   void remove_outside();
   void damp(double t, double dt);
 

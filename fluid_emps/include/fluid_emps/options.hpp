@@ -28,9 +28,10 @@ struct FluidOptions {
   /// nearest other face, geometry_erp's second face). false: the paper's nearest wall only
   /// (eq. 18), which leaks particles into 90-degree tank corners.
   bool corner_faces = true;
-  /// At convex corners count the virtual lattice of the solid's wedge, not the half-plane that
-  /// z(r) of the nearest face or vertex assumes. false: the paper's eq. 20 as it stands, which
-  /// over-counts pnd by up to 17 % of n0 next to a right-angle convex corner.
+  /// At convex corners count the solid's own virtual lattice (a wedge) in pnd and in the wall
+  /// pressure term, not the half-plane that eqs. 20 and 25 assume. false: the paper's equations,
+  /// which over-count pnd by up to 17 % of n0 beside a right-angle convex corner and drive a jet
+  /// away from it.
   bool convex_corners = true;
   Vec2 gravity = Vec2::Zero();
   double damping_time = 0.0; ///< T_d: velocities damped at rate 20/T_d (1 - t/T_d) for t < T_d

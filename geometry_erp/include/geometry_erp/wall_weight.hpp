@@ -6,6 +6,7 @@
 // the wall at y = -l0/2 - m l0 (m >= 0), the continuation of the fluid lattice; columns at
 // x = i l0 aligned with the particle at (0, r). z(r) = sum of w over the virtual particles, so a
 // particle on a fluid row with a full fluid lattice around it has n_i + z(r) = n0 exactly.
+#include "fsi/core/types.hpp"
 #include "geometry_erp/cubic_spline.hpp"
 #include "geometry_erp/weight.hpp"
 
@@ -23,6 +24,16 @@ double wall_weight_sum(double r, double l0, double r_e, const WeightFunction& w)
 /// and b from the two walls, virtual points at (a + l0/2 + m l0, b + l0/2 + k l0) behind both
 /// (m, k >= 0). z(a) + z(b) - q(a, b) is the wall part of pnd in the corner, exact on the lattice.
 double corner_weight_sum(double a, double b, double l0, double r_e, const WeightFunction& w);
+
+/// Eq. 10's geometric sum over the same virtual half-lattice as z(r): sum of (dy / rho^2) w(rho),
+/// dy the depth of a virtual point below the particle and rho its distance. With every virtual
+/// particle at pressure p_i, the wall part of <grad p>_i is -(d / n0) 2 p_i times this along n.
+double wall_gradient_sum(double r, double l0, double r_e, const WeightFunction& w);
+
+/// The same for corner_weight_sum's quadrant: the components (sum da / rho^2 w, sum db / rho^2 w)
+/// along the directions in which a and b grow, virtual points at da = a + l0/2 + m l0,
+/// db = b + l0/2 + k l0.
+Vec2 corner_gradient_sum(double a, double b, double l0, double r_e, const WeightFunction& w);
 
 /// n0 = sum_{j != i} w(|x_j - x_i|) over the full square lattice (eq. 9).
 double lattice_n0(double l0, double r_e, const WeightFunction& w);
