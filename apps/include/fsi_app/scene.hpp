@@ -65,7 +65,7 @@ struct FluidSpec {
   std::string wall_density;               ///< added | scaled
   double artificial_viscosity = 0.0;      ///< alpha of the closing-pair viscosity alpha c l0
   bool corner_faces = true;               ///< a concave corner's second face (z, mirrors)
-  bool convex_corners = true;             ///< the solid's wedge in pnd at convex corners
+  bool convex_corners = true;             ///< the solid's wedge in pnd and wall pressure
   std::vector<std::vector<Vec2>> regions; ///< closed polygons filled with particles
   Vec2 domain_min = Vec2::Zero();         ///< particles leaving this box are removed (and counted)
   Vec2 domain_max = Vec2::Zero();
