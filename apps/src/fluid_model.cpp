@@ -3,6 +3,7 @@
 #include "fsi/core/error.hpp"
 #include "fsi_app/wall_motion.hpp"
 #include "geometry_erp/fill.hpp"
+#include "particles/kernels.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -132,12 +133,12 @@ std::optional<double> FluidModel::probe(const ProbeSpec& probe) const {
     return front;
   }
   if (probe.quantity == "pressure") { // MPS-weighted mean over particles within r_e (eq. 8)
-    const double r_e = fluid_->options().r_e();
+    const particles::MpsWeight w_e(fluid_->options().r_e());
     double sum = 0.0, weights = 0.0;
     for (std::size_t i = 0; i < p.size(); ++i) {
       const double r = std::hypot(p.x[i] - probe.point->x(), p.y[i] - probe.point->y());
-      if (r >= r_e) continue;
-      const double w = (1.0 - r / r_e) * (1.0 - r / r_e);
+      if (r >= w_e.r_e) continue;
+      const double w = w_e.inside(r);
       sum += w * p.p[i];
       weights += w;
     }

@@ -4,7 +4,7 @@
 #include "fsi/core/parallel.hpp"
 #include "fsi/core/state_archive.hpp"
 #include "geometry_erp/mirror.hpp"
-#include "geometry_erp/weight.hpp"
+#include "particles/kernels.hpp"
 
 #include <algorithm>
 #include <array>
@@ -21,12 +21,6 @@ namespace {
 
 constexpr double d = 2.0; // number of dimensions
 constexpr std::size_t none = std::numeric_limits<std::size_t>::max();
-
-/// w(r) = (1 - r/r_e)^2 for r < r_e (eq. 8), with inv_re = 1/r_e.
-inline double weight(double r, double inv_re) {
-  const double s = 1.0 - r * inv_re;
-  return s * s;
-}
 
 std::size_t first_index(std::size_t n, const auto& bad) {
   return parallel_reduce_balanced(
@@ -71,9 +65,9 @@ EmpsFluid::EmpsFluid(const FluidOptions& options, const std::vector<Vec2>& posit
                      erp::WallSet& walls)
     : options_((validate(options), options)),
       locator_(erp::make_wall_locator(walls, options.r_e())),
-      z_(options.l0, options.r_e(), erp::QuadraticWeight{options.r_e()}), r_e_(options.r_e()),
-      n0_(erp::lattice_n0(options.l0, r_e_, erp::QuadraticWeight{r_e_})),
-      lambda0_(erp::lattice_lambda0(options.l0, r_e_, erp::QuadraticWeight{r_e_})),
+      z_(options.l0, options.r_e(), particles::MpsWeight(options.r_e())), r_e_(options.r_e()),
+      n0_(erp::lattice_n0(options.l0, r_e_, particles::MpsWeight(r_e_))),
+      lambda0_(erp::lattice_lambda0(options.l0, r_e_, particles::MpsWeight(r_e_))),
       grid_(options.domain_min, options.domain_max, r_e_ * (1.0 + options.skin)) {
   locator_->set_second_face(options.corner_faces);
   const std::size_t n = positions.size();
@@ -138,7 +132,8 @@ void EmpsFluid::query_walls() {
 Vec2 EmpsFluid::mirror_laplacian(std::size_t i, const Vec2& x_wall, const Vec2& n_wall,
                                  const Vec2& v_wall) const {
   const Particles& p = particles_;
-  const double inv_re = 1.0 / r_e_, re2 = r_e_ * r_e_;
+  const particles::MpsWeight w_e(r_e_);
+  const double re2 = r_e_ * r_e_;
   const bool no_slip = options_.wall_condition == WallCondition::no_slip;
   const Vec2 v_i(p.vx[i], p.vy[i]);
   const Vec2 v_m = no_slip ? erp::mirror_velocity_no_slip(v_i, v_wall, n_wall)
@@ -148,7 +143,7 @@ Vec2 EmpsFluid::mirror_laplacian(std::size_t i, const Vec2& x_wall, const Vec2& 
   grid_.for_each_near(mpx, mpy, [&](std::uint32_t j) {
     const double dx = p.x[j] - mpx, dy = p.y[j] - mpy, r2 = dx * dx + dy * dy;
     if (r2 >= re2) return;
-    const double w = weight(std::sqrt(r2), inv_re);
+    const double w = w_e.inside(std::sqrt(r2));
     ux += (p.vx[j] - v_m.x()) * w;
     uy += (p.vy[j] - v_m.y()) * w;
   });
@@ -164,7 +159,8 @@ void EmpsFluid::viscosity() {
   Timer timer(times_.viscosity);
   Particles& p = particles_;
   const std::size_t n = p.size();
-  const double inv_re = 1.0 / r_e_, re2 = r_e_ * r_e_;
+  const particles::MpsWeight w_e(r_e_);
+  const double re2 = r_e_ * r_e_;
   const double c_lap = 2.0 * d / (lambda0_ * n0_);
   const double nu = options_.viscosity, mu_V = options_.density * nu * options_.volume();
   const double nu_art = options_.artificial_viscosity * options_.sound_speed * options_.l0;
@@ -179,7 +175,7 @@ void EmpsFluid::viscosity() {
         const std::uint32_t j = row[k];
         const double dx = p.x[j] - xi, dy = p.y[j] - yi, r2 = dx * dx + dy * dy;
         if (r2 >= re2) continue;
-        const double w = weight(std::sqrt(r2), inv_re);
+        const double w = w_e.inside(std::sqrt(r2));
         const double dvx = p.vx[j] - vxi, dvy = p.vy[j] - vyi;
         sx += dvx * w;
         sy += dvy * w;
@@ -219,7 +215,8 @@ void EmpsFluid::density_and_pressure() {
   Timer timer(times_.density);
   Particles& p = particles_;
   const std::size_t n = p.size();
-  const double inv_re = 1.0 / r_e_, re2 = r_e_ * r_e_;
+  const particles::MpsWeight w_e(r_e_);
+  const double re2 = r_e_ * r_e_;
   const double stiffness = options_.sound_speed * options_.sound_speed * options_.density / n0_;
   const double surface = options_.beta * n0_;
   const bool scaled = options_.wall_density == WallDensity::scaled;
@@ -235,7 +232,7 @@ void EmpsFluid::density_and_pressure() {
           const std::uint32_t j = row[k];
           const double dx = p.x[j] - xi, dy = p.y[j] - yi, r2 = dx * dx + dy * dy;
           if (r2 >= re2) continue;
-          pnd += weight(std::sqrt(r2), inv_re);
+          pnd += w_e.inside(std::sqrt(r2));
           ++within;
         }
         double z = 0.0; // wall part (eq. 20), a corner's overlap counted once
@@ -259,7 +256,7 @@ double EmpsFluid::corner_overlap(std::size_t i) const {
   const double cos_turn = std::clamp(hits_.n_wall[i].dot(hits_.n_wall2[i]), -1.0, 1.0);
   const double share = std::acos(cos_turn) / (0.5 * std::numbers::pi);
   return share * erp::corner_weight_sum(hits_.r[i], hits_.r2[i], options_.l0, r_e_,
-                                        erp::QuadraticWeight{r_e_});
+                                        particles::MpsWeight(r_e_));
 }
 
 // The solid at a convex corner is a wedge, not the half-plane that z(r) and the mirror of the
@@ -276,7 +273,7 @@ EmpsFluid::ConvexPart EmpsFluid::convex_part(std::size_t i) const {
   const auto& ends = walls.segments().node[static_cast<std::size_t>(s)];
   const Vec2 x(particles_.x[i], particles_.y[i]);
   const double r = hits_.r[i], l0 = options_.l0;
-  const erp::QuadraticWeight w{r_e_};
+  const particles::MpsWeight w(r_e_);
   ConvexPart part;
   for (int end = 0; end < 2; ++end) {
     const int L = ends[static_cast<std::size_t>(end)];
@@ -309,13 +306,14 @@ EmpsFluid::ConvexPart EmpsFluid::convex_part(std::size_t i) const {
 // over the real neighbours of x_i' (j = i included) with p_i' = p_i, reflected back.
 Vec2 EmpsFluid::mirror_gradient(std::size_t i, const Vec2& x_wall, const Vec2& n_wall) const {
   const Particles& p = particles_;
-  const double inv_re = 1.0 / r_e_, re2 = r_e_ * r_e_, pi = p.p[i];
+  const particles::MpsWeight w_e(r_e_);
+  const double re2 = r_e_ * r_e_, pi = p.p[i];
   const double mpx = 2.0 * x_wall.x() - p.x[i], mpy = 2.0 * x_wall.y() - p.y[i];
   double ux = 0, uy = 0;
   grid_.for_each_near(mpx, mpy, [&](std::uint32_t j) {
     const double dx = p.x[j] - mpx, dy = p.y[j] - mpy, r2 = dx * dx + dy * dy;
     if (r2 >= re2 || r2 == 0.0) return;
-    const double s = (p.p[j] + pi) * weight(std::sqrt(r2), inv_re) / r2;
+    const double s = (p.p[j] + pi) * w_e.inside(std::sqrt(r2)) / r2;
     ux += s * dx;
     uy += s * dy;
   });
@@ -335,7 +333,8 @@ void EmpsFluid::pressure_gradient(double dt) {
   Timer timer(times_.pressure_gradient);
   Particles& p = particles_;
   const std::size_t n = p.size();
-  const double inv_re = 1.0 / r_e_, re2 = r_e_ * r_e_;
+  const particles::MpsWeight w_e(r_e_);
+  const double re2 = r_e_ * r_e_;
   const double c_grad = d / n0_;
   const double inv_rho = 1.0 / options_.density, V = options_.volume();
   const bool convex = options_.convex_corners;
@@ -348,7 +347,7 @@ void EmpsFluid::pressure_gradient(double dt) {
       const std::uint32_t j = row[k];
       const double dx = p.x[j] - xi, dy = p.y[j] - yi, r2 = dx * dx + dy * dy;
       if (r2 >= re2 || r2 == 0.0) continue;
-      const double s = (p.p[j] + pi) * weight(std::sqrt(r2), inv_re) / r2;
+      const double s = (p.p[j] + pi) * w_e.inside(std::sqrt(r2)) / r2;
       gx += s * dx;
       gy += s * dy;
     }
@@ -499,11 +498,13 @@ double EmpsFluid::stable_dt(double courant) const {
 }
 
 EmpsFluid::State EmpsFluid::save() const {
-  return {particles_, step_, removed_, layout_};
+  State s{{}, step_, removed_, layout_};
+  particles_.fields.save(s.particles);
+  return s;
 }
 
 void EmpsFluid::restore(const State& s) {
-  particles_ = s.particles;
+  particles_.fields.restore(s.particles);
   step_ = s.step;
   removed_ = s.removed;
   if (s.layout != layout_) {
@@ -524,16 +525,7 @@ template <class Hits> auto vector_hits(Hits& h) {
 } // namespace
 
 void EmpsFluid::write_state(StateArchive& a, const std::string& prefix) const {
-  const Particles& p = particles_;
-  for (const auto& [name, v] : {std::pair{"x", &p.x},
-                                {"y", &p.y},
-                                {"vx", &p.vx},
-                                {"vy", &p.vy},
-                                {"p", &p.p},
-                                {"pnd", &p.pnd}})
-    a.put(prefix + name, *v);
-  a.put_ints(prefix + "surface", p.surface);
-  a.put_ints(prefix + "id", p.id);
+  particles_.fields.write_state(a, prefix);
   a.put_integer(prefix + "step", step_);
   a.put_integer(prefix + "removed", static_cast<std::int64_t>(removed_));
   a.put_integer(prefix + "layout", layout_);
@@ -563,18 +555,8 @@ void EmpsFluid::write_state(StateArchive& a, const std::string& prefix) const {
 }
 
 void EmpsFluid::read_state(const StateArchive& a, const std::string& prefix) {
-  Particles& p = particles_;
-  const std::size_t n = a.reals(prefix + "x").size();
-  p.resize(n);
-  for (const auto& [name, v] : {std::pair{"x", &p.x},
-                                {"y", &p.y},
-                                {"vx", &p.vx},
-                                {"vy", &p.vy},
-                                {"p", &p.p},
-                                {"pnd", &p.pnd}})
-    *v = a.reals(prefix + name, n);
-  p.surface = a.ints<std::uint8_t>(prefix + "surface", n);
-  p.id = a.ints<std::uint32_t>(prefix + "id", n);
+  particles_.fields.read_state(a, prefix);
+  const std::size_t n = particles_.size();
   step_ = a.integer(prefix + "step");
   removed_ = static_cast<std::size_t>(a.integer(prefix + "removed"));
   layout_ = a.integer(prefix + "layout");

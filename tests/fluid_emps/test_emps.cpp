@@ -5,7 +5,7 @@
 #include "fsi/core/parallel.hpp"
 #include "geometry_erp/fill.hpp"
 #include "geometry_erp/wall_weight.hpp"
-#include "geometry_erp/weight.hpp"
+#include "particles/kernels.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -41,7 +41,7 @@ TEST_CASE("emps: n0 and lambda0 are those of the full lattice (eqs. 9, 12)", "[e
   erp::WallSet walls;
   emps::EmpsFluid fluid(
       water(l0), erp::fill_lattice({0, 0}, l0, {{{0, 0}, {0.1, 0}, {0.1, 0.1}, {0, 0.1}}}), walls);
-  const erp::QuadraticWeight w{3.1 * l0};
+  const particles::MpsWeight w(3.1 * l0);
   CHECK_THAT(fluid.n0(), WithinRel(erp::lattice_n0(l0, 3.1 * l0, w), 1e-14));
   CHECK_THAT(fluid.lambda0(), WithinRel(erp::lattice_lambda0(l0, 3.1 * l0, w), 1e-14));
   CHECK_THAT(fluid.n0(), WithinRel(4.1783, 1e-4)); // sum of (1 - r/3.1)^2 over the lattice

@@ -10,13 +10,13 @@
 //
 // Walls: the caller owns the WallSet and moves its nodes (rigid motion, FE interface) to their
 // state at t + dt before calling advance(); the fluid refits its wall index each step.
-#include "fluid_emps/cell_grid.hpp"
-#include "fluid_emps/neighbor_list.hpp"
 #include "fluid_emps/options.hpp"
 #include "fluid_emps/particles.hpp"
 #include "geometry_erp/wall_locator.hpp"
 #include "geometry_erp/wall_set.hpp"
 #include "geometry_erp/wall_weight.hpp"
+#include "particles/cell_grid.hpp"
+#include "particles/neighbor_list.hpp"
 
 #include <memory>
 #include <string>
@@ -70,7 +70,7 @@ public:
 
   /// A full copy of the fluid state; restore() returns to it (iterative coupling re-runs steps).
   struct State {
-    Particles particles;
+    particles::FieldSet::Snapshot particles;
     long step = 0;
     std::size_t removed = 0;
     long layout = 0;
@@ -113,8 +113,8 @@ private:
   erp::WallWeightTable z_;
   double r_e_, n0_, lambda0_;
   Particles particles_;
-  CellGrid grid_;
-  NeighborList neighbours_;
+  particles::CellGrid grid_;
+  particles::NeighborList neighbours_;
   erp::WallHits hits_;
   WallForces wall_forces_;
   std::vector<double> scratch_;              // per-particle work array

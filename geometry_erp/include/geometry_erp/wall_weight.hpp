@@ -8,13 +8,13 @@
 // particle on a fluid row with a full fluid lattice around it has n_i + z(r) = n0 exactly.
 #include "fsi/core/types.hpp"
 #include "geometry_erp/cubic_spline.hpp"
-#include "geometry_erp/weight.hpp"
+#include "particles/kernels.hpp"
 
 #include <functional>
 
 namespace fsi::erp {
 
-/// A weight function of distance, zero at and beyond r_e (QuadraticWeight or a replacement).
+/// A weight function of distance, zero at and beyond r_e (particles::MpsWeight or a replacement).
 using WeightFunction = std::function<double(double)>;
 
 /// z(r) by direct summation over the virtual half-lattice.

@@ -1,11 +1,11 @@
-#include "fluid_emps/cell_grid.hpp"
+#include "particles/cell_grid.hpp"
 
 #include "fsi/core/parallel.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-namespace fsi::emps {
+namespace fsi::particles {
 
 CellGrid::CellGrid(const Vec2& lo, const Vec2& hi, double h)
     : lo_(lo - Vec2(h, h)), h_(h), inv_h_(1.0 / h),
@@ -45,4 +45,4 @@ void CellGrid::bin(const double* x, const double* y, std::size_t n) {
   start_[0] = 0;
 }
 
-} // namespace fsi::emps
+} // namespace fsi::particles

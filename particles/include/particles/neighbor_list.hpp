@@ -2,12 +2,12 @@
 // Verlet neighbour list: for each particle, the others within r_e (1 + skin) when it was built.
 // It stays valid while no particle has moved more than skin r_e / 2 since, so one build serves
 // many steps; rows have a fixed capacity (no allocation per build).
-#include "fluid_emps/cell_grid.hpp"
+#include "particles/cell_grid.hpp"
 
 #include <cstdint>
 #include <vector>
 
-namespace fsi::emps {
+namespace fsi::particles {
 
 class NeighborList {
 public:
@@ -36,4 +36,4 @@ private:
   std::vector<double> x_build_, y_build_;
 };
 
-} // namespace fsi::emps
+} // namespace fsi::particles

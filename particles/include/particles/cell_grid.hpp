@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace fsi::emps {
+namespace fsi::particles {
 
 class CellGrid {
 public:
@@ -46,4 +46,4 @@ private:
   std::vector<std::uint32_t> order_;
 };
 
-} // namespace fsi::emps
+} // namespace fsi::particles

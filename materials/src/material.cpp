@@ -1,11 +1,11 @@
-#include "structure_fem/material.hpp"
+#include "materials/material.hpp"
 
 #include <cmath>
 #include <string>
 
 #include "fsi/core/error.hpp"
 
-namespace fsi::fem {
+namespace fsi::materials {
 
 void validate(const MaterialOptions& o) {
   auto fail = [](const char* key, double value, const char* range) {
@@ -99,4 +99,4 @@ double NeoHookean::stress_33(const Mat2& E) const {
   return lambda_ * RightCauchyGreen(E).log_J; // C33 = 1
 }
 
-} // namespace fsi::fem
+} // namespace fsi::materials

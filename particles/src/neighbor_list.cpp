@@ -1,11 +1,11 @@
-#include "fluid_emps/neighbor_list.hpp"
+#include "particles/neighbor_list.hpp"
 
 #include "fsi/core/parallel.hpp"
 
 #include <algorithm>
 #include <limits>
 
-namespace fsi::emps {
+namespace fsi::particles {
 
 bool NeighborList::build(const CellGrid& grid, const double* x, const double* y, std::size_t n,
                          double radius, std::size_t capacity) {
@@ -60,4 +60,4 @@ double NeighborList::mean_count() const {
   return s / static_cast<double>(count_.size());
 }
 
-} // namespace fsi::emps
+} // namespace fsi::particles

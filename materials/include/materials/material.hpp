@@ -1,0 +1,90 @@
+#pragma once
+// Hyperelastic material laws in 2D shared by every solid solver (structure_fem, solid_tlsph),
+// written in the Green–Lagrange strain E (eq. 36) and the second Piola–Kirchhoff stress S (eq. 34).
+// Voigt order: (11, 22, 12) with engineering shear 2 E12 for strain, S12 for stress.
+#include <memory>
+
+#include <Eigen/Core>
+
+#include "fsi/core/types.hpp"
+
+namespace fsi::materials {
+
+using Mat3 = Eigen::Matrix3d; ///< Voigt-form tangent
+
+enum class PlaneModel { plane_strain, plane_stress };
+
+/// The strain energy W(E). St. Venant–Kirchhoff is the paper's law (eq. 35); compressible
+/// neo-Hookean keeps W finite only for det F > 0, so an element cannot be crushed flat under a
+/// finite load (St. Venant–Kirchhoff in compression has a limit load at a stretch of 1/sqrt(3)
+/// and a finite energy at det F = 0; docs/structure_fem.md).
+enum class MaterialModel { saint_venant_kirchhoff, neo_hookean };
+
+struct MaterialOptions {
+  double youngs_modulus = 1.0e6; ///< E [Pa], > 0
+  double poisson_ratio = 0.3;    ///< nu, in (-1, 0.5)
+  double density = 1000.0;       ///< rho [kg/m^3] in the reference configuration, > 0
+  PlaneModel plane = PlaneModel::plane_strain;
+  MaterialModel model = MaterialModel::saint_venant_kirchhoff; ///< neo_hookean: plane strain only
+};
+
+/// Throws InputError naming the field, its value and the allowed range.
+void validate(const MaterialOptions& options);
+
+class Material;
+/// The law options.model names.
+std::unique_ptr<Material> make_material(const MaterialOptions& options);
+
+class Material {
+public:
+  virtual ~Material() = default;
+  /// Strain energy density W(E) [J/m^3] (eq. 35).
+  virtual double energy(const Mat2& E) const = 0;
+  /// S(E) = dW/dE (eq. 34).
+  virtual Mat2 stress(const Mat2& E) const = 0;
+  /// Material tangent dS/dE in Voigt form.
+  virtual Mat3 tangent(const Mat2& E) const = 0;
+  /// Out-of-plane S33 (plane strain: from E33 = 0; plane stress: zero).
+  virtual double stress_33(const Mat2& E) const = 0;
+  virtual double density() const = 0;
+};
+
+/// Saint Venant–Kirchhoff, W = lambda/2 (tr E)^2 + mu tr(E^2) (eq. 35). Plane stress replaces
+/// lambda by lambda* = 2 lambda mu / (lambda + 2 mu).
+class StVenantKirchhoff final : public Material {
+public:
+  explicit StVenantKirchhoff(const MaterialOptions& options);
+  double energy(const Mat2& E) const override;
+  Mat2 stress(const Mat2& E) const override;
+  Mat3 tangent(const Mat2& E) const override;
+  double stress_33(const Mat2& E) const override;
+  double density() const override { return rho_; }
+  double lambda() const { return lambda_; } ///< the in-plane lambda (lambda* in plane stress)
+  double mu() const { return mu_; }
+
+private:
+  double lambda_, mu_, rho_;
+  bool plane_strain_;
+};
+
+/// Compressible neo-Hookean in plane strain (F33 = 1), with the Lamé constants of E and nu:
+///   W = mu/2 (tr C + 1 - 3) - mu ln J + lambda/2 (ln J)^2,   C = I + 2 E,  J = sqrt(det C),
+///   S = mu (I - C^-1) + lambda ln J C^-1,
+///   dS/dE = lambda C^-1 (x) C^-1 + 2 (mu - lambda ln J) I_{C^-1},
+///   with I_{C^-1}_ijkl = (C^-1_ik C^-1_jl + C^-1_il C^-1_jk) / 2 (Bonet & Wood, Nonlinear
+/// Continuum Mechanics for FEA, sec. 6.4.3). The same as St. Venant–Kirchhoff to first order in E;
+/// W -> infinity as J -> 0.
+class NeoHookean final : public Material {
+public:
+  explicit NeoHookean(const MaterialOptions& options);
+  double energy(const Mat2& E) const override;
+  Mat2 stress(const Mat2& E) const override;
+  Mat3 tangent(const Mat2& E) const override;
+  double stress_33(const Mat2& E) const override;
+  double density() const override { return rho_; }
+
+private:
+  double lambda_, mu_, rho_;
+};
+
+} // namespace fsi::materials

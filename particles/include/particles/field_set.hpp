@@ -1,0 +1,69 @@
+#pragma once
+// A registry of per-particle struct-of-arrays fields. A solver registers each array once, by name;
+// resizing, reordering by cell, removal, save/restore for iterative coupling, checkpoints and the
+// memory estimate then iterate over the registry, so no field list is written by hand twice.
+// Arrays live in a deque: the references add_*() returns stay valid for the set's lifetime.
+#include <cstdint>
+#include <deque>
+#include <string>
+#include <vector>
+
+namespace fsi {
+class StateArchive;
+}
+
+namespace fsi::particles {
+
+class FieldSet {
+public:
+  FieldSet() = default;
+  FieldSet(const FieldSet&) = delete; // members hold references into the arrays
+  FieldSet& operator=(const FieldSet&) = delete;
+
+  /// Registers an array of n = size() zeros. `state`: part of the solver's state (saved,
+  /// restored, checkpointed); otherwise scratch that each step recomputes (only resized and
+  /// reordered). Names are unique (asserted).
+  std::vector<double>& add_real(const std::string& name, bool state = true);
+  std::vector<std::uint8_t>& add_flag(const std::string& name, bool state = true);
+  std::vector<std::uint32_t>& add_index(const std::string& name, bool state = true);
+
+  std::size_t size() const { return size_; }
+  void resize(std::size_t n);
+  /// Applies new_index -> old_index to every array; `scratch` avoids allocation.
+  void permute(const std::vector<std::uint32_t>& order, std::vector<double>& scratch);
+  /// Keeps only entries with keep[i] != 0, in order. Returns how many were removed.
+  std::size_t compact(const std::vector<std::uint8_t>& keep);
+
+  /// The state arrays' values; restore() returns them exactly (also the size).
+  struct Snapshot {
+    std::size_t size = 0;
+    std::vector<std::vector<double>> reals;
+    std::vector<std::vector<std::uint8_t>> flags;
+    std::vector<std::vector<std::uint32_t>> indices;
+  };
+  /// Reuses the snapshot's buffers: no allocation once they are large enough.
+  void save(Snapshot& into) const;
+  void restore(const Snapshot& from);
+
+  /// Every state array under prefix + name (doubles exact, integers as int64).
+  void write_state(StateArchive& archive, const std::string& prefix) const;
+  void read_state(const StateArchive& archive, const std::string& prefix);
+
+  /// Bytes per entry over every registered array.
+  std::size_t bytes_per_particle() const;
+  /// Names of the registered arrays, in registration order.
+  std::vector<std::string> names() const;
+
+private:
+  template <class T> struct Field {
+    std::string name;
+    bool state;
+    std::vector<T> values;
+  };
+  std::size_t size_ = 0;
+  std::deque<Field<double>> reals_;
+  std::deque<Field<std::uint8_t>> flags_;
+  std::deque<Field<std::uint32_t>> indices_;
+};
+
+} // namespace fsi::particles
