@@ -23,7 +23,7 @@ int main(int argc, char** argv) {
   const int half = 12, rows = 14;
   for (const double ratio : ratios) {
     const double r_e = ratio * l0;
-    const particles::MpsWeight w(r_e);
+    const fsi::particles::MpsWeight w(r_e);
     const WallWeightTable z(l0, r_e, w);
     const double n0 = lattice_n0(l0, r_e, w);
     std::printf("r_e = %.2f l0, n0 = %.10f, lambda0 = %.10f l0^2\n", ratio, n0,

@@ -489,6 +489,14 @@ double EmpsFluid::max_speed() const {
       [](double a, double b) { return std::max(a, b); }));
 }
 
+void EmpsFluid::set_velocities(const std::vector<Vec2>& v) {
+  if (v.size() != particles_.size())
+    throw InputError("fluid: " + std::to_string(v.size()) + " initial velocities for " +
+                     std::to_string(particles_.size()) + " particles");
+  for (std::size_t i = 0; i < v.size(); ++i)
+    particles_.vx[i] = v[i].x(), particles_.vy[i] = v[i].y();
+}
+
 double EmpsFluid::stable_dt(double courant) const {
   double dt = courant * options_.l0 / (options_.sound_speed + max_speed());
   const double nu =

@@ -9,6 +9,7 @@
 using namespace fsi::erp;
 using Catch::Matchers::WithinAbs;
 using Catch::Matchers::WithinRel;
+using fsi::particles::MpsWeight;
 
 namespace {
 
@@ -27,7 +28,7 @@ double block_pnd(int k, int rows, int half, double l0, const WeightFunction& w) 
 TEST_CASE("erp: n0 and lambda0 of the quadratic weight for r_e = 1.5 l0", "[wall_weight]") {
   // Neighbours within r_e: 4 at l0, 4 at sqrt(2) l0.
   const double l0 = 0.01, r_e = 1.5 * l0;
-  const particles::MpsWeight w(r_e);
+  const MpsWeight w(r_e);
   const double w1 = std::pow(1.0 / 1.5 - 1.0, 2), w2 = std::pow(std::sqrt(2.0) / 1.5 - 1.0, 2);
   const double n0 = 4.0 * w1 + 4.0 * w2;
   CHECK_THAT(lattice_n0(l0, r_e, w), WithinRel(n0, 1e-14));
@@ -37,7 +38,7 @@ TEST_CASE("erp: n0 and lambda0 of the quadratic weight for r_e = 1.5 l0", "[wall
 
 TEST_CASE("erp: z(r) table matches the direct lattice sum", "[wall_weight]") {
   const double l0 = 1.46e-3, r_e = 3.1 * l0;
-  const particles::MpsWeight w(r_e);
+  const MpsWeight w(r_e);
   const WallWeightTable z(l0, r_e, w);
   const double dr = z.spacing();
   const double n0 = lattice_n0(l0, r_e, w);
@@ -56,7 +57,7 @@ TEST_CASE("erp: z(r) table matches the direct lattice sum", "[wall_weight]") {
 TEST_CASE("erp: n_i + z(r_i) = n0 for every fluid row next to a flat wall", "[wall_weight]") {
   const double l0 = 1.0;
   for (const double r_e : {2.1, 3.1, 4.0}) {
-    const particles::MpsWeight quadratic(r_e);
+    const MpsWeight quadratic(r_e);
     // The classic MPS weight r_e/r - 1 as a replacement weight.
     const WeightFunction classic = [r_e](double r) { return r < r_e ? r_e / r - 1.0 : 0.0; };
     for (const WeightFunction& w : {WeightFunction(quadratic), classic}) {
@@ -77,7 +78,7 @@ TEST_CASE("erp: z(a) + z(b) - q(a, b) completes n_i to n0 in a right-angle corne
   // A quadrant of fluid lattice (x, y > 0) in a corner; every particle within r_e of both walls.
   const double l0 = 1.0;
   for (const double r_e : {2.1, 3.1, 4.0}) {
-    const particles::MpsWeight w(r_e);
+    const MpsWeight w(r_e);
     const WallWeightTable z(l0, r_e, w);
     const double n0 = lattice_n0(l0, r_e, w);
     const int size = 12;
@@ -102,7 +103,7 @@ TEST_CASE("erp: eq. 10's lattice sums of a flat wall and of a convex corner bala
   // y < 0) the three fluid quadrants' part is minus the solid quadrant's corner_gradient_sum.
   const double l0 = 1.0;
   for (const double r_e : {2.1, 3.1, 4.0}) {
-    const particles::MpsWeight w(r_e);
+    const MpsWeight w(r_e);
     const int reach = 6;
     for (int k = 0; k < 4; ++k) { // flat wall, particle in row k, column 0
       double gy = 0.0;

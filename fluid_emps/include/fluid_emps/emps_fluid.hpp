@@ -46,6 +46,8 @@ class EmpsFluid {
 public:
   /// Particles start at rest at `positions`. Throws fsi::InputError on invalid options.
   EmpsFluid(const FluidOptions& options, const std::vector<Vec2>& positions, erp::WallSet& walls);
+  /// Initial velocities, one per particle in the current order (before the first advance()).
+  void set_velocities(const std::vector<Vec2>& v);
   ~EmpsFluid();
 
   /// Advances from t to t + dt. Throws fsi::RunError on a non-finite field, a particle behind a

@@ -5,6 +5,7 @@
 #include <memory>
 
 #include <Eigen/Core>
+#include <Eigen/LU>
 
 #include "fsi/core/types.hpp"
 
