@@ -9,20 +9,6 @@ namespace fsi::app {
 
 namespace {
 
-coupling::CouplingOptions coupling_options(const CouplingSpec& c) {
-  coupling::CouplingOptions o;
-  o.scheme = c.scheme;
-  o.predictor = c.predictor;
-  o.acceleration = c.scheme == "bgs" ? c.acceleration : "none";
-  o.tolerance = c.tolerance;
-  o.max_iterations = c.max_iterations;
-  o.omega = c.omega;
-  o.reuse = c.reuse;
-  o.stop_on_unconverged = c.stop_on_unconverged;
-  o.substeps = c.substeps;
-  return o;
-}
-
 const StructureSpec& coupled_structure(const Scene& scene) {
   if (scene.structures.size() != 1)
     fail_at(scene, scene.structures[1].line, "structures",
@@ -73,14 +59,16 @@ CoupledModel::CoupledModel(const Scene& scene) {
       std::make_unique<FluidAdapter>(fluid_->fluid(), fluid_->walls(), *fluid_->fe_interface());
   structure_adapter_ =
       std::make_unique<StructureAdapter>(structure_->structure(), *fluid_->fe_interface());
-  const CouplingSpec c = scene.coupling.value_or(CouplingSpec{"css", "none", "aitken"});
+  const CouplingSpec c = scene.coupling.value_or(CouplingSpec{});
   tap_ = std::make_unique<FluidTap>(*fluid_adapter_);
   record_ = c.record_interface;
+  const auto& registry = coupling::builtin_registry();
+  needs_ = registry.scheme_needs(c.options.scheme);
   coupling::Participants p;
-  if (c.scheme != "one_way_structure") p.fluid = tap_.get();
-  if (c.scheme != "one_way_fluid") p.structure = structure_adapter_.get();
-  if (c.scheme == "one_way_fluid" || c.scheme == "one_way_structure") {
-    const bool motion = c.scheme == "one_way_fluid";
+  if (needs_.fluid) p.fluid = tap_.get();
+  if (needs_.structure) p.structure = structure_adapter_.get();
+  if (needs_.prescribed_motion || needs_.prescribed_loads) {
+    const bool motion = needs_.prescribed_motion;
     replay_ = std::make_unique<InterfaceHistory>(motion ? c.motion : c.loads);
     const auto nodes = static_cast<std::size_t>(fluid_->fe_interface()->node_count());
     if (replay_->nodes() != nodes)
@@ -95,7 +83,7 @@ CoupledModel::CoupledModel(const Scene& scene) {
       p.prescribed_loads = [h](double t) { return h->loads_at(t); };
   }
   try {
-    scheme_ = coupling::make_scheme(coupling_options(c), p);
+    scheme_ = registry.make_scheme(c.options, p);
   } catch (const InputError& e) {
     fail_at(scene, c.line, "coupling", e.what());
   }
@@ -106,9 +94,7 @@ void CoupledModel::advance(double time, double dt) {
   scheme_->advance(time, dt);
   // The motion the fluid used (one_way_structure: the structure's, there is no fluid).
   if (history_)
-    history_->append(time + dt,
-                     scheme_->name() == "one_way_structure" ? scheme_->interface_motion()
-                                                            : tap_->motion(),
+    history_->append(time + dt, needs_.fluid ? tap_->motion() : scheme_->interface_motion(),
                      scheme_->interface_loads());
 }
 
@@ -160,7 +146,7 @@ void CoupledModel::report(JsonObject& run) const {
   JsonObject c;
   c.add("scheme", std::string(scheme_->name()))
       .add("predictor", scheme_->options().predictor)
-      .add("acceleration", scheme_->options().acceleration)
+      .add("acceleration", scheme_->implicit() ? scheme_->options().acceleration : "none")
       .add("steps", static_cast<long long>(s.steps))
       .add("iterations_mean", s.mean_iterations())
       .add("iterations_max", s.max_iterations)

@@ -1,5 +1,6 @@
 #include "fsi_app/scene.hpp"
 
+#include "coupling/registry.hpp"
 #include "fsi/core/error.hpp"
 #include "fsi_app/output/interface_history.hpp"
 #include "fsi_app/overrides.hpp"
@@ -306,56 +307,75 @@ StructureSpec read_structure(Section s) {
   return st;
 }
 
+// Reads the coupling options coupling/ declares (visit_options) from the block, its defaults,
+// ranges and names.
+class CouplingReader final : public OptionVisitor {
+public:
+  explicit CouplingReader(Section& s) : s_(s) {}
+  void name(const std::string& key, std::string& value, const std::vector<std::string>& allowed,
+            const std::string& doc) override {
+    value = s_.choice(key, allowed, value, doc);
+  }
+  void real(const std::string& key, double& value, const Range& range,
+            const std::string& doc) override {
+    value = s_.real(key, value, range, doc);
+  }
+  void integer(const std::string& key, int& value, const Range& range,
+               const std::string& doc) override {
+    value = s_.integer(key, value, range, doc);
+  }
+  void flag(const std::string& key, bool& value, const std::string& doc) override {
+    value = s_.boolean(key, value, doc);
+  }
+
+private:
+  Section& s_;
+};
+
 // Recording and one-way replay: the replayed file must cover every step of the run.
 void read_one_way(Section& s, const TimeSpec& time, CouplingSpec& c) {
   const bool doc = s.context().documenting();
   c.record_interface = s.boolean("record_interface", false,
                                  "write DIR/interface.h5: per step the interface motion the fluid "
                                  "used and the loads the structure took");
-  auto recorded = [&](const std::string& key, const std::string& scheme, const std::string& what) {
-    if (!doc && c.scheme != scheme && s.has(key)) s.fail(key, "only for scheme " + scheme);
-    if (!doc && c.scheme != scheme) return std::filesystem::path();
-    const auto path = s.file(key, scheme + ": interface.h5 of a recorded run, its " + what +
-                                      " interpolated linearly in time");
+  const coupling::SchemeNeeds needs =
+      doc ? coupling::SchemeNeeds{} : coupling::builtin_registry().scheme_needs(c.options.scheme);
+  auto recorded = [&](const std::string& key, bool needed, const std::string& what) {
+    if (!doc && !needed && s.has(key))
+      s.fail(key, "scheme '" + c.options.scheme + "' replays no recorded " + what);
+    if (!doc && !needed) return std::filesystem::path();
+    const auto path = s.file(key, "interface.h5 of a recorded run, its " + what +
+                                      " interpolated linearly in time (schemes that replay it)");
     if (doc) return path;
     const double step = time.dt.value_or(time.end);
-    const double needed = std::ceil(time.end / step - 1e-9) * step; // the run's last step end
+    const double last = std::ceil(time.end / step - 1e-9) * step; // the run's last step end
     std::ostringstream problem;
     try {
       const InterfaceHistory h(path);
-      if (h.first_time() > 0.0 || h.last_time() < needed * (1.0 - 1e-12))
+      if (h.first_time() > 0.0 || h.last_time() < last * (1.0 - 1e-12))
         problem << path.string() << ": records t = " << h.first_time() << " .. " << h.last_time()
-                << " s, the run needs 0 .. " << needed << " s";
+                << " s, the run needs 0 .. " << last << " s";
     } catch (const InputError& e) {
       problem << e.what();
     }
     if (!problem.str().empty()) s.fail(key, problem.str());
     return path;
   };
-  c.motion = recorded("motion", "one_way_fluid", "interface motion");
-  c.loads = recorded("loads", "one_way_structure", "interface loads");
+  c.motion = recorded("motion", needs.prescribed_motion, "interface motion");
+  c.loads = recorded("loads", needs.prescribed_loads, "interface loads");
 }
 
 CouplingSpec read_coupling(Section s, const TimeSpec& time) {
   CouplingSpec c;
   c.line = s.line();
-  c.scheme = s.choice("scheme", {"css", "bgs", "one_way_fluid", "one_way_structure"}, "css",
-                      "conventional serial staggered, block Gauss-Seidel iterations (eq. 69), the "
-                      "fluid against a recorded motion, or the structure under recorded loads");
-  c.predictor = s.choice("predictor", {"none", "second_order"}, "none",
-                         "interface predictor for CSS (eqs. 63-65)");
-  c.acceleration = s.choice("acceleration", {"none", "constant", "aitken", "iqn-ils"}, "aitken",
-                            "BGS relaxation");
-  c.tolerance = s.real("tolerance", 1e-4, Range::open(0.0, 1.0), "epsilon of eq. 69");
-  c.max_iterations =
-      s.integer("max_iterations", 200, Range::closed(1, 100000), "BGS iterations per step");
-  c.omega = s.real("omega", 0.5, Range::left_open(0.0, 2.0),
-                   "constant relaxation factor, or the first of aitken and iqn-ils");
-  c.reuse = s.integer("reuse", 8, Range::closed(0, 100), "IQN-ILS: past steps kept");
-  c.stop_on_unconverged =
-      s.boolean("stop_on_unconverged", false, "stop the run at the first unconverged BGS step");
-  c.substeps = s.integer("substeps", 1, Range::closed(1, 10000), "fluid steps per structure step");
+  CouplingReader reader(s);
+  coupling::visit_options(c.options, coupling::builtin_registry(), reader);
   read_one_way(s, time, c);
+  if (!s.context().documenting()) try { // the rules beyond each key's range
+      coupling::validate_options(c.options, coupling::builtin_registry());
+    } catch (const InputError& e) {
+      s.fail("", e.what());
+    }
   s.finish();
   return c;
 }

@@ -39,22 +39,6 @@ std::string join(const std::vector<std::string>& items, const std::string& sep) 
 
 } // namespace
 
-bool Range::contains(double v) const {
-  const bool above = lo_open ? v > lo : v >= lo;
-  const bool below = hi_open ? v < hi : v <= hi;
-  return above && below;
-}
-
-std::string Range::describe() const {
-  const bool has_lo = std::isfinite(lo);
-  const bool has_hi = std::isfinite(hi);
-  if (!has_lo && !has_hi) return "any";
-  if (has_lo && !has_hi) return (lo_open ? "> " : ">= ") + format_number(lo);
-  if (!has_lo) return (hi_open ? "< " : "<= ") + format_number(hi);
-  return (lo_open ? "in (" : "in [") + format_number(lo) + ", " + format_number(hi) +
-         (hi_open ? ")" : "]");
-}
-
 Section::Section(YAML::Node node, std::string path, ReadContext& ctx, int key_line)
     : node_(std::move(node)), path_(std::move(path)), ctx_(&ctx), key_line_(key_line) {
   if (!ctx.documenting() && node_.IsDefined() && !node_.IsNull() && !node_.IsMap())

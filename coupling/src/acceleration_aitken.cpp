@@ -1,5 +1,7 @@
 #include "coupling/acceleration_aitken.hpp"
 
+#include "coupling/reduction.hpp"
+
 #include "fsi/core/state_archive.hpp"
 
 #include <algorithm>
@@ -26,9 +28,9 @@ void AitkenRelaxation::update(const Eigen::VectorXd& x, const Eigen::VectorXd& x
     omega_ = std::copysign(std::min(omega_init_, std::abs(omega_)), omega_);
   } else {
     const Eigen::VectorXd d = rs - r_prev_;
-    const double den = d.squaredNorm();
+    const double den = squared_norm(d);
     if (den > 0.0) {
-      const double w = -omega_ * r_prev_.dot(d) / den; // Kuettler & Wall 2008, eq. (44)
+      const double w = -omega_ * dot(r_prev_, d) / den; // Kuettler & Wall 2008, eq. (44)
       omega_ = std::isfinite(w) && w != 0.0 ? w : omega_init_;
     }
   }

@@ -1,5 +1,7 @@
 #include "coupling/acceleration_iqn_ils.hpp"
 
+#include "coupling/reduction.hpp"
+
 #include "fsi/core/state_archive.hpp"
 
 #include <cassert>
@@ -38,7 +40,7 @@ void IqnIlsAcceleration::update(const Eigen::VectorXd& x, const Eigen::VectorXd&
   std::vector<bool> erase(columns_.size(), false);
   for (std::size_t j = 0; j < columns_.size(); ++j) {
     Eigen::VectorXd v = scale(columns_[j].dr);
-    const double norm0 = v.norm();
+    const double norm0 = norm(v);
     if (!(norm0 > 0.0)) {
       erase[j] = true;
       continue;
@@ -47,19 +49,19 @@ void IqnIlsAcceleration::update(const Eigen::VectorXd& x, const Eigen::VectorXd&
     Eigen::VectorXd h = Eigen::VectorXd::Zero(kk);
     for (int pass = 0; pass < 2; ++pass) {
       for (Eigen::Index i = 0; i < kk; ++i) {
-        const double hij = q.col(i).dot(v);
+        const double hij = dot(q.col(i), v);
         h(i) += hij;
         v -= hij * q.col(i);
       }
     }
-    const double norm = v.norm();
-    if (!(norm >= filter_ * norm0) || norm == 0.0) {
+    const double norm_v = norm(v);
+    if (!(norm_v >= filter_ * norm0) || norm_v == 0.0) {
       erase[j] = true;
       continue;
     }
-    q.col(kk) = v / norm;
+    q.col(kk) = v / norm_v;
     rr.block(0, kk, kk, 1) = h;
-    rr(kk, kk) = norm;
+    rr(kk, kk) = norm_v;
     kept.push_back(j);
   }
   // Delete filtered columns for good (keeps the relative order of the others).
@@ -75,7 +77,7 @@ void IqnIlsAcceleration::update(const Eigen::VectorXd& x, const Eigen::VectorXd&
   }
   const auto k = static_cast<Eigen::Index>(kept.size());
   // c = argmin ||V c + r||: R c = -Q^T r.
-  const Eigen::VectorXd rhs = -(q.leftCols(k).transpose() * scale(r));
+  const Eigen::VectorXd rhs = -transposed_product(q.leftCols(k), scale(r));
   const Eigen::VectorXd c = rr.topLeftCorner(k, k).triangularView<Eigen::Upper>().solve(rhs);
   x_next = x_tilde;
   for (Eigen::Index i = 0; i < k; ++i)

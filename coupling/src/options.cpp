@@ -1,8 +1,6 @@
 #include "coupling/options.hpp"
 
 #include <algorithm>
-#include <cmath>
-#include <limits>
 #include <sstream>
 
 #include "coupling/registry.hpp"
@@ -10,95 +8,37 @@
 
 namespace fsi::coupling {
 
+void visit_options(CouplingOptions& o, const Registry& r, OptionVisitor& v) {
+  v.name("scheme", o.scheme, r.scheme_names(), "coupling scheme");
+  v.name("predictor", o.predictor, r.predictor_names(),
+         "first guess of the interface at t^{n+1} (eqs. 63-65)");
+  v.name("acceleration", o.acceleration, r.acceleration_names(),
+         "acceleration of the iterations of an implicit scheme (bgs); explicit schemes (css) "
+         "have none");
+  v.name("convergence", o.convergence, r.measure_names(),
+         "convergence measure of the iterations (relative: eq. 69)");
+  v.real("tolerance", o.tolerance, Range::positive(),
+         "relative: norm(r^i) / norm(r^0) < tolerance (below 1, eq. 69); absolute: norm(r^i) < "
+         "tolerance, m");
+  v.integer("max_iterations", o.max_iterations, Range::closed(1, 100000),
+            "evaluations per step before the step is accepted unconverged (counted)");
+  v.real("omega", o.omega, Range::left_open(0.0, 2.0),
+         "constant relaxation factor; initial factor of aitken and iqn-ils");
+  v.integer("reuse", o.reuse, Range::closed(0, 1000),
+            "iqn-ils: past time steps whose columns are reused");
+  v.real("iqn_filter", o.iqn_filter, Range::right_open(0.0, 1.0),
+         "iqn-ils QR2 filter: delete columns with orthogonal part < iqn_filter x norm");
+  v.real("aitken_omega_max", o.aitken_omega_max, Range::closed(0.01, 100.0),
+         "aitken clamp: abs(omega) <= aitken_omega_max");
+  v.flag("converge_velocities", o.converge_velocities,
+         "the iterations also measure the velocity residual");
+  v.flag("stop_on_unconverged", o.stop_on_unconverged,
+         "stop the run (RunError) at the first unconverged step");
+  v.integer("substeps", o.substeps, Range::closed(1, 100000),
+            "fluid sub-steps per coupling (structure) step");
+}
+
 namespace {
-
-constexpr double inf = std::numeric_limits<double>::infinity();
-
-struct NameSpec {
-  const char* key;
-  std::string CouplingOptions::*member;
-  std::vector<std::string> (Registry::*names)() const;
-  const char* doc;
-};
-
-struct NumberSpec {
-  const char* key;
-  double CouplingOptions::*real = nullptr; // exactly one of real, integer is set
-  int CouplingOptions::*integer = nullptr;
-  double lo, hi;
-  bool lo_open, hi_open;
-  const char* doc;
-
-  double value(const CouplingOptions& o) const {
-    return real ? o.*real : static_cast<double>(o.*integer);
-  }
-  bool admits(double v) const {
-    if (std::isnan(v)) return false;
-    const bool above = lo_open ? v > lo : v >= lo;
-    const bool below = hi_open ? v < hi : v <= hi;
-    return above && below;
-  }
-  std::string range() const {
-    std::ostringstream s;
-    s << (lo_open ? "(" : "[") << lo << ", ";
-    if (std::isinf(hi))
-      s << "inf";
-    else
-      s << hi;
-    s << (hi_open ? ")" : "]");
-    return s.str();
-  }
-};
-
-struct FlagSpec {
-  const char* key;
-  bool CouplingOptions::*member;
-  const char* doc;
-};
-
-const std::vector<NameSpec>& name_specs() {
-  static const std::vector<NameSpec> specs{
-      {"scheme", &CouplingOptions::scheme, &Registry::scheme_names, "coupling scheme"},
-      {"predictor", &CouplingOptions::predictor, &Registry::predictor_names,
-       "first guess of the interface at t^{n+1} (eqs. 63-65)"},
-      {"acceleration", &CouplingOptions::acceleration, &Registry::acceleration_names,
-       "acceleration of the BGS iterations"},
-      {"convergence", &CouplingOptions::convergence, &Registry::measure_names,
-       "convergence measure of the BGS iterations (relative: eq. 69)"},
-  };
-  return specs;
-}
-
-const std::vector<NumberSpec>& number_specs() {
-  using O = CouplingOptions;
-  static const std::vector<NumberSpec> specs{
-      {"tolerance", &O::tolerance, nullptr, 0.0, inf, true, true,
-       "relative: ||r^i||/||r^0|| < tolerance; absolute: ||r^i|| < tolerance [m]"},
-      {"max_iterations", nullptr, &O::max_iterations, 1, 100000, false, false,
-       "BGS evaluations per step before the step is accepted unconverged"},
-      {"omega", &O::omega, nullptr, 0.0, 2.0, true, false,
-       "constant relaxation factor; initial factor of aitken and iqn-ils"},
-      {"reuse", nullptr, &O::reuse, 0, 1000, false, false,
-       "iqn-ils: past time steps whose columns are reused"},
-      {"iqn_filter", &O::iqn_filter, nullptr, 0.0, 1.0, false, true,
-       "iqn-ils QR2 filter: delete columns with orthogonal part < iqn_filter x norm"},
-      {"aitken_omega_max", &O::aitken_omega_max, nullptr, 0.01, 100.0, false, false,
-       "aitken clamp |omega| <= aitken_omega_max"},
-      {"substeps", nullptr, &O::substeps, 1, 100000, false, false,
-       "fluid sub-steps per coupling (structure) step"},
-  };
-  return specs;
-}
-
-const std::vector<FlagSpec>& flag_specs() {
-  static const std::vector<FlagSpec> specs{
-      {"converge_velocities", &CouplingOptions::converge_velocities,
-       "BGS also measures the velocity residual"},
-      {"stop_on_unconverged", &CouplingOptions::stop_on_unconverged,
-       "throw a RunError on the first unconverged step"},
-  };
-  return specs;
-}
 
 std::string join(const std::vector<std::string>& names) {
   std::string out;
@@ -106,38 +46,74 @@ std::string join(const std::vector<std::string>& names) {
   return out;
 }
 
+std::string text(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+class Declarations final : public OptionVisitor {
+public:
+  std::vector<OptionDeclaration> out;
+  void name(const std::string& key, std::string& value, const std::vector<std::string>& allowed,
+            const std::string& doc) override {
+    out.push_back({key, value, "one of: " + join(allowed), doc});
+  }
+  void real(const std::string& key, double& value, const Range& range,
+            const std::string& doc) override {
+    out.push_back({key, text(value), range.describe(), doc});
+  }
+  void integer(const std::string& key, int& value, const Range& range,
+               const std::string& doc) override {
+    out.push_back({key, text(value), range.describe(), doc});
+  }
+  void flag(const std::string& key, bool& value, const std::string& doc) override {
+    out.push_back({key, value ? "true" : "false", "true, false", doc});
+  }
+};
+
+class Validator final : public OptionVisitor {
+public:
+  void name(const std::string& key, std::string& value, const std::vector<std::string>& allowed,
+            const std::string&) override {
+    if (std::find(allowed.begin(), allowed.end(), value) != allowed.end()) return;
+    throw InputError("coupling." + key + ": unknown name '" + value +
+                     "' (allowed: " + join(allowed) + ")");
+  }
+  void real(const std::string& key, double& value, const Range& range,
+            const std::string&) override {
+    check(key, value, range);
+  }
+  void integer(const std::string& key, int& value, const Range& range,
+               const std::string&) override {
+    check(key, value, range);
+  }
+  void flag(const std::string&, bool&, const std::string&) override {}
+
+private:
+  static void check(const std::string& key, double value, const Range& range) {
+    if (range.contains(value)) return;
+    throw InputError("coupling." + key + ": value " + text(value) + " is out of range: must be " +
+                     range.describe());
+  }
+};
+
 } // namespace
 
 std::vector<OptionDeclaration> option_declarations(const Registry& registry) {
-  const CouplingOptions defaults;
-  std::vector<OptionDeclaration> out;
-  for (const auto& s : name_specs())
-    out.push_back({s.key, defaults.*s.member, "one of: " + join((registry.*s.names)()), s.doc});
-  for (const auto& s : number_specs()) {
-    std::ostringstream d;
-    d << s.value(defaults);
-    out.push_back({s.key, d.str(), s.range(), s.doc});
-  }
-  for (const auto& s : flag_specs())
-    out.push_back({s.key, defaults.*s.member ? "true" : "false", "true, false", s.doc});
-  return out;
+  CouplingOptions defaults;
+  Declarations d;
+  visit_options(defaults, registry, d);
+  return d.out;
 }
 
-void validate_options(const CouplingOptions& o, const Registry& registry) {
-  for (const auto& s : name_specs()) {
-    const std::vector<std::string> allowed = (registry.*s.names)();
-    const std::string& value = o.*s.member;
-    if (std::find(allowed.begin(), allowed.end(), value) != allowed.end()) continue;
-    throw InputError(std::string("coupling.") + s.key + ": unknown name '" + value +
-                     "' (allowed: " + join(allowed) + ")");
-  }
-  for (const auto& s : number_specs()) {
-    const double v = s.value(o);
-    if (s.admits(v)) continue;
-    std::ostringstream e;
-    e << "coupling." << s.key << ": value " << v << " is out of range " << s.range();
-    throw InputError(e.str());
-  }
+void validate_options(const CouplingOptions& options, const Registry& registry) {
+  CouplingOptions o = options; // the visitor takes fields by reference; nothing is changed
+  Validator v;
+  visit_options(o, registry, v);
+  if (o.convergence == "relative" && !(o.tolerance < 1.0))
+    throw InputError("coupling.tolerance: value " + text(o.tolerance) +
+                     " is out of range: the relative measure needs a tolerance below 1");
 }
 
 } // namespace fsi::coupling

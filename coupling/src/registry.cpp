@@ -10,10 +10,9 @@
 #include "coupling/convergence_relative.hpp"
 #include "coupling/predictor_none.hpp"
 #include "coupling/predictor_second_order.hpp"
-#include "coupling/scheme_bgs.hpp"
-#include "coupling/scheme_css.hpp"
 #include "coupling/scheme_one_way_fluid.hpp"
 #include "coupling/scheme_one_way_structure.hpp"
+#include "coupling/scheme_serial.hpp"
 #include "fsi/core/error.hpp"
 
 namespace fsi::coupling {
@@ -32,14 +31,27 @@ const typename Map::mapped_type& find(const Map& map, std::string_view name, con
   throw InputError(s.str());
 }
 
-[[noreturn]] void missing(const std::string& scheme, const char* what) {
-  throw InputError("coupling.scheme: '" + scheme + "' needs " + what);
+void check_participants(const std::string& scheme, const SchemeNeeds& n, const Participants& p) {
+  const auto missing = [&](bool needed, bool given, const char* what) {
+    if (needed && !given) throw InputError("coupling.scheme: '" + scheme + "' needs " + what);
+  };
+  missing(n.fluid, p.fluid != nullptr, "a fluid solver");
+  missing(n.structure, p.structure != nullptr, "a structure solver");
+  missing(n.prescribed_motion, static_cast<bool>(p.prescribed_motion),
+          "a prescribed motion (coupling.motion)");
+  missing(n.prescribed_loads, static_cast<bool>(p.prescribed_loads),
+          "prescribed loads (coupling.loads)");
 }
 
 } // namespace
 
-void Registry::add_scheme(std::string name, std::string doc, SchemeFactory factory) {
-  schemes_[std::move(name)] = {std::move(doc), std::move(factory)};
+void Registry::add_scheme(std::string name, std::string doc, SchemeNeeds needs,
+                          SchemeFactory factory) {
+  schemes_[std::move(name)] = {std::move(doc), std::move(factory), needs};
+}
+
+SchemeNeeds Registry::scheme_needs(std::string_view name) const {
+  return find(schemes_, name, "scheme", scheme_names()).needs;
 }
 void Registry::add_acceleration(std::string name, std::string doc, AccelerationFactory factory) {
   accelerations_[std::move(name)] = {std::move(doc), std::move(factory)};
@@ -54,8 +66,9 @@ void Registry::add_measure(std::string name, std::string doc, MeasureFactory fac
 std::unique_ptr<CouplingScheme> Registry::make_scheme(const CouplingOptions& options,
                                                       const Participants& participants) const {
   validate_options(options, *this);
-  return find(schemes_, options.scheme, "scheme", scheme_names())
-      .factory(options, participants, *this);
+  const auto& entry = find(schemes_, options.scheme, "scheme", scheme_names());
+  check_participants(options.scheme, entry.needs, participants);
+  return entry.factory(options, participants, *this);
 }
 
 std::unique_ptr<Acceleration> Registry::make_acceleration(std::string_view name,
@@ -74,38 +87,36 @@ std::unique_ptr<ConvergenceMeasure> Registry::make_measure(std::string_view name
 }
 
 void register_builtin_components(Registry& r) {
-  // Schemes.
-  r.add_scheme("css", "conventional serial staggered: predict, F, loads, S; one evaluation",
+  // Schemes. css and bgs are one serial scheme; an acceleration makes it implicit.
+  const SchemeNeeds serial{true, true, false, false};
+  r.add_scheme("css", "conventional serial staggered: predict, F, loads, S; one evaluation", serial,
                [](const CouplingOptions& o, const Participants& p, const Registry& reg) {
-                 if (!p.fluid || !p.structure) missing(o.scheme, "a fluid and a structure solver");
                  SchemeComponents c;
                  c.predictor = reg.make_predictor(o.predictor, o);
-                 return std::make_unique<CssScheme>(o, *p.fluid, *p.structure, std::move(c));
+                 return std::make_unique<SerialScheme>("css", o, *p.fluid, *p.structure,
+                                                       std::move(c));
                });
   r.add_scheme("bgs", "block Gauss-Seidel iterations within the step (eqs. 68-69), accelerated",
-               [](const CouplingOptions& o, const Participants& p, const Registry& reg) {
-                 if (!p.fluid || !p.structure) missing(o.scheme, "a fluid and a structure solver");
+               serial, [](const CouplingOptions& o, const Participants& p, const Registry& reg) {
                  SchemeComponents c;
                  c.predictor = reg.make_predictor(o.predictor, o);
                  c.acceleration = reg.make_acceleration(o.acceleration, o);
                  c.measures.push_back(reg.make_measure(o.convergence, o));
                  if (o.converge_velocities)
                    c.measures.push_back(reg.make_measure(o.convergence, o));
-                 return std::make_unique<BgsScheme>(o, *p.fluid, *p.structure, std::move(c));
+                 return std::make_unique<SerialScheme>("bgs", o, *p.fluid, *p.structure,
+                                                       std::move(c));
                });
-  r.add_scheme("one_way_fluid", "fluid against a prescribed interface motion",
-               [](const CouplingOptions& o, const Participants& p, const Registry& reg) {
-                 if (!p.fluid || !p.prescribed_motion)
-                   missing(o.scheme, "a fluid solver and a prescribed motion");
-                 SchemeComponents c;
-                 c.predictor = reg.make_predictor("none", o);
-                 return std::make_unique<OneWayFluidScheme>(o, *p.fluid, p.prescribed_motion,
-                                                            std::move(c));
-               });
+  r.add_scheme(
+      "one_way_fluid", "fluid against a prescribed interface motion", {true, false, true, false},
+      [](const CouplingOptions& o, const Participants& p, const Registry& reg) {
+        SchemeComponents c;
+        c.predictor = reg.make_predictor("none", o);
+        return std::make_unique<OneWayFluidScheme>(o, *p.fluid, p.prescribed_motion, std::move(c));
+      });
   r.add_scheme("one_way_structure", "structure under prescribed (recorded) interface loads",
+               {false, true, false, true},
                [](const CouplingOptions& o, const Participants& p, const Registry& reg) {
-                 if (!p.structure || !p.prescribed_loads)
-                   missing(o.scheme, "a structure solver and prescribed loads");
                  SchemeComponents c;
                  c.predictor = reg.make_predictor("none", o);
                  return std::make_unique<OneWayStructureScheme>(o, *p.structure, p.prescribed_loads,

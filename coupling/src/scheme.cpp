@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "coupling/reduction.hpp"
 #include "fsi/core/error.hpp"
 #include "fsi/core/state_archive.hpp"
 
@@ -44,18 +45,6 @@ Eigen::VectorXd coupling_scale(std::size_t n, double dt) {
 }
 
 namespace {
-
-double norm(const std::vector<Vec2>& a) {
-  double sum = 0.0;
-  for (const Vec2& x : a) sum += x.squaredNorm();
-  return std::sqrt(sum);
-}
-
-double norm_of_difference(const std::vector<Vec2>& a, const std::vector<Vec2>& b) {
-  double sum = 0.0;
-  for (std::size_t i = 0; i < a.size(); ++i) sum += (a[i] - b[i]).squaredNorm();
-  return std::sqrt(sum);
-}
 
 bool all_finite(const InterfaceMotion& m) {
   for (std::size_t i = 0; i < m.size(); ++i)
@@ -154,8 +143,7 @@ void CouplingScheme::advance(double t, double dt) {
     if (it + 1 >= options_.max_iterations) {
       converged = false;
       for (std::size_t k = 0; k < n_nodes_; ++k)
-        if ((output.x[k] - input.x[k]).norm() > (output.x[worst] - input.x[worst]).norm())
-          worst = k;
+        if (norm(output.x[k] - input.x[k]) > norm(output.x[worst] - input.x[worst])) worst = k;
       break;
     }
     Eigen::VectorXd next;

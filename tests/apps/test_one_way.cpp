@@ -215,7 +215,8 @@ TEST_CASE("apps: bad recorded interface files are input errors before any step",
   CHECK_FALSE(fs::exists(root / "never")); // nothing ran
   // The file key belongs to its scheme, and the scheme needs it.
   CHECK(fsi_cli({"check", kScene, "--set", "coupling.loads=" + record}, &err) == 2);
-  CHECK(err.find("coupling.loads: only for scheme one_way_structure") != std::string::npos);
+  CHECK(err.find("coupling.loads: scheme 'css' replays no recorded interface loads") !=
+        std::string::npos);
   CHECK(fsi_cli({"check", kScene, "--set", "coupling.scheme=one_way_structure"}, &err) == 2);
   CHECK(err.find("coupling.loads: required key missing") != std::string::npos);
 }

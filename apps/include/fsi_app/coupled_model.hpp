@@ -3,6 +3,7 @@
 // them alone against a recorded interface.h5 (one_way_fluid: the fluid against the recorded
 // motion, the structure not solved; one_way_structure: the structure under the recorded loads,
 // the fluid not solved). The part not solved stays at its initial state in fields and probes.
+#include "coupling/registry.hpp"
 #include "coupling/scheme.hpp"
 #include "fsi_app/adapters.hpp"
 #include "fsi_app/fluid_model.hpp"
@@ -57,6 +58,7 @@ private:
   std::unique_ptr<InterfaceHistory> replay_;
   std::unique_ptr<InterfaceHistoryWriter> history_;
   bool record_ = false;
+  coupling::SchemeNeeds needs_; ///< what the scheme couples (the registry's declaration)
 };
 
 } // namespace fsi::app

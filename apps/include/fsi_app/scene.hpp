@@ -1,6 +1,7 @@
 #pragma once
 // The scene: what one scene file describes, in SI units, after strict validation. Plain data; the
 // solvers get their own option structs built from it (apps/src/build_*.cpp), never this.
+#include "coupling/options.hpp"
 #include "fsi/core/types.hpp"
 
 #include <filesystem>
@@ -104,20 +105,12 @@ struct StructureSpec {
 };
 
 struct CouplingSpec {
-  std::string scheme;       ///< css | bgs | one_way_fluid | one_way_structure
-  std::string predictor;    ///< none | second_order
-  std::string acceleration; ///< none | constant | aitken | iqn-ils
-  double tolerance = 1e-4;  ///< eq. 69
-  int max_iterations = 200;
-  double omega = 0.5; ///< initial / constant relaxation
-  int reuse = 8;      ///< IQN-ILS: past time steps kept
-  bool stop_on_unconverged = false;
-  int substeps = 1; ///< fluid steps per structure step
-  int line = 0;     ///< scene line of the block
+  coupling::CouplingOptions options; ///< declared once, by coupling/ (visit_options)
+  int line = 0;                      ///< scene line of the block
   // Recording and one-way replay (interface.h5, see output/interface_history.hpp).
   bool record_interface = false;  ///< write DIR/interface.h5
-  std::filesystem::path motion{}; ///< one_way_fluid: the recorded interface motion
-  std::filesystem::path loads{};  ///< one_way_structure: the recorded interface loads
+  std::filesystem::path motion{}; ///< a scheme that replays a motion: the recorded motion
+  std::filesystem::path loads{};  ///< a scheme that replays loads: the recorded loads
 };
 
 /// Periodic checkpoints (docs/reliability.md): DIR/checkpoint_<step>.h5 after every

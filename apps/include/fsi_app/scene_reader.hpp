@@ -3,6 +3,7 @@
 // point where it is read: name, type, default, allowed range and a one-line doc. The same
 // declarations produce the scene reference (docs/scenes.md) when read in documentation mode.
 // Errors are one line, `FILE:LINE: KEY: what is wrong`, thrown as fsi::InputError.
+#include "fsi/core/options.hpp"
 #include "fsi/core/types.hpp"
 
 #include <algorithm>
@@ -17,23 +18,7 @@
 
 namespace fsi::app {
 
-/// Allowed interval of a number; open or closed at each end.
-struct Range {
-  double lo = -std::numeric_limits<double>::infinity();
-  double hi = std::numeric_limits<double>::infinity();
-  bool lo_open = false;
-  bool hi_open = false;
-
-  static Range any() { return {}; }
-  static Range positive() { return {0.0, Range{}.hi, true, false}; }
-  static Range non_negative() { return {0.0, Range{}.hi, false, false}; }
-  static Range closed(double a, double b) { return {a, b, false, false}; }
-  static Range open(double a, double b) { return {a, b, true, true}; }
-  static Range left_open(double a, double b) { return {a, b, true, false}; }
-
-  bool contains(double v) const;
-  std::string describe() const; ///< e.g. "(0, 0.5)", "> 0", "any"
-};
+using fsi::Range; // fsi/core/options.hpp
 
 /// One declared key, as the documentation generator sees it.
 struct KeyDoc {

@@ -1,9 +1,12 @@
 #pragma once
 // Coupling options: a plain struct filled by the config layer (no YAML here). Defaults are the
-// member initialisers; allowed ranges and one-line docs are declared once in options.cpp, where
-// both validate_options() and option_declarations() (for the generated scene reference) read them.
+// member initialisers; keys, allowed ranges or names and one-line docs are declared once, in
+// visit_options() (options.cpp), which the scene reader, validate_options() and
+// option_declarations() all go through.
 #include <string>
 #include <vector>
+
+#include "fsi/core/options.hpp"
 
 namespace fsi::coupling {
 
@@ -14,8 +17,9 @@ struct CouplingOptions {
   std::string scheme = "css";
   /// Interface predictor by name: "none" (keep x^n, v^n, a^n) or "second_order" (eqs. 63-65).
   std::string predictor = "none";
-  /// BGS acceleration by name: "none", "constant", "aitken", "iqn-ils".
-  std::string acceleration = "none";
+  /// Acceleration of iterative schemes (bgs) by name: "none", "constant", "aitken", "iqn-ils".
+  /// Explicit schemes (css) have none, whatever this says.
+  std::string acceleration = "aitken";
   /// BGS convergence measure by name: "relative" (eq. 69) or "absolute".
   std::string convergence = "relative";
   /// (0, inf): relative measure: ||r^i|| / ||r^0|| < tolerance; absolute: ||r^i|| < tolerance [m].
@@ -38,6 +42,10 @@ struct CouplingOptions {
   /// [1, 100000]: fluid sub-steps per coupling (structure) step.
   int substeps = 1;
 };
+
+/// Calls `visitor` once per CouplingOptions field, in declaration order, with the field itself:
+/// the one declaration of every coupling option (names list the registry's entries).
+void visit_options(CouplingOptions& options, const Registry& registry, OptionVisitor& visitor);
 
 /// One option as declared: scene key coupling.<key>, default, allowed range, one-line doc.
 struct OptionDeclaration {

@@ -17,6 +17,13 @@
 
 namespace fsi::coupling {
 
+/// What a scheme couples, declared with it: make_scheme checks the participants against it, and a
+/// caller (the scene reader) asks it instead of testing scheme names.
+struct SchemeNeeds {
+  bool fluid = false, structure = false;
+  bool prescribed_motion = false, prescribed_loads = false;
+};
+
 class Registry {
 public:
   using SchemeFactory = std::function<std::unique_ptr<CouplingScheme>(
@@ -26,7 +33,7 @@ public:
   using MeasureFactory = std::function<std::unique_ptr<ConvergenceMeasure>(const CouplingOptions&)>;
 
   /// Register a factory under `name` with a one-line description. Replaces an existing entry.
-  void add_scheme(std::string name, std::string doc, SchemeFactory factory);
+  void add_scheme(std::string name, std::string doc, SchemeNeeds needs, SchemeFactory factory);
   void add_acceleration(std::string name, std::string doc, AccelerationFactory factory);
   void add_predictor(std::string name, std::string doc, PredictorFactory factory);
   void add_measure(std::string name, std::string doc, MeasureFactory factory);
@@ -48,6 +55,8 @@ public:
   std::vector<std::string> predictor_names() const { return names(predictors_); }
   std::vector<std::string> measure_names() const { return names(measures_); }
   bool has_scheme(std::string_view n) const { return schemes_.count(std::string(n)) != 0; }
+  /// The participants scheme `name` needs; InputError for an unknown name.
+  SchemeNeeds scheme_needs(std::string_view name) const;
   bool has_acceleration(std::string_view n) const {
     return accelerations_.count(std::string(n)) != 0;
   }
@@ -57,6 +66,7 @@ public:
   template <class F> struct Entry {
     std::string doc;
     F factory;
+    SchemeNeeds needs{}; ///< schemes only
   };
 
 private:
