@@ -4,27 +4,13 @@
 
 namespace fsi::app {
 
-FluidAdapter::FluidAdapter(emps::EmpsFluid& fluid, erp::WallSet& walls, const erp::FeInterface& fe)
-    : fluid_(fluid), walls_(walls), fe_(fe),
-      loads_(coupling::InterfaceLoads::zeros(static_cast<std::size_t>(fe.node_count()))) {
-  const int edges = fe.segment_count() / 2; // two flat segments per quadratic edge
-  for (int e = 0; e < edges; ++e) {
-    coupling::InterfaceEdge edge{};
-    for (int k = 0; k < 3; ++k)
-      edge.nodes[static_cast<std::size_t>(k)] = static_cast<std::size_t>(
-          fe.polygon_node(fe.edge_nodes(e)[static_cast<std::size_t>(k)]) - fe.first_node());
-    edges_.push_back(edge);
-  }
-}
+FluidAdapter::FluidAdapter(emps::EmpsFluid& fluid, erp::WallSet& walls,
+                           const erp::InterfaceWalls& interface)
+    : fluid_(fluid), walls_(walls), interface_(interface),
+      loads_(coupling::InterfaceLoads::zeros(static_cast<std::size_t>(interface.node_count()))) {}
 
 void FluidAdapter::set_interface_motion(const coupling::InterfaceMotion& m) {
-  auto& nodes = walls_.nodes();
-  for (std::size_t k = 0; k < m.size(); ++k) { // eqs. 60-62
-    const auto L = static_cast<std::size_t>(fe_.first_node()) + k;
-    nodes.x[L] = m.x[k];
-    nodes.v[L] = m.v[k];
-    nodes.a[L] = m.a[k];
-  }
+  interface_.update_nodes(walls_, m.x, m.v, m.a); // eqs. 60-62
 }
 
 void FluidAdapter::advance(double t, double dt) {
@@ -34,22 +20,22 @@ void FluidAdapter::advance(double t, double dt) {
 }
 
 // Each particle's wall force on an interface segment acts on the structure as -f_wall at its
-// wall point (eqs. 53-58), distributed over the FE edge's three nodes.
+// wall point (eqs. 53-58), distributed over the interface edge's nodes.
 void FluidAdapter::project() {
   const emps::WallForces& w = fluid_.wall_forces();
-  const int first = fe_.first_segment(), last = first + fe_.segment_count();
+  const int first = interface_.first_segment(), last = first + interface_.segment_count();
   point_loads_.clear();
   auto add = [&](int s, double t, const Vec2& f) {
     if (s < first || s >= last) return;
     point_loads_.push_back(
-        {static_cast<std::size_t>(fe_.edge(s)), fe_.parent_coordinate(s, t), -f});
+        {static_cast<std::size_t>(interface_.edge(s)), interface_.parent_coordinate(s, t), -f});
   };
   for (std::size_t i = 0; i < w.segment.size(); ++i) {
     add(w.segment[i], w.t[i], w.f[i]);
     add(w.segment2[i], w.t2[i], w.f2[i]);
   }
   std::fill(loads_.f.begin(), loads_.f.end(), Vec2::Zero());
-  coupling::project_point_loads(edges_, point_loads_, loads_);
+  coupling::project_point_loads(interface_.mesh(), point_loads_, loads_);
 }
 
 void FluidAdapter::save_state() {
@@ -70,14 +56,14 @@ void FluidAdapter::read_state(const StateArchive& archive) {
   walls_.read_state(archive, "walls/");
 }
 
-StructureAdapter::StructureAdapter(fem::Structure& structure, const erp::FeInterface& fe)
-    : structure_(structure), fe_(fe),
+StructureAdapter::StructureAdapter(fem::Structure& structure, fem::FeInterface interface)
+    : structure_(structure), interface_(std::move(interface)),
       forces_(fem::Vector::Zero(2 * static_cast<Eigen::Index>(structure.num_nodes()))) {}
 
 void StructureAdapter::set_interface_loads(const coupling::InterfaceLoads& loads) {
   forces_.setZero();
   for (std::size_t k = 0; k < loads.size(); ++k) { // eq. 59
-    const int K = fe_.fe_node(fe_.first_node() + static_cast<int>(k));
+    const int K = interface_.fe_node[k];
     forces_[2 * K] = loads.f[k].x();
     forces_[2 * K + 1] = loads.f[k].y();
   }
@@ -113,13 +99,13 @@ void StructureAdapter::read_state(const StateArchive& archive) {
 }
 
 coupling::InterfaceMotion StructureAdapter::interface_motion() const {
-  const auto n = static_cast<std::size_t>(fe_.node_count());
+  const std::size_t n = interface_.fe_node.size();
   coupling::InterfaceMotion m = coupling::InterfaceMotion::zeros(n);
   const auto& X = structure_.mesh().X;
   const auto &u = structure_.displacement(), &v = structure_.velocity(),
              &a = structure_.acceleration();
   for (std::size_t k = 0; k < n; ++k) { // eqs. 60-62
-    const int K = fe_.fe_node(fe_.first_node() + static_cast<int>(k));
+    const int K = interface_.fe_node[k];
     m.x[k] = X[static_cast<std::size_t>(K)] + Vec2(u[2 * K], u[2 * K + 1]);
     m.v[k] = Vec2(v[2 * K], v[2 * K + 1]);
     m.a[k] = Vec2(a[2 * K], a[2 * K + 1]);

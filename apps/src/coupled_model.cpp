@@ -54,11 +54,13 @@ CoupledModel::~CoupledModel() = default;
 CoupledModel::CoupledModel(const Scene& scene) {
   const StructureSpec& spec = coupled_structure(scene);
   structure_ = std::make_unique<StructureModel>(scene, spec);
-  fluid_ = std::make_unique<FluidModel>(scene, &structure_->structure().mesh(), spec.interface);
+  const fem::Mesh& mesh = structure_->structure().mesh();
+  fem::FeInterface interface = fem::interface_of(mesh, spec.interface);
+  fluid_ = std::make_unique<FluidModel>(scene, &interface.mesh, occupied_area(mesh));
   fluid_adapter_ =
-      std::make_unique<FluidAdapter>(fluid_->fluid(), fluid_->walls(), *fluid_->fe_interface());
+      std::make_unique<FluidAdapter>(fluid_->fluid(), fluid_->walls(), *fluid_->interface_walls());
   structure_adapter_ =
-      std::make_unique<StructureAdapter>(structure_->structure(), *fluid_->fe_interface());
+      std::make_unique<StructureAdapter>(structure_->structure(), std::move(interface));
   const CouplingSpec c = scene.coupling.value_or(CouplingSpec{});
   tap_ = std::make_unique<FluidTap>(*fluid_adapter_);
   record_ = c.record_interface;
@@ -70,7 +72,7 @@ CoupledModel::CoupledModel(const Scene& scene) {
   if (needs_.prescribed_motion || needs_.prescribed_loads) {
     const bool motion = needs_.prescribed_motion;
     replay_ = std::make_unique<InterfaceHistory>(motion ? c.motion : c.loads);
-    const auto nodes = static_cast<std::size_t>(fluid_->fe_interface()->node_count());
+    const auto nodes = static_cast<std::size_t>(fluid_->interface_walls()->node_count());
     if (replay_->nodes() != nodes)
       fail_at(scene, c.line, motion ? "coupling.motion" : "coupling.loads",
               (motion ? c.motion : c.loads).string() + " records " +

@@ -45,8 +45,8 @@ emps::FluidOptions fluid_options(const Scene& scene) {
   return o;
 }
 
-FluidModel::FluidModel(const Scene& scene, const fem::Mesh* structure,
-                       const std::vector<std::string>& interface_tags)
+FluidModel::FluidModel(const Scene& scene, const InterfaceMesh* interface,
+                       const std::vector<erp::Polygon>& solid)
     : walls_(std::make_unique<erp::WallSet>()) {
   int group = 0;
   for (const auto& w : scene.walls) {
@@ -55,17 +55,9 @@ FluidModel::FluidModel(const Scene& scene, const fem::Mesh* structure,
     else
       walls_->add_polyline(w.polyline, w.closed, group++);
   }
-  std::vector<erp::Polygon> holes; // the structure's elements (corner triangles)
-  if (structure) {
-    std::vector<std::array<int, 3>> edges;
-    for (const auto& tag : interface_tags)
-      for (const auto& e : structure->edges_with_tag(tag)) edges.push_back(e.nodes);
-    fe_interface_ = std::make_unique<erp::FeInterface>(*walls_, structure->X, edges, group++);
-    for (const auto& e : structure->elements)
-      holes.push_back({structure->X[static_cast<std::size_t>(e[0])],
-                       structure->X[static_cast<std::size_t>(e[1])],
-                       structure->X[static_cast<std::size_t>(e[2])]});
-  }
+  std::vector<erp::Polygon> holes = solid;
+  if (interface)
+    interface_walls_ = std::make_unique<erp::InterfaceWalls>(*walls_, *interface, group++);
   const FluidSpec& f = *scene.fluid;
   std::vector<Vec2> positions;
   // Each region on its own lattice from its lower-left corner, so a region a whole number of l0

@@ -52,6 +52,15 @@ double edge_length(const fem::Mesh& mesh, const std::string& tag) {
 
 } // namespace
 
+std::vector<std::vector<Vec2>> occupied_area(const fem::Mesh& mesh) {
+  std::vector<std::vector<Vec2>> triangles;
+  for (const auto& e : mesh.elements)
+    triangles.push_back({mesh.X[static_cast<std::size_t>(e[0])],
+                         mesh.X[static_cast<std::size_t>(e[1])],
+                         mesh.X[static_cast<std::size_t>(e[2])]});
+  return triangles;
+}
+
 int probe_node(const Scene& scene, const fem::Mesh& mesh, const ProbeSpec& probe) {
   const int count = static_cast<int>(mesh.num_nodes());
   if (probe.node) {

@@ -27,7 +27,8 @@ TEST_CASE("apps: coupled dam break: walls follow the FE nodes, loads balance the
           "[apps][coupled]") {
   const Scene scene = coarse("css");
   CoupledModel model(scene);
-  const erp::FeInterface& fe = *model.fluid().fe_interface();
+  const erp::InterfaceWalls& fe = *model.fluid().interface_walls();
+  const std::vector<int>& fe_node = model.structure_adapter().interface().fe_node;
   const fem::Structure& structure = model.structure().structure();
   Vec2 mean_load = Vec2::Zero();
   const double dt = 2e-5;
@@ -36,9 +37,9 @@ TEST_CASE("apps: coupled dam break: walls follow the FE nodes, loads balance the
     const auto positions = structure.positions();
     model.advance(k * dt, dt);
     // Eqs. 60-62: every interface polygon node sits on its FE node.
-    for (int L = fe.first_node(); L < fe.first_node() + fe.node_count(); ++L)
-      REQUIRE((model.fluid().walls().nodes().x[static_cast<std::size_t>(L)] -
-               positions[static_cast<std::size_t>(fe.fe_node(L))])
+    for (int k = 0; k < fe.node_count(); ++k)
+      REQUIRE((model.fluid().walls().nodes().x[static_cast<std::size_t>(fe.first_node() + k)] -
+               positions[static_cast<std::size_t>(fe_node[static_cast<std::size_t>(k)])])
                   .norm() < 1e-15);
     // Eqs. 52-59: total load on the structure = -(sum of the interface wall forces).
     const auto& w = model.fluid().fluid().wall_forces();

@@ -42,6 +42,7 @@ public:
 
   const coupling::CouplingScheme& scheme() const { return *scheme_; }
   const FluidAdapter& fluid_adapter() const { return *fluid_adapter_; }
+  const StructureAdapter& structure_adapter() const { return *structure_adapter_; }
   FluidModel& fluid() { return *fluid_; }
   StructureModel& structure() { return *structure_; }
 

@@ -1,10 +1,11 @@
 #pragma once
 // The EMPS fluid of a scene against its polygon walls (static or with prescribed motion).
 #include "fluid_emps/emps_fluid.hpp"
+#include "fsi/core/interface_mesh.hpp"
 #include "fsi_app/model.hpp"
-#include "geometry_erp/fe_interface.hpp"
+#include "geometry_erp/fill.hpp"
+#include "geometry_erp/interface_walls.hpp"
 #include "geometry_erp/wall_set.hpp"
-#include "structure_fem/mesh.hpp"
 
 #include <memory>
 
@@ -17,11 +18,11 @@ emps::FluidOptions fluid_options(const Scene& scene);
 class FluidModel final : public Model {
 public:
   /// Builds walls, fills the regions with particles and maps the options. A coupled structure's
-  /// interface edges (its boundary edges with the given tags) become ERP walls whose nodes are
-  /// its FE nodes (eqs. 47-51), and its elements are kept free of particles. Throws InputError
-  /// (scene file and line) for a motion table or region that does not fit.
-  FluidModel(const Scene& scene, const fem::Mesh* structure = nullptr,
-             const std::vector<std::string>& interface_tags = {});
+  /// interface (as the structure describes it) becomes ERP walls whose nodes are its interface
+  /// nodes (eqs. 47-51), and the area it occupies (`solid`) is kept free of particles. Throws
+  /// InputError (scene file and line) for a motion table or region that does not fit.
+  FluidModel(const Scene& scene, const InterfaceMesh* interface = nullptr,
+             const std::vector<erp::Polygon>& solid = {});
   void advance(double time, double dt) override;
   std::optional<double> stable_dt(double courant) const override;
   void declare(FieldsFile& file) const override;
@@ -33,12 +34,12 @@ public:
 
   emps::EmpsFluid& fluid() { return *fluid_; }
   erp::WallSet& walls() { return *walls_; }
-  /// The FE interface of the coupled structure (null without one).
-  const erp::FeInterface* fe_interface() const { return fe_interface_.get(); }
+  /// The walls of the coupled structure's interface (null without one).
+  const erp::InterfaceWalls* interface_walls() const { return interface_walls_.get(); }
 
 private:
   std::unique_ptr<erp::WallSet> walls_;
-  std::unique_ptr<erp::FeInterface> fe_interface_;
+  std::unique_ptr<erp::InterfaceWalls> interface_walls_;
   std::unique_ptr<emps::EmpsFluid> fluid_;
   std::size_t initial_count_ = 0;
   mutable std::vector<double> xy_, v_, flag_; // output buffers

@@ -23,6 +23,10 @@ struct TankFrame {
 /// The frame of the structure's clamped_motion wall, or nullopt if it is clamped in place.
 std::optional<TankFrame> tank_frame(const Scene& scene, const StructureSpec& spec);
 
+/// The area the mesh occupies, for a fluid to keep free of particles: each element's corner
+/// triangle.
+std::vector<std::vector<Vec2>> occupied_area(const fem::Mesh& mesh);
+
 /// The FE node a displacement probe names (by index, or by reference position).
 int probe_node(const Scene& scene, const fem::Mesh& mesh, const ProbeSpec& probe);
 

@@ -73,7 +73,7 @@ public:
   /// Throws InputError when the archive has another node count.
   void read_state(const StateArchive& archive, const std::string& prefix);
 
-  /// Low-level construction (used by FeInterface): one node at rest; one segment a -> b.
+  /// Low-level construction (used by InterfaceWalls): one node at rest; one segment a -> b.
   int add_node(const Vec2& x);
   int add_segment(int a, int b, int group);
 
