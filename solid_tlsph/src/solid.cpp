@@ -177,22 +177,22 @@ void TlsphSolid::build_interface(const SolidGeometry& geometry) {
   const double band = options_.dp; // the outer lattice layer lies at dp / 2 from the outline
   for (std::size_t i = 0; i < n; ++i) {
     const Vec2 X(X0_[i], Y0_[i]);
+    // The nearest tagged edge places the particle along the outline (a corner particle
+    // belongs to every edge within the band; the first tagged one wins a tie).
     double best = std::numeric_limits<double>::max(), best_xi = 0.0;
-    std::size_t best_e = 0;
+    std::size_t best_e = m;
     Vec2 normal = Vec2::Zero();
     for (std::size_t e = 0; e < m; ++e) {
       const Vec2 &a = outline[e], &b = outline[(e + 1) % m];
       double xi = 0.0;
       const double d = point_segment_distance(X, a, b, &xi);
-      if (d < band) {
-        const Vec2 t = (b - a).normalized();
-        normal += Vec2(t.y(), -t.x()); // outward for a counter-clockwise outline
-      }
-      if (d < best) best = d, best_e = e, best_xi = xi;
+      if (d >= band) continue;
+      surface_[i] = 1;
+      const Vec2 t = (b - a).normalized();
+      normal += Vec2(t.y(), -t.x()); // outward for a counter-clockwise outline
+      if (tagged(e) && d < best) best = d, best_e = e, best_xi = xi;
     }
-    if (best >= band) continue;
-    surface_[i] = 1;
-    if (!tagged(best_e) || clamped_[i]) continue;
+    if (best_e == m || clamped_[i]) continue;
     nodes.push_back({s0[best_e] + best_xi * (s0[best_e + 1] - s0[best_e]),
                      static_cast<std::uint32_t>(i), normal.normalized()});
   }
