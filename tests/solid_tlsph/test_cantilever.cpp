@@ -77,7 +77,7 @@ TEST_CASE("tlsph: static cantilever, three resolutions: order and extrapolated d
 }
 
 TEST_CASE("tlsph: static cantilever within 2 % of Timoshenko and FEM at H/dp = 8",
-          "[solid_tlsph][cantilever][!mayfail]") {
+          "[solid_tlsph][cantilever][slow]") {
   const Result r8 = static_tip(8);
   const double w_fem = fem_deflection(r8.x);
   INFO("H/dp = 8: TL-SPH " << r8.w << ", Timoshenko " << r8.ref << ", FEM " << w_fem);

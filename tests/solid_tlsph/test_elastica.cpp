@@ -67,7 +67,7 @@ TEST_CASE("tlsph: elastica error shrinks with resolution (k = 2, H/dp = 4, 8)",
 }
 
 TEST_CASE("tlsph: elastica within 2 % of the analytic tip position (H/dp = 8)",
-          "[solid_tlsph][elastica][slow][!mayfail]") {
+          "[solid_tlsph][elastica][slow]") {
   for (const auto& e : elastica_run(8, {1.0, 2.0, 5.0})) {
     INFO("k = " << e.k << ": v " << e.v << " (elastica " << e.v_ref << "), u " << e.u
                 << " (elastica " << e.u_ref << ")");
