@@ -536,6 +536,7 @@ void TlsphSolid::restore(const TlsphState& s) {
   fields_.restore(s.fields);
   time_ = s.time, step_ = s.step, external_work_ = s.external_work;
   update_loaded();
+  compute_stress(); // F and P B0 are scratch: a later set_interface_loads() needs them current
 }
 
 void TlsphSolid::write_state(StateArchive& archive, const std::string& prefix) const {
@@ -553,6 +554,7 @@ void TlsphSolid::read_state(const StateArchive& archive, const std::string& pref
   step_ = static_cast<long>(archive.integer(prefix + "step"));
   external_work_ = archive.real(prefix + "external_work");
   update_loaded();
+  compute_stress();
 }
 
 } // namespace fsi::tlsph
