@@ -1,0 +1,194 @@
+#pragma once
+// Total-Lagrangian SPH solid with kernel gradient correction (RKGC paper, ../shared/seeds/
+// rkgc-riemann-sph-multires-fsi.txt, eqs. 6-14; ../shared/sph-method-notes.md, "Solid").
+// Neighbours, kernel gradients grad0 W_ab and the correction matrices B0_a (eq. 14) are computed
+// once in the reference configuration; each step evaluates F_a (eq. 13), S(E) from materials/,
+// P = F S (eq. 7) and the momentum equation (eq. 12), integrated by velocity Verlet in two half
+// steps. Units SI, per unit thickness (forces in N/m, energies in J/m).
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "fsi/core/interface_mesh.hpp"
+#include "fsi/core/types.hpp"
+#include "materials/material.hpp"
+#include "particles/field_set.hpp"
+#include "solid_tlsph/geometry.hpp"
+
+namespace fsi {
+class StateArchive;
+}
+
+namespace fsi::tlsph {
+
+/// A clamped region: particles whose reference position satisfies `contains` have their
+/// position and velocity prescribed. Without `position`/`velocity` they stay at X0 with v = 0;
+/// with them (a rigid motion such as a rolling tank's clamp) x = position(X0, t),
+/// v = velocity(X0, t). Both or neither must be set.
+struct Clamp {
+  std::function<bool(const Vec2& X0)> contains;
+  std::function<Vec2(const Vec2& X0, double t)> position;
+  std::function<Vec2(const Vec2& X0, double t)> velocity;
+};
+
+struct TlsphOptions {
+  materials::MaterialOptions material;
+  double dp = 0.01;              ///< lattice spacing dp_S [m], > 0 (the geometry's spacing)
+  double h_factor = 1.15;        ///< h = h_factor dp, in [1, 2] (notes: 1.15; hydrostatic case 1.3)
+  Vec2 gravity{0.0, 0.0};        ///< g [m/s^2]
+  double cfl = 0.6;              ///< dt_s = cfl min(sqrt(h/|a|), h/(c_s + |v|)), in (0, 1]
+  bool kernel_correction = true; ///< B0 of eq. 14; false: B0 = I (standard SPH, for tests)
+  /// Pairwise artificial viscosity, a_a += sum_b 2 nu_d (v_b - v_a) |dW_ab| / r_ab V_b with
+  /// nu_d = pair_damping * c_s h / 2 (Morris form in the reference configuration; conserves
+  /// momentum, dissipates the relative motion of neighbours). >= 0; 0 = off (default).
+  double pair_damping = 0.0;
+  /// Mass-proportional damping a -= mass_damping v [1/s], >= 0; 0 = off. For static solutions
+  /// by dynamic relaxation (close to 2 omega_1 is critical for the first mode).
+  double mass_damping = 0.0;
+  std::vector<Clamp> clamps;
+  /// Outline tags whose surface particles form the coupling interface; empty: every edge.
+  std::vector<std::string> interface_tags;
+  int max_neighbors = 64; ///< row capacity of the reference neighbour list, >= 8
+};
+
+/// Throws InputError naming the field, its value and the allowed range.
+void validate(const TlsphOptions& options);
+
+/// Everything that evolves; cheap to copy for save/restore in iterative coupling.
+struct TlsphState {
+  particles::FieldSet::Snapshot fields;
+  double time = 0.0;
+  long step = 0;
+  double external_work = 0.0;
+};
+
+struct TlsphEnergies {
+  double kinetic = 0.0;       ///< sum m v^2 / 2
+  double strain = 0.0;        ///< sum V0 W(E)
+  double gravity_work = 0.0;  ///< sum m g . (x - X0)
+  double external_work = 0.0; ///< integral of the interface loads . dx (trapezoidal per step)
+  double total() const { return kinetic + strain - gravity_work - external_work; }
+};
+
+class TlsphSolid {
+public:
+  /// Validates the options and the geometry, builds the reference neighbour list, grad0 W V_b
+  /// per pair and B0 (eq. 14), marks clamped and surface particles, builds the interface, and
+  /// starts at rest at X0 with a^0 from eq. 12 (gravity only). Throws InputError (bad options,
+  /// empty geometry, a neighbour row over max_neighbors, a singular moment matrix).
+  TlsphSolid(SolidGeometry geometry, TlsphOptions options);
+  ~TlsphSolid();
+  TlsphSolid(const TlsphSolid&) = delete;
+  TlsphSolid& operator=(const TlsphSolid&) = delete;
+
+  std::size_t size() const { return fields_.size(); }
+  const TlsphOptions& options() const { return options_; }
+  double h() const { return h_; }
+  double sound_speed() const { return c_s_; } ///< c_s = sqrt(K / rho0)
+  double time() const { return time_; }
+  long step() const { return step_; }
+  const particles::FieldSet& fields() const { return fields_; }
+
+  /// Advances from t to t + dt in sub-steps of at most the stable dt_s (recomputed before each
+  /// sub-step from max |a|, |v|; the remaining interval split evenly), with the interface loads
+  /// held fixed. `t` is the start time and must equal time() to within 1e-12 (1 + |t|); throws
+  /// InputError otherwise, RunError (what, particle, step, time) on NaN or det F <= 0; the state is
+  /// then that of the failed sub-step (restore() a saved one). Returns the sub-steps taken.
+  int advance(double t, double dt);
+  /// The stable step dt_s of the current state.
+  double stable_dt() const;
+
+  // --- coupling interface ---
+  /// Surface particles of the tagged edges, ordered along the outline (counter-clockwise:
+  /// solid on the left of a -> b), order-1 edges between neighbours along it.
+  InterfaceMesh interface_mesh() const;
+  /// Particle index of interface node k.
+  const std::vector<std::uint32_t>& interface_particles() const { return interface_; }
+  /// Current x, v, a of the interface nodes.
+  std::vector<Vec2> interface_positions() const;
+  std::vector<Vec2> interface_velocities() const;
+  std::vector<Vec2> interface_accelerations() const;
+  /// Outward unit normals of the interface nodes in the current configuration: the reference
+  /// normal n0 (from the outline) mapped by the cofactor of F, n = F^-T n0 / |F^-T n0|
+  /// (Nanson's formula; the rotation R of F = R U for pure rotations).
+  std::vector<Vec2> interface_normals() const;
+  /// Nodal forces on the interface nodes [N/m], held over the next advance(); they enter
+  /// eq. 12 as a^{F:S} = f / m. Clamped nodes ignore them (reactions).
+  void set_interface_loads(const std::vector<Vec2>& forces);
+  /// External nodal forces on any particles (e.g. a test's tip load) [N/m], size() entries.
+  void set_external_forces(const std::vector<Vec2>& forces);
+
+  // --- output ---
+  Vec2 position(std::size_t i) const { return {x_[i], y_[i]}; }
+  Vec2 reference_position(std::size_t i) const { return {X0_[i], Y0_[i]}; }
+  Vec2 displacement(std::size_t i) const { return {x_[i] - X0_[i], y_[i] - Y0_[i]}; }
+  Vec2 velocity(std::size_t i) const { return {vx_[i], vy_[i]}; }
+  Vec2 acceleration(std::size_t i) const { return {ax_[i], ay_[i]}; }
+  double volume(std::size_t i) const { return V0_[i]; }
+  bool clamped(std::size_t i) const { return clamped_[i] != 0; }
+  bool surface(std::size_t i) const { return surface_[i] != 0; }
+  /// F_a of eq. 13 at the current positions.
+  Mat2 deformation_gradient(std::size_t i) const;
+  Mat2 correction_matrix(std::size_t i) const;
+  std::vector<double> det_F() const;
+  /// Von Mises of the Cauchy stress sigma = F S F^T / J (plane: with sigma_33 from the law).
+  std::vector<double> von_mises() const;
+  /// Index of the particle whose reference position is nearest to X0 (a probe).
+  std::size_t nearest_particle(const Vec2& X0) const;
+  /// Kernel interpolation of the displacement at reference point X0, sum u_b W V_b / sum W V_b.
+  Vec2 interpolate_displacement(const Vec2& X0) const;
+  TlsphEnergies energies() const;
+
+  /// Sets positions and velocities (e.g. an initial velocity or a prescribed displacement field
+  /// in a test), then recomputes F, stress and accelerations. Clamped particles keep their
+  /// prescribed values. Sizes must be size().
+  void set_positions(const std::vector<Vec2>& x);
+  void set_velocities(const std::vector<Vec2>& v);
+
+  TlsphState save() const;
+  /// Returns to a saved state (positions, velocities, accelerations, pending loads, time, step).
+  void restore(const TlsphState& state);
+  /// Checkpoint of the state under keys `prefix` + name; read_state continues bitwise.
+  void write_state(StateArchive& archive, const std::string& prefix) const;
+  /// Throws InputError naming the key when the archive holds another particle count.
+  void read_state(const StateArchive& archive, const std::string& prefix);
+
+private:
+  void build_reference();
+  void build_interface(const SolidGeometry& geometry);
+  /// F (eq. 13) and P B0 per particle; throws RunError on det F <= 0 or NaN.
+  void compute_stress();
+  /// a = eq. 12 + gravity + external + damping (needs compute_stress()).
+  void compute_acceleration();
+  void prescribe(double t);
+  void substep(double dt);
+  void update_loaded();
+
+  TlsphOptions options_;
+  std::unique_ptr<materials::Material> material_;
+  double h_ = 0.0, c_s_ = 0.0, rho0_ = 0.0;
+  double time_ = 0.0, external_work_ = 0.0;
+  long step_ = 0;
+
+  particles::FieldSet fields_;
+  // State: current position, velocity, acceleration, pending external forces.
+  std::vector<double>&x_, &y_, &vx_, &vy_, &ax_, &ay_, &fx_, &fy_;
+  // Reference data (not state): X0, V0, B0, clamp index (0 = free, k + 1 = clamps[k]), surface.
+  std::vector<double>&X0_, &Y0_, &V0_, &B00_, &B01_, &B10_, &B11_;
+  std::vector<std::uint8_t>&clamped_, &surface_;
+  // Scratch: F and P B0 per particle (recomputed every step).
+  std::vector<double>&F00_, &F01_, &F10_, &F11_, &PB00_, &PB01_, &PB10_, &PB11_;
+
+  // Reference neighbour pairs, CSR by particle: neighbour b and grad0 W_ab V_b (eq. 14).
+  std::vector<std::uint32_t> pair_start_, pair_b_;
+  std::vector<double> pair_gx_, pair_gy_, pair_dwr_; // grad0 W_ab V_b, |dW_ab| / r_ab V_b
+
+  std::vector<std::uint32_t> loaded_;    // free particles with a nonzero external force
+  std::vector<std::uint32_t> interface_; // particle of each interface node
+  std::vector<Vec2> interface_n0_;       // reference outward normals
+  InterfaceMesh interface_mesh_;
+};
+
+} // namespace fsi::tlsph

@@ -1,0 +1,560 @@
+#include "solid_tlsph/solid.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <sstream>
+
+#include "fsi/core/error.hpp"
+#include "fsi/core/parallel.hpp"
+#include "fsi/core/state_archive.hpp"
+#include "particles/cell_grid.hpp"
+#include "particles/kernels.hpp"
+#include "particles/neighbor_list.hpp"
+
+namespace fsi::tlsph {
+
+namespace {
+
+constexpr std::size_t none = std::numeric_limits<std::size_t>::max();
+
+template <class T> void require(bool ok, const std::string& key, T value, const char* range) {
+  if (ok) return;
+  std::ostringstream s;
+  s << "tlsph: " << key << " = " << value << " must be " << range;
+  throw InputError(s.str());
+}
+
+double point_segment_distance(const Vec2& p, const Vec2& a, const Vec2& b, double* xi) {
+  const Vec2 ab = b - a;
+  const double t = std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
+  if (xi) *xi = t;
+  return (p - (a + t * ab)).norm();
+}
+
+} // namespace
+
+void validate(const TlsphOptions& o) {
+  materials::validate(o.material);
+  require(o.dp > 0.0, "dp", o.dp, "> 0");
+  require(o.h_factor >= 1.0 && o.h_factor <= 2.0, "h_factor", o.h_factor, "in [1, 2]");
+  require(o.cfl > 0.0 && o.cfl <= 1.0, "cfl", o.cfl, "in (0, 1]");
+  require(o.pair_damping >= 0.0, "pair_damping", o.pair_damping, ">= 0");
+  require(o.mass_damping >= 0.0, "mass_damping", o.mass_damping, ">= 0");
+  require(o.max_neighbors >= 8, "max_neighbors", o.max_neighbors, ">= 8");
+  require(o.gravity.allFinite(), "gravity", o.gravity.transpose(), "finite");
+  for (std::size_t k = 0; k < o.clamps.size(); ++k) {
+    const auto& c = o.clamps[k];
+    if (!c.contains)
+      throw InputError("tlsph: clamps[" + std::to_string(k) + "].contains is not set");
+    if (static_cast<bool>(c.position) != static_cast<bool>(c.velocity))
+      throw InputError("tlsph: clamps[" + std::to_string(k) +
+                       "]: set both position and velocity of a moving clamp, or neither");
+  }
+}
+
+TlsphSolid::TlsphSolid(SolidGeometry geometry, TlsphOptions options)
+    : options_(std::move(options)), x_(fields_.add_real("x")), y_(fields_.add_real("y")),
+      vx_(fields_.add_real("vx")), vy_(fields_.add_real("vy")), ax_(fields_.add_real("ax")),
+      ay_(fields_.add_real("ay")), fx_(fields_.add_real("fx")), fy_(fields_.add_real("fy")),
+      X0_(fields_.add_real("X0", false)), Y0_(fields_.add_real("Y0", false)),
+      V0_(fields_.add_real("V0", false)), B00_(fields_.add_real("B00", false)),
+      B01_(fields_.add_real("B01", false)), B10_(fields_.add_real("B10", false)),
+      B11_(fields_.add_real("B11", false)), clamped_(fields_.add_flag("clamp", false)),
+      surface_(fields_.add_flag("surface", false)), F00_(fields_.add_real("F00", false)),
+      F01_(fields_.add_real("F01", false)), F10_(fields_.add_real("F10", false)),
+      F11_(fields_.add_real("F11", false)), PB00_(fields_.add_real("PB00", false)),
+      PB01_(fields_.add_real("PB01", false)), PB10_(fields_.add_real("PB10", false)),
+      PB11_(fields_.add_real("PB11", false)) {
+  validate(options_);
+  const std::size_t n = geometry.X0.size();
+  if (n == 0) throw InputError("tlsph: the geometry holds no particles");
+  if (geometry.V0.size() != n)
+    throw InputError("tlsph: " + std::to_string(geometry.V0.size()) + " volumes for " +
+                     std::to_string(n) + " particles");
+  if (geometry.outline_tags.size() != geometry.outline.size())
+    throw InputError("tlsph: outline has " + std::to_string(geometry.outline.size()) +
+                     " edges but " + std::to_string(geometry.outline_tags.size()) + " tags");
+  material_ = materials::make_material(options_.material);
+  rho0_ = options_.material.density;
+  h_ = options_.h_factor * options_.dp;
+  {
+    const double E = options_.material.youngs_modulus, nu = options_.material.poisson_ratio;
+    const double K = E / (3.0 * (1.0 - 2.0 * nu)); // eq. 11
+    c_s_ = std::sqrt(K / rho0_);
+  }
+  fields_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!(geometry.V0[i] > 0.0))
+      throw InputError("tlsph: particle " + std::to_string(i) + " has volume <= 0");
+    X0_[i] = x_[i] = geometry.X0[i].x();
+    Y0_[i] = y_[i] = geometry.X0[i].y();
+    V0_[i] = geometry.V0[i];
+    for (std::size_t k = 0; k < options_.clamps.size(); ++k)
+      if (options_.clamps[k].contains(geometry.X0[i])) {
+        clamped_[i] = static_cast<std::uint8_t>(k + 1);
+        break;
+      }
+  }
+  build_reference();
+  build_interface(geometry);
+  prescribe(0.0);
+  compute_stress();
+  compute_acceleration();
+}
+
+TlsphSolid::~TlsphSolid() = default;
+
+void TlsphSolid::build_reference() {
+  const std::size_t n = size();
+  Vec2 lo(X0_[0], Y0_[0]), hi = lo;
+  for (std::size_t i = 0; i < n; ++i)
+    lo = lo.cwiseMin(Vec2(X0_[i], Y0_[i])), hi = hi.cwiseMax(Vec2(X0_[i], Y0_[i]));
+  const particles::WendlandC2 kernel(h_);
+  const double radius = kernel.cutoff();
+  particles::CellGrid grid(lo, hi, radius);
+  grid.bin(X0_.data(), Y0_.data(), n);
+  particles::NeighborList list;
+  const auto capacity = static_cast<std::size_t>(options_.max_neighbors);
+  if (!list.build(grid, X0_.data(), Y0_.data(), n, radius, capacity))
+    throw InputError("tlsph: particle " + std::to_string(list.overflow()) + " has more than " +
+                     "max_neighbors = " + std::to_string(capacity) + " neighbours within 2h");
+  pair_start_.assign(n + 1, 0);
+  for (std::size_t a = 0; a < n; ++a) pair_start_[a + 1] = pair_start_[a] + list.count(a);
+  const std::size_t pairs = pair_start_[n];
+  pair_b_.resize(pairs), pair_gx_.resize(pairs), pair_gy_.resize(pairs), pair_dwr_.resize(pairs);
+  std::size_t bad = none;
+  for (std::size_t a = 0; a < n; ++a) {
+    const std::uint32_t* row = list.row(a);
+    std::vector<std::uint32_t> sorted(row, row + list.count(a));
+    std::sort(sorted.begin(), sorted.end()); // a fixed summation order
+    Mat2 M = Mat2::Zero();
+    for (std::size_t k = 0; k < sorted.size(); ++k) {
+      const std::size_t p = pair_start_[a] + k, b = sorted[k];
+      const Vec2 X_ab(X0_[a] - X0_[b], Y0_[a] - Y0_[b]);
+      const double r = X_ab.norm(), dW = kernel.dW(r);
+      const Vec2 g = X_ab / r * dW * V0_[b]; // grad0 W_ab V_b, gradient with respect to X_a
+      pair_b_[p] = static_cast<std::uint32_t>(b);
+      pair_gx_[p] = g.x(), pair_gy_[p] = g.y();
+      pair_dwr_[p] = -dW / r * V0_[b];
+      M -= X_ab * g.transpose(); // sum (X_b - X_a) (x) grad0 W_ab V_b (eq. 14)
+    }
+    Mat2 B = Mat2::Identity();
+    if (options_.kernel_correction) {
+      const double det = M.determinant();
+      if (!(std::abs(det) > 1e-8)) { // M ~ I for a full lattice: det ~ 1
+        if (bad == none) bad = a;
+      } else {
+        B = M.inverse();
+      }
+    }
+    B00_[a] = B(0, 0), B01_[a] = B(0, 1), B10_[a] = B(1, 0), B11_[a] = B(1, 1);
+  }
+  if (bad != none)
+    throw InputError("tlsph: particle " + std::to_string(bad) +
+                     " has a singular moment matrix (eq. 14): too few neighbours in 2h");
+}
+
+void TlsphSolid::build_interface(const SolidGeometry& geometry) {
+  const auto& outline = geometry.outline;
+  const std::size_t m = outline.size(), n = size();
+  if (m == 0) return;
+  std::vector<double> s0(m + 1, 0.0); // arc length at the start of each edge
+  for (std::size_t e = 0; e < m; ++e)
+    s0[e + 1] = s0[e] + (outline[(e + 1) % m] - outline[e]).norm();
+  auto tagged = [&](std::size_t e) {
+    const auto& tags = options_.interface_tags;
+    return tags.empty() ||
+           std::find(tags.begin(), tags.end(), geometry.outline_tags[e]) != tags.end();
+  };
+  struct Node {
+    double s;
+    std::uint32_t i;
+    Vec2 n0;
+  };
+  std::vector<Node> nodes;
+  const double band = options_.dp; // the outer lattice layer lies at dp / 2 from the outline
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2 X(X0_[i], Y0_[i]);
+    // The nearest tagged edge places the particle along the outline (a corner particle
+    // belongs to every edge within the band; the first tagged one wins a tie).
+    double best = std::numeric_limits<double>::max(), best_xi = 0.0;
+    std::size_t best_e = m;
+    Vec2 normal = Vec2::Zero();
+    for (std::size_t e = 0; e < m; ++e) {
+      const Vec2 &a = outline[e], &b = outline[(e + 1) % m];
+      double xi = 0.0;
+      const double d = point_segment_distance(X, a, b, &xi);
+      if (d >= band) continue;
+      surface_[i] = 1;
+      const Vec2 t = (b - a).normalized();
+      normal += Vec2(t.y(), -t.x()); // outward for a counter-clockwise outline
+      if (tagged(e) && d < best) best = d, best_e = e, best_xi = xi;
+    }
+    if (best_e == m || clamped_[i]) continue;
+    nodes.push_back({s0[best_e] + best_xi * (s0[best_e + 1] - s0[best_e]),
+                     static_cast<std::uint32_t>(i), normal.normalized()});
+  }
+  std::stable_sort(nodes.begin(), nodes.end(),
+                   [](const Node& a, const Node& b) { return a.s < b.s; });
+  interface_mesh_.order = 1;
+  interface_mesh_.X0.clear();
+  interface_mesh_.edges.clear();
+  for (const Node& node : nodes) {
+    interface_.push_back(node.i);
+    interface_n0_.push_back(node.n0);
+    interface_mesh_.X0.emplace_back(X0_[node.i], Y0_[node.i]);
+  }
+  // Order-1 edges between neighbours along the outline (lattice neighbours, including the
+  // diagonal step around a corner); the chain closes when the whole outline is interface.
+  const double link = 1.5 * options_.dp;
+  const std::size_t k = nodes.size();
+  for (std::size_t a = 0; a + 1 < k; ++a)
+    if ((interface_mesh_.X0[a + 1] - interface_mesh_.X0[a]).norm() < link)
+      interface_mesh_.edges.push_back({a, a, a + 1});
+  if (k > 2 && (interface_mesh_.X0[0] - interface_mesh_.X0[k - 1]).norm() < link)
+    interface_mesh_.edges.push_back({k - 1, k - 1, 0});
+}
+
+InterfaceMesh TlsphSolid::interface_mesh() const {
+  return interface_mesh_;
+}
+
+void TlsphSolid::prescribe(double t) {
+  parallel_for(size(), [&](std::size_t i) {
+    if (!clamped_[i]) return;
+    const Clamp& c = options_.clamps[clamped_[i] - 1u];
+    if (c.position) {
+      const Vec2 X(X0_[i], Y0_[i]);
+      const Vec2 x = c.position(X, t), v = c.velocity(X, t);
+      // a by a central difference of the prescribed velocity (output only: clamped particles
+      // are not integrated).
+      const double d = 1e-6 * (1.0 + std::abs(t));
+      const Vec2 a = (c.velocity(X, t + d) - c.velocity(X, t - d)) / (2.0 * d);
+      x_[i] = x.x(), y_[i] = x.y(), vx_[i] = v.x(), vy_[i] = v.y(), ax_[i] = a.x(), ay_[i] = a.y();
+    } else {
+      x_[i] = X0_[i], y_[i] = Y0_[i], vx_[i] = vy_[i] = ax_[i] = ay_[i] = 0.0;
+    }
+  });
+}
+
+Mat2 TlsphSolid::deformation_gradient(std::size_t a) const {
+  // eq. 13: F_a = (sum_b (u_b - u_a) (x) grad0 W_ab V_b) B0_a + I
+  const double ux_a = x_[a] - X0_[a], uy_a = y_[a] - Y0_[a];
+  double G00 = 0.0, G01 = 0.0, G10 = 0.0, G11 = 0.0;
+  for (std::uint32_t p = pair_start_[a]; p < pair_start_[a + 1]; ++p) {
+    const std::uint32_t b = pair_b_[p];
+    const double dux = x_[b] - X0_[b] - ux_a, duy = y_[b] - Y0_[b] - uy_a;
+    G00 += dux * pair_gx_[p], G01 += dux * pair_gy_[p];
+    G10 += duy * pair_gx_[p], G11 += duy * pair_gy_[p];
+  }
+  Mat2 F;
+  F(0, 0) = 1.0 + G00 * B00_[a] + G01 * B10_[a];
+  F(0, 1) = G00 * B01_[a] + G01 * B11_[a];
+  F(1, 0) = G10 * B00_[a] + G11 * B10_[a];
+  F(1, 1) = 1.0 + G10 * B01_[a] + G11 * B11_[a];
+  return F;
+}
+
+Mat2 TlsphSolid::correction_matrix(std::size_t a) const {
+  Mat2 B;
+  B << B00_[a], B01_[a], B10_[a], B11_[a];
+  return B;
+}
+
+void TlsphSolid::compute_stress() {
+  const materials::Material& law = *material_;
+  const std::size_t bad = parallel_reduce(
+      size(), none,
+      [&](std::size_t a) {
+        const Mat2 F = deformation_gradient(a);
+        F00_[a] = F(0, 0), F01_[a] = F(0, 1), F10_[a] = F(1, 0), F11_[a] = F(1, 1);
+        const double J = F.determinant();
+        if (!(J > 0.0)) { // also NaN
+          PB00_[a] = PB01_[a] = PB10_[a] = PB11_[a] = 0.0;
+          return a;
+        }
+        const Mat2 E = 0.5 * (F.transpose() * F - Mat2::Identity()); // eq. 9
+        const Mat2 PB = F * law.stress(E) * correction_matrix(a);    // eq. 7, P B0
+        PB00_[a] = PB(0, 0), PB01_[a] = PB(0, 1), PB10_[a] = PB(1, 0), PB11_[a] = PB(1, 1);
+        return none;
+      },
+      [](std::size_t a, std::size_t b) { return std::min(a, b); });
+  if (bad != none) {
+    std::ostringstream s;
+    s << "tlsph: det F = " << F00_[bad] * F11_[bad] - F01_[bad] * F10_[bad] << " <= 0 at particle "
+      << bad << " (X0 = " << X0_[bad] << ", " << Y0_[bad] << ") in step " << step_
+      << " at t = " << time_;
+    throw RunError(s.str());
+  }
+}
+
+void TlsphSolid::compute_acceleration() {
+  const double inv_rho0 = 1.0 / rho0_;
+  const double nu_d = options_.pair_damping * 0.5 * c_s_ * h_;
+  const double gamma = options_.mass_damping;
+  const double gx = options_.gravity.x(), gy = options_.gravity.y();
+  const std::size_t bad = parallel_reduce(
+      size(), none,
+      [&](std::size_t a) {
+        if (clamped_[a]) return none;
+        // eq. 12 per unit mass: (1 / rho0) sum_b (P_a B0_a + P_b B0_b) grad0 W_ab V_b
+        double sx = 0.0, sy = 0.0, dx = 0.0, dy = 0.0;
+        for (std::uint32_t p = pair_start_[a]; p < pair_start_[a + 1]; ++p) {
+          const std::uint32_t b = pair_b_[p];
+          const double g0 = pair_gx_[p], g1 = pair_gy_[p];
+          sx += (PB00_[a] + PB00_[b]) * g0 + (PB01_[a] + PB01_[b]) * g1;
+          sy += (PB10_[a] + PB10_[b]) * g0 + (PB11_[a] + PB11_[b]) * g1;
+          dx += (vx_[b] - vx_[a]) * pair_dwr_[p], dy += (vy_[b] - vy_[a]) * pair_dwr_[p];
+        }
+        const double inv_m = inv_rho0 / V0_[a];
+        ax_[a] = sx * inv_rho0 + gx + fx_[a] * inv_m + 2.0 * nu_d * dx - gamma * vx_[a];
+        ay_[a] = sy * inv_rho0 + gy + fy_[a] * inv_m + 2.0 * nu_d * dy - gamma * vy_[a];
+        return std::isfinite(ax_[a]) && std::isfinite(ay_[a]) ? none : a;
+      },
+      [](std::size_t a, std::size_t b) { return std::min(a, b); });
+  if (bad != none) {
+    std::ostringstream s;
+    s << "tlsph: acceleration is not finite at particle " << bad << " (X0 = " << X0_[bad] << ", "
+      << Y0_[bad] << ") in step " << step_ << " at t = " << time_;
+    throw RunError(s.str());
+  }
+}
+
+double TlsphSolid::stable_dt() const {
+  struct Max {
+    double a2, v2;
+  };
+  const Max m = parallel_reduce(
+      size(), Max{0.0, 0.0},
+      [&](std::size_t i) {
+        if (clamped_[i]) return Max{0.0, vx_[i] * vx_[i] + vy_[i] * vy_[i]};
+        return Max{ax_[i] * ax_[i] + ay_[i] * ay_[i], vx_[i] * vx_[i] + vy_[i] * vy_[i]};
+      },
+      [](Max a, Max b) {
+        return Max{std::max(a.a2, b.a2), std::max(a.v2, b.v2)};
+      });
+  const double a = std::sqrt(m.a2), v = std::sqrt(m.v2);
+  double dt = h_ / (c_s_ + v);
+  if (a > 0.0) dt = std::min(dt, std::sqrt(h_ / a));
+  return options_.cfl * dt;
+}
+
+void TlsphSolid::substep(double dt) {
+  const std::size_t n = size();
+  const double half = 0.5 * dt;
+  // Velocity Verlet: first half kick and drift with a^n.
+  parallel_for(n, [&](std::size_t i) {
+    if (clamped_[i]) return;
+    vx_[i] += half * ax_[i], vy_[i] += half * ay_[i];
+    x_[i] += dt * vx_[i], y_[i] += dt * vy_[i];
+  });
+  double work = 0.0; // f . dx of the loaded particles, in a fixed order
+  for (const std::uint32_t i : loaded_) work += dt * (fx_[i] * vx_[i] + fy_[i] * vy_[i]);
+  ++step_;
+  time_ += dt;
+  prescribe(time_);
+  compute_stress();
+  compute_acceleration();
+  // Second half kick with a^{n+1}.
+  parallel_for(n, [&](std::size_t i) {
+    if (clamped_[i]) return;
+    vx_[i] += half * ax_[i], vy_[i] += half * ay_[i];
+  });
+  external_work_ += work;
+}
+
+int TlsphSolid::advance(double t, double dt) {
+  if (!(std::abs(t - time_) <= 1e-12 * (1.0 + std::abs(t)))) {
+    std::ostringstream s;
+    s.precision(17);
+    s << "tlsph: advance from t = " << t << " but the solid is at t = " << time_;
+    throw InputError(s.str());
+  }
+  if (!(dt >= 0.0)) throw InputError("tlsph: advance with dt = " + std::to_string(dt) + " < 0");
+  const double t_end = time_ + dt;
+  int steps = 0;
+  while (time_ < t_end) {
+    const double remaining = t_end - time_;
+    const double dts = stable_dt();
+    const double k = std::ceil(remaining / dts);
+    if (k <= 1.0) {
+      substep(remaining);
+      time_ = t_end;
+    } else {
+      substep(remaining / k);
+    }
+    ++steps;
+  }
+  return steps;
+}
+
+std::vector<Vec2> TlsphSolid::interface_positions() const {
+  std::vector<Vec2> out;
+  for (const auto i : interface_) out.emplace_back(x_[i], y_[i]);
+  return out;
+}
+std::vector<Vec2> TlsphSolid::interface_velocities() const {
+  std::vector<Vec2> out;
+  for (const auto i : interface_) out.emplace_back(vx_[i], vy_[i]);
+  return out;
+}
+std::vector<Vec2> TlsphSolid::interface_accelerations() const {
+  std::vector<Vec2> out;
+  for (const auto i : interface_) out.emplace_back(ax_[i], ay_[i]);
+  return out;
+}
+
+std::vector<Vec2> TlsphSolid::interface_normals() const {
+  std::vector<Vec2> out;
+  for (std::size_t k = 0; k < interface_.size(); ++k) {
+    const Mat2 F = deformation_gradient(interface_[k]);
+    out.push_back((F.inverse().transpose() * interface_n0_[k]).normalized()); // Nanson
+  }
+  return out;
+}
+
+void TlsphSolid::update_loaded() {
+  loaded_.clear();
+  for (std::size_t i = 0; i < size(); ++i)
+    if (!clamped_[i] && (fx_[i] != 0.0 || fy_[i] != 0.0))
+      loaded_.push_back(static_cast<std::uint32_t>(i));
+}
+
+void TlsphSolid::set_interface_loads(const std::vector<Vec2>& forces) {
+  if (forces.size() != interface_.size())
+    throw InputError("tlsph: " + std::to_string(forces.size()) + " interface loads for " +
+                     std::to_string(interface_.size()) + " interface nodes");
+  std::fill(fx_.begin(), fx_.end(), 0.0);
+  std::fill(fy_.begin(), fy_.end(), 0.0);
+  for (std::size_t k = 0; k < interface_.size(); ++k)
+    fx_[interface_[k]] = forces[k].x(), fy_[interface_[k]] = forces[k].y();
+  update_loaded();
+  compute_acceleration(); // the loads act from now on (a^n of the next half kick)
+}
+
+void TlsphSolid::set_external_forces(const std::vector<Vec2>& forces) {
+  if (forces.size() != size())
+    throw InputError("tlsph: " + std::to_string(forces.size()) + " external forces for " +
+                     std::to_string(size()) + " particles");
+  for (std::size_t i = 0; i < size(); ++i) fx_[i] = forces[i].x(), fy_[i] = forces[i].y();
+  update_loaded();
+  compute_acceleration();
+}
+
+void TlsphSolid::set_positions(const std::vector<Vec2>& x) {
+  if (x.size() != size()) throw InputError("tlsph: set_positions needs size() entries");
+  for (std::size_t i = 0; i < size(); ++i)
+    if (!clamped_[i]) x_[i] = x[i].x(), y_[i] = x[i].y();
+  compute_stress();
+  compute_acceleration();
+}
+
+void TlsphSolid::set_velocities(const std::vector<Vec2>& v) {
+  if (v.size() != size()) throw InputError("tlsph: set_velocities needs size() entries");
+  for (std::size_t i = 0; i < size(); ++i)
+    if (!clamped_[i]) vx_[i] = v[i].x(), vy_[i] = v[i].y();
+  compute_acceleration();
+}
+
+std::vector<double> TlsphSolid::det_F() const {
+  std::vector<double> out(size());
+  parallel_for(size(), [&](std::size_t i) { out[i] = deformation_gradient(i).determinant(); });
+  return out;
+}
+
+std::vector<double> TlsphSolid::von_mises() const {
+  std::vector<double> out(size());
+  const materials::Material& law = *material_;
+  parallel_for(size(), [&](std::size_t i) {
+    const Mat2 F = deformation_gradient(i);
+    const double J = F.determinant();
+    const Mat2 E = 0.5 * (F.transpose() * F - Mat2::Identity());
+    const Mat2 sigma = F * law.stress(E) * F.transpose() / J;
+    const double s33 = law.stress_33(E) / J; // F33 = 1
+    const double s11 = sigma(0, 0), s22 = sigma(1, 1), s12 = sigma(0, 1);
+    out[i] = std::sqrt(
+        0.5 * ((s11 - s22) * (s11 - s22) + (s22 - s33) * (s22 - s33) + (s33 - s11) * (s33 - s11)) +
+        3.0 * s12 * s12);
+  });
+  return out;
+}
+
+std::size_t TlsphSolid::nearest_particle(const Vec2& X) const {
+  std::size_t best = 0;
+  double d2 = std::numeric_limits<double>::max();
+  for (std::size_t i = 0; i < size(); ++i) {
+    const double d = (Vec2(X0_[i], Y0_[i]) - X).squaredNorm();
+    if (d < d2) d2 = d, best = i;
+  }
+  return best;
+}
+
+Vec2 TlsphSolid::interpolate_displacement(const Vec2& X) const {
+  const particles::WendlandC2 kernel(h_);
+  Vec2 sum = Vec2::Zero();
+  double weight = 0.0;
+  for (std::size_t i = 0; i < size(); ++i) {
+    const double w = kernel.W((Vec2(X0_[i], Y0_[i]) - X).norm()) * V0_[i];
+    sum += w * displacement(i), weight += w;
+  }
+  if (!(weight > 0.0)) throw InputError("tlsph: probe point outside the solid's support");
+  return sum / weight;
+}
+
+TlsphEnergies TlsphSolid::energies() const {
+  struct Sum {
+    double k, s, g;
+  };
+  const materials::Material& law = *material_;
+  const Vec2 g = options_.gravity;
+  const Sum sum = parallel_reduce(
+      size(), Sum{0.0, 0.0, 0.0},
+      [&](std::size_t i) {
+        const Mat2 F = deformation_gradient(i);
+        const Mat2 E = 0.5 * (F.transpose() * F - Mat2::Identity());
+        const double m = rho0_ * V0_[i];
+        if (clamped_[i]) return Sum{0.0, V0_[i] * law.energy(E), 0.0};
+        return Sum{0.5 * m * (vx_[i] * vx_[i] + vy_[i] * vy_[i]), V0_[i] * law.energy(E),
+                   m * (g.x() * (x_[i] - X0_[i]) + g.y() * (y_[i] - Y0_[i]))};
+      },
+      [](Sum a, Sum b) {
+        return Sum{a.k + b.k, a.s + b.s, a.g + b.g};
+      });
+  return {sum.k, sum.s, sum.g, external_work_};
+}
+
+TlsphState TlsphSolid::save() const {
+  TlsphState s;
+  fields_.save(s.fields);
+  s.time = time_, s.step = step_, s.external_work = external_work_;
+  return s;
+}
+
+void TlsphSolid::restore(const TlsphState& s) {
+  fields_.restore(s.fields);
+  time_ = s.time, step_ = s.step, external_work_ = s.external_work;
+  update_loaded();
+  compute_stress(); // F and P B0 are scratch: a later set_interface_loads() needs them current
+}
+
+void TlsphSolid::write_state(StateArchive& archive, const std::string& prefix) const {
+  fields_.write_state(archive, prefix + "particles/");
+  archive.put_real(prefix + "time", time_);
+  archive.put_integer(prefix + "step", step_);
+  archive.put_real(prefix + "external_work", external_work_);
+}
+
+void TlsphSolid::read_state(const StateArchive& archive, const std::string& prefix) {
+  // Checked before reading: FieldSet::read_state resizes every array, the reference ones too.
+  archive.reals(prefix + "particles/x", size());
+  fields_.read_state(archive, prefix + "particles/");
+  time_ = archive.real(prefix + "time");
+  step_ = static_cast<long>(archive.integer(prefix + "step"));
+  external_work_ = archive.real(prefix + "external_work");
+  update_loaded();
+  compute_stress();
+}
+
+} // namespace fsi::tlsph
