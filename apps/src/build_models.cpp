@@ -1,8 +1,7 @@
 #include "fsi/core/error.hpp"
 #include "fsi_app/coupled_model.hpp"
-#include "fsi_app/fluid_model.hpp"
 #include "fsi_app/run.hpp"
-#include "fsi_app/structure_model.hpp"
+#include "fsi_app/solver_plugin.hpp"
 
 namespace fsi::app {
 
@@ -14,9 +13,9 @@ std::vector<std::unique_ptr<Model>> build_models(const Scene& scene) {
     models.push_back(std::make_unique<CoupledModel>(scene));
     return models;
   }
-  if (scene.fluid) models.push_back(std::make_unique<FluidModel>(scene));
-  for (const auto& spec : scene.structures)
-    models.push_back(std::make_unique<StructureModel>(scene, spec));
+  if (scene.fluid) models.push_back(find_fluid_plugin(scene.fluid->type)->build(scene, {}, {}));
+  for (std::size_t i = 0; i < scene.structures.size(); ++i)
+    models.push_back(find_structure_plugin(scene.structures[i].type)->build(scene, i));
   return models;
 }
 

@@ -4,23 +4,9 @@
 #include "fsi/core/error.hpp"
 #include "fsi_app/output/interface_history.hpp"
 #include "fsi_app/output/text_file.hpp"
+#include "fsi_app/solver_plugin.hpp"
 
 namespace fsi::app {
-
-namespace {
-
-const StructureSpec& coupled_structure(const Scene& scene) {
-  if (scene.structures.size() != 1)
-    fail_at(scene, scene.structures[1].line, "structures",
-            "a coupled scene has one structure (this build couples one)");
-  const StructureSpec& spec = scene.structures.front();
-  if (spec.interface.empty())
-    fail_at(scene, spec.line, "structures[0].interface",
-            "a structure coupled to the fluid needs the boundary tags it is wetted on");
-  return spec;
-}
-
-} // namespace
 
 // The fluid adapter as the coupler sees it, keeping the last wall motion it was given: what
 // interface.h5 records as the motion of the step.
@@ -52,27 +38,32 @@ private:
 CoupledModel::~CoupledModel() = default;
 
 CoupledModel::CoupledModel(const Scene& scene) {
-  const StructureSpec& spec = coupled_structure(scene);
-  structure_ = std::make_unique<StructureModel>(scene, spec);
-  const fem::Mesh& mesh = structure_->structure().mesh();
-  fem::FeInterface interface = fem::interface_of(mesh, spec.interface);
-  fluid_ = std::make_unique<FluidModel>(scene, &interface.mesh, occupied_area(mesh));
-  fluid_adapter_ =
-      std::make_unique<FluidAdapter>(fluid_->fluid(), fluid_->walls(), *fluid_->interface_walls());
-  structure_adapter_ =
-      std::make_unique<StructureAdapter>(structure_->structure(), std::move(interface));
+  std::vector<InterfaceMesh> interfaces;
+  std::vector<Polygon> solid;
+  std::vector<coupling::StructureSolver*> members;
+  for (std::size_t i = 0; i < scene.structures.size(); ++i) {
+    const StructurePlugin& plugin = *find_structure_plugin(scene.structures[i].type);
+    structures_.push_back(plugin.build(scene, i));
+    interfaces.push_back(structures_.back()->interface_mesh());
+    const auto area = structures_.back()->occupied_area();
+    solid.insert(solid.end(), area.begin(), area.end());
+    members.push_back(&structures_.back()->coupling_solver());
+  }
+  fluid_ = find_fluid_plugin(scene.fluid->type)->build(scene, interfaces, solid);
+  group_ = std::make_unique<coupling::StructureGroup>(std::move(members));
   const CouplingSpec c = scene.coupling.value_or(CouplingSpec{});
-  tap_ = std::make_unique<FluidTap>(*fluid_adapter_);
+  tap_ = std::make_unique<FluidTap>(fluid_->coupling_solver());
   record_ = c.record_interface;
   const auto& registry = coupling::builtin_registry();
   needs_ = registry.scheme_needs(c.options.scheme);
   coupling::Participants p;
   if (needs_.fluid) p.fluid = tap_.get();
-  if (needs_.structure) p.structure = structure_adapter_.get();
+  if (needs_.structure) p.structure = group_.get();
   if (needs_.prescribed_motion || needs_.prescribed_loads) {
     const bool motion = needs_.prescribed_motion;
     replay_ = std::make_unique<InterfaceHistory>(motion ? c.motion : c.loads);
-    const auto nodes = static_cast<std::size_t>(fluid_->interface_walls()->node_count());
+    std::size_t nodes = 0;
+    for (const auto& mesh : interfaces) nodes += mesh.node_count();
     if (replay_->nodes() != nodes)
       fail_at(scene, c.line, motion ? "coupling.motion" : "coupling.loads",
               (motion ? c.motion : c.loads).string() + " records " +
@@ -131,19 +122,24 @@ void CoupledModel::flush_logs() {
   if (step_log_) step_log_->flush();
 }
 
+void CoupledModel::declare(FieldsFile& file) const {
+  for (const auto& s : structures_) s->declare(file);
+}
+
 void CoupledModel::write_frame(FieldsFile& file, const std::vector<std::string>& fields) const {
   fluid_->write_frame(file, fields);
-  structure_->write_frame(file, fields);
+  for (const auto& s : structures_) s->write_frame(file, fields);
 }
 
 std::optional<double> CoupledModel::probe(const ProbeSpec& probe) const {
-  if (auto v = structure_->probe(probe)) return v;
+  for (const auto& s : structures_)
+    if (auto v = s->probe(probe)) return v;
   return fluid_->probe(probe);
 }
 
 void CoupledModel::report(JsonObject& run) const {
   fluid_->report(run);
-  structure_->report(run);
+  for (const auto& st : structures_) st->report(run);
   const auto& s = scheme_->summary();
   JsonObject c;
   c.add("scheme", std::string(scheme_->name()))
@@ -155,16 +151,7 @@ void CoupledModel::report(JsonObject& run) const {
       .add("unconverged_steps", static_cast<long long>(s.unconverged))
       .add("seconds_fluid", s.time_fluid)
       .add("seconds_structure", s.time_structure)
-      .add("seconds_coupler", s.time_coupler)
-      .add("newton_iterations_mean",
-           s.steps ? static_cast<double>(structure_adapter_->newton_iterations()) /
-                         static_cast<double>(s.steps)
-                   : 0.0)
-      .add("newton_halvings", static_cast<long long>(structure_adapter_->newton_halvings()))
-      .add("steps_with_newton_halvings",
-           static_cast<long long>(structure_adapter_->steps_with_halvings()))
-      .add("substepped_steps", static_cast<long long>(structure_adapter_->substepped_steps()))
-      .add("substeps", static_cast<long long>(structure_adapter_->substeps()));
+      .add("seconds_coupler", s.time_coupler);
   run.add("coupling", c);
 }
 

@@ -6,6 +6,7 @@
 #include "fsi_app/overrides.hpp"
 #include "fsi_app/resources.hpp"
 #include "fsi_app/scene_reader.hpp"
+#include "fsi_app/solver_plugin.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -37,17 +38,41 @@ TimeSpec read_time(Section s) {
   return t;
 }
 
-const std::vector<std::string> kFieldNames = {"velocity",     "pressure",     "pnd",
-                                              "free_surface", "displacement", "von_mises"};
-const std::vector<std::string> kProbeQuantities = {
-    "displacement_x", "displacement_y", "displacement_x_tank", "displacement_y_tank", "surge_front",
-    "pressure",       "mean_pressure",  "mean_speed",          "kinetic_energy"};
+// Field names and probe quantities are the plug-ins' (each declares its own); a quantity of a
+// structure plug-in needs the probe's `structure` key.
+template <class Plugins>
+void add_unique(std::vector<std::string>& out, const Plugins& plugins,
+                std::vector<std::string> Plugins::value_type::*list) {
+  for (const auto& p : plugins)
+    for (const auto& name : p.*list)
+      if (std::find(out.begin(), out.end(), name) == out.end()) out.push_back(name);
+}
+
+std::vector<std::string> field_names() {
+  std::vector<std::string> out;
+  add_unique(out, fluid_plugins(), &FluidPlugin::fields);
+  add_unique(out, structure_plugins(), &StructurePlugin::fields);
+  return out;
+}
+
+std::vector<std::string> structure_quantities() {
+  std::vector<std::string> out;
+  add_unique(out, structure_plugins(), &StructurePlugin::probe_quantities);
+  return out;
+}
+
+std::vector<std::string> probe_quantities() {
+  std::vector<std::string> out;
+  add_unique(out, fluid_plugins(), &FluidPlugin::probe_quantities);
+  add_unique(out, structure_plugins(), &StructurePlugin::probe_quantities);
+  return out;
+}
 
 ProbeSpec read_probe(Section s) {
   ProbeSpec p;
   p.line = s.line();
   p.name = s.text("name", "column name in probes.csv (letters, digits, _)");
-  p.quantity = s.choice("quantity", kProbeQuantities, "",
+  p.quantity = s.choice("quantity", probe_quantities(), "",
                         "what is sampled: a node's displacement; a node's displacement in the "
                         "frame of the wall its structure is clamped to (clamped_motion: the "
                         "rigid motion undone, x and y along the tank's axes); the surge front "
@@ -65,7 +90,8 @@ ProbeSpec read_probe(Section s) {
       return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
     });
     if (!ok_name) s.fail("name", "'" + p.name + "' is not a valid column name");
-    const bool on_structure = p.quantity.rfind("displacement", 0) == 0;
+    const auto on = structure_quantities();
+    const bool on_structure = std::find(on.begin(), on.end(), p.quantity) != on.end();
     if (on_structure && p.structure.empty()) s.fail("structure", "required key missing");
     if (on_structure && !p.node && !p.point) s.fail("", "give node or point");
     if (p.quantity == "pressure" && !p.point) s.fail("point", "required key missing");
@@ -83,13 +109,15 @@ ProbeSpec read_probe(Section s) {
 OutputSpec read_output(Section s, double end_time, std::vector<Section>& probe_sections) {
   OutputSpec o;
   o.interval = s.real("interval", Range::positive(), "simulated time between frames, s");
-  o.fields = s.names("fields", kFieldNames,
+  const std::vector<std::string> known = field_names();
+  o.fields = s.names("fields", known,
                      "fields written to fields.h5 (particle positions and mesh geometry always)");
   for (const auto& f : o.fields)
-    if (std::find(kFieldNames.begin(), kFieldNames.end(), f) == kFieldNames.end())
-      s.fail("fields", "unknown field '" + f +
-                           "' (known: velocity, pressure, pnd, free_surface, "
-                           "displacement, von_mises)");
+    if (std::find(known.begin(), known.end(), f) == known.end()) {
+      std::string list;
+      for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
+      s.fail("fields", "unknown field '" + f + "' (known: " + list + ")");
+    }
   std::set<std::string> names;
   probe_sections = s.list("probes", "sampled every frame into probes.csv");
   for (auto& probe : probe_sections) {
@@ -147,164 +175,6 @@ WallSpec read_wall(Section s) {
                                " coincide (zero-length segment)");
   s.finish();
   return w;
-}
-
-std::vector<Vec2> read_region(Section s) {
-  const bool doc = s.context().documenting();
-  std::vector<Vec2> polygon;
-  if (doc || s.has("polygon")) polygon = s.points("polygon", 3, "closed polygon to fill, m");
-  if (doc || !s.has("polygon")) {
-    const Vec2 lo = s.vec2("min", "lower-left corner of a rectangle to fill, m");
-    const Vec2 hi = s.vec2("max", "upper-right corner, m");
-    if (!doc && (hi.x() <= lo.x() || hi.y() <= lo.y()))
-      s.fail("max", "must lie above and right of min");
-    if (!doc) polygon = {lo, {hi.x(), lo.y()}, hi, {lo.x(), hi.y()}};
-  }
-  s.finish();
-  return polygon;
-}
-
-FluidSpec read_fluid(Section s) {
-  FluidSpec f;
-  f.line = s.line();
-  const bool doc = s.context().documenting();
-  f.density = s.real("density", Range::positive(), "rho, kg/m^3");
-  f.viscosity = s.real("viscosity", 0.0, Range::non_negative(),
-                       "kinematic viscosity nu, m^2/s; 0 skips the viscous loop");
-  f.l0 = s.real("l0", Range::positive(), "initial particle spacing, m");
-  f.re_over_l0 = s.real("re_over_l0", 3.1, Range::closed(2.0, 5.0), "effective radius r_e / l0");
-  f.sound_speed = s.real("sound_speed", Range::positive(), "c of eq. 15, m/s");
-  f.beta = s.real("beta", 1.0, Range::left_open(0.0, 1.5), "free-surface threshold, eq. 17");
-  f.alpha_rep =
-      s.real("alpha_rep", 0.0, Range::non_negative(), "repulsive coefficient of eq. 27, N/m^3");
-  f.wall_condition =
-      s.choice("wall_condition", {"no_slip", "slip"}, "no_slip", "viscous wall condition (eq. 24)");
-  f.artificial_viscosity = s.real(
-      "artificial_viscosity", 0.0, Range::non_negative(),
-      "alpha: closing particle pairs feel a viscosity alpha c l0 along their line of centres "
-      "(damps acoustic noise; not in the paper, 0 = off)");
-  f.wall_density = s.choice(
-      "wall_density", {"added", "scaled"}, "added",
-      "wall part of pnd: added, n_i + z(r) as eq. 20; scaled, n_i + z max(1, n_i / (n0 - z)): "
-      "the virtual particles compressed like the fluid next to them (equal to "
-      "eq. 20 at rest and in expansion)");
-  f.corner_faces = s.boolean(
-      "corner_faces", true,
-      "at concave wall corners also apply the nearest other face (its z, mirror terms and "
-      "repulsion, the doubly counted quadrant once); false: the nearest wall only, eq. 18");
-  f.convex_corners = s.boolean(
-      "convex_corners", true,
-      "at convex wall corners count the solid's own virtual lattice in pnd and in the wall "
-      "pressure term (eqs. 20 and 25 assume a half-plane there; false: as in the paper)");
-  f.damping_time =
-      s.real("damping_time", 0.0, Range::non_negative(),
-             "initial damping phase T_d: velocities damped at a rate 20/T_d (1 - t/T_d) "
-             "(quiet hydrostatic starts), s");
-  for (auto& region :
-       s.list("regions", "areas filled with particles at spacing l0, each on its own "
-                         "lattice from its lower-left corner (l0/2 from its edges)"))
-    f.regions.push_back(read_region(region));
-  if (!doc && f.regions.empty()) s.fail("regions", "at least one region is required");
-  if (auto d = s.block("domain", "particles leaving this box are removed and counted")) {
-    f.domain_min = d->vec2("min", "lower-left corner, m");
-    f.domain_max = d->vec2("max", "upper-right corner, m");
-    if (!doc && (f.domain_max.x() <= f.domain_min.x() || f.domain_max.y() <= f.domain_min.y()))
-      d->fail("max", "must lie above and right of min");
-    d->finish();
-  }
-  if (!doc) {
-    for (std::size_t i = 0; i < f.regions.size(); ++i) {
-      Vec2 lo = f.regions[i][0], hi = f.regions[i][0];
-      for (const auto& p : f.regions[i]) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
-      const Vec2 size = hi - lo;
-      if (f.l0 > size.minCoeff()) {
-        std::ostringstream msg;
-        msg << "particle spacing " << f.l0 << " m is larger than fluid region " << i << " ("
-            << size.x() << " x " << size.y() << " m)";
-        s.fail("l0", msg.str());
-      }
-    }
-  }
-  s.finish();
-  return f;
-}
-
-MeshSpec read_mesh(Section s) {
-  MeshSpec m;
-  const bool doc = s.context().documenting();
-  m.kind = s.choice("kind", {"rectangle", "gmsh"}, "",
-                    "built-in structured T6 rectangle, or a Gmsh 4.1 file of 6-node triangles");
-  if (doc || m.kind == "rectangle") {
-    m.origin = s.vec2("origin", Vec2::Zero(), "lower-left corner, m");
-    m.width = s.real("width", Range::positive(), "m");
-    m.height = s.real("height", Range::positive(), "m");
-    m.elements_x = s.integer("elements_x", Range::closed(1, 10000), "element columns");
-    m.elements_y = s.integer("elements_y", Range::closed(1, 10000), "element rows");
-  }
-  if (doc || m.kind == "gmsh") m.file = s.file("file", "Gmsh .msh (format 4.1 ASCII)");
-  s.finish();
-  return m;
-}
-
-StructureSpec read_structure(Section s) {
-  StructureSpec st;
-  st.line = s.line();
-  st.name = s.text("name", "structure name (probes refer to it)");
-  st.mesh = read_mesh(s.required_block("mesh", "the T6 mesh"));
-  auto mat = s.required_block("material", "hyperelastic material (eq. 35 by default)");
-  st.youngs_modulus = mat.real("youngs_modulus", Range::positive(), "E, Pa");
-  st.poisson_ratio = mat.real("poisson_ratio", Range::open(-1.0, 0.5), "nu");
-  st.density = mat.real("density", Range::positive(), "rho_s, kg/m^3");
-  st.plane = mat.choice("plane", {"strain", "stress"}, "strain", "2D idealisation");
-  st.material_model =
-      mat.choice("model", {"saint_venant_kirchhoff", "neo_hookean"}, "saint_venant_kirchhoff",
-                 "strain energy: the paper's St. Venant-Kirchhoff (eq. 35), or compressible "
-                 "neo-Hookean (plane strain only), which cannot be crushed flat by a finite "
-                 "load (docs/structure_fem.md)");
-  if (st.material_model == "neo_hookean" && st.plane != "strain")
-    mat.fail("model", "neo_hookean is implemented in plane strain only (plane: strain)");
-  mat.finish();
-  st.clamped = s.names("clamped", {}, "boundary tags whose nodes are fixed");
-  st.clamped_motion =
-      s.text("clamped_motion", "",
-             "name of a wall with a motion: the clamped nodes follow its rigid motion (u, v, a "
-             "prescribed; e.g. a beam clamped to a rolling tank), starting from static "
-             "equilibrium with the wall at t = 0; empty: they stay fixed");
-  st.interface = s.names("interface", {}, "boundary tags wetted by the fluid");
-  if (auto nb = s.block("newmark", "Newmark-beta coefficients (eqs. 40-41)")) {
-    st.newmark_beta = nb->real("beta", 0.3025, Range::left_open(0.0, 0.5), "beta_NB");
-    st.newmark_gamma = nb->real("gamma", 0.6, Range::closed(0.5, 1.0), "gamma_NB");
-    if (!s.context().documenting() &&
-        st.newmark_beta < 0.25 * std::pow(st.newmark_gamma + 0.5, 2) - 1e-12)
-      nb->fail("beta", "must be >= (gamma + 1/2)^2 / 4 for unconditional stability");
-    nb->finish();
-  }
-  if (auto nr = s.block("newton", "Newton-Raphson controls")) {
-    st.newton_tolerance = nr->real("tolerance", 1e-8, Range::open(0.0, 1.0),
-                                   "residual norm relative to the load norm");
-    st.increment_tolerance = nr->real("increment_tolerance", 1e-10, Range::open(0.0, 1.0),
-                                      "increment norm relative to the displacement norm");
-    st.newton_max_iterations = nr->integer("max_iterations", 20, Range::closed(1, 1000),
-                                           "iterations before the run stops");
-    st.newton_substep_levels = nr->integer(
-        "substep_levels", 0, Range::closed(0, 10),
-        "a step whose Newton fails (no convergence, or an inverted element) is retried as 2, 4, "
-        "... 2^levels sub-steps with the loads linear in time, each to the same tolerances; "
-        "counted in run.json (docs/structure_fem.md); 0: the run stops");
-    nr->finish();
-  }
-  st.linear_solver = s.choice("linear_solver", {"cholmod", "umfpack", "ldlt", "cg"}, "cholmod",
-                              "sparse direct (CHOLMOD, UMFPACK, Eigen LDLT) or preconditioned CG");
-  for (auto& load : s.list("loads", "constant nodal forces (structure-only scenes)")) {
-    PointLoadSpec p;
-    p.boundary = load.text("boundary", "boundary tag the force is spread over");
-    p.force = load.vec2("force", "total force per unit thickness, N/m, applied as a uniform "
-                                 "traction over the tagged edges (consistent nodal loads)");
-    load.finish();
-    st.loads.push_back(p);
-  }
-  s.finish();
-  return st;
 }
 
 // Reads the coupling options coupling/ declares (visit_options) from the block, its defaults,
@@ -395,74 +265,33 @@ CheckpointSpec read_checkpoint_spec(Section s) {
   return c;
 }
 
-// A structured T6 rectangle has (2 nx + 1)(2 ny + 1) nodes on a regular grid.
-void check_rectangle_probe(const MeshSpec& m, const ProbeSpec& p, const Section& s) {
-  const long nodes = (2L * m.elements_x + 1) * (2L * m.elements_y + 1);
-  if (p.node && *p.node >= nodes)
-    s.fail("node", "node " + std::to_string(*p.node) + " does not exist (the mesh has " +
-                       std::to_string(nodes) + " nodes)");
-  if (p.point) {
-    const Vec2 h(m.width / (2 * m.elements_x), m.height / (2 * m.elements_y));
-    const Vec2 grid = (*p.point - m.origin).cwiseQuotient(h);
-    const Vec2 snapped = grid.array().round();
-    const bool inside = snapped.x() >= 0 && snapped.x() <= 2 * m.elements_x && snapped.y() >= 0 &&
-                        snapped.y() <= 2 * m.elements_y;
-    if (!inside || (grid - snapped).cwiseAbs().maxCoeff() > 1e-6) {
-      std::ostringstream msg;
-      msg << "no node of structure '" << p.structure << "' at (" << p.point->x() << ", "
-          << p.point->y() << ")";
-      s.fail("point", msg.str());
-    }
-  }
-}
-
-// Checks that need the whole scene: names resolve, rectangles have the tags asked for.
-void cross_check(Section& top, const Scene& scene, std::vector<Section>& structure_sections,
-                 std::vector<Section>& probe_sections) {
+// Checks that need the whole scene: names resolve, then each plug-in's own checks.
+void cross_check(Section& top, const Scene& scene, std::optional<Section>& fluid_section,
+                 std::vector<Section>& structure_sections, std::vector<Section>& probe_sections) {
   std::set<std::string> names;
-  for (std::size_t i = 0; i < scene.structures.size(); ++i) {
-    const auto& st = scene.structures[i];
-    if (!names.insert(st.name).second)
-      structure_sections[i].fail("name", "duplicate structure name '" + st.name + "'");
-    if (st.mesh.kind == "rectangle") {
-      const std::set<std::string> tags = {"left", "right", "bottom", "top"};
-      auto check = [&](const std::vector<std::string>& list, const std::string& key) {
-        for (const auto& t : list)
-          if (!tags.count(t))
-            structure_sections[i].fail(key, "unknown boundary tag '" + t +
-                                                "' (a rectangle has left, right, bottom, top)");
-      };
-      check(st.clamped, "clamped");
-      check(st.interface, "interface");
-      for (const auto& l : st.loads)
-        if (!tags.count(l.boundary))
-          structure_sections[i].fail("loads", "unknown boundary tag '" + l.boundary + "'");
-    }
-    if (!st.clamped_motion.empty()) {
-      if (st.clamped.empty())
-        structure_sections[i].fail("clamped_motion", "needs clamped boundary tags to move");
-      const auto w = std::find_if(scene.walls.begin(), scene.walls.end(),
-                                  [&](const WallSpec& x) { return x.name == st.clamped_motion; });
-      if (w == scene.walls.end())
-        structure_sections[i].fail("clamped_motion", "no wall named '" + st.clamped_motion + "'");
-      if (!w->motion)
-        structure_sections[i].fail("clamped_motion",
-                                   "wall '" + st.clamped_motion + "' has no motion");
-    }
-  }
+  for (std::size_t i = 0; i < scene.structures.size(); ++i)
+    if (!names.insert(scene.structures[i].name).second)
+      structure_sections[i].fail("name",
+                                 "duplicate structure name '" + scene.structures[i].name + "'");
   for (std::size_t i = 0; i < scene.output.probes.size(); ++i) {
     const auto& p = scene.output.probes[i];
-    if (p.quantity.rfind("displacement", 0) == 0) {
-      auto it = std::find_if(scene.structures.begin(), scene.structures.end(),
-                             [&](const StructureSpec& st) { return st.name == p.structure; });
+    if (!p.structure.empty()) {
+      const auto it =
+          std::find_if(scene.structures.begin(), scene.structures.end(),
+                       [&](const StructureBlock& st) { return st.name == p.structure; });
       if (it == scene.structures.end())
         probe_sections[i].fail("structure", "no structure named '" + p.structure + "'");
-      if (it->mesh.kind == "rectangle") check_rectangle_probe(it->mesh, p, probe_sections[i]);
-      if (p.quantity.ends_with("_tank") && it->clamped_motion.empty())
-        probe_sections[i].fail("quantity", "'" + p.quantity + "' needs structure '" + p.structure +
-                                               "' to have a clamped_motion");
-    } else if (!scene.fluid) {
-      probe_sections[i].fail("quantity", "'" + p.quantity + "' needs a fluid block");
+      const auto& q = find_structure_plugin(it->type)->probe_quantities;
+      if (std::find(q.begin(), q.end(), p.quantity) == q.end())
+        probe_sections[i].fail("quantity", "'" + p.quantity + "' is not a probe of structure '" +
+                                               p.structure + "' (type " + it->type + ")");
+    } else {
+      if (!scene.fluid)
+        probe_sections[i].fail("quantity", "'" + p.quantity + "' needs a fluid block");
+      const auto& q = find_fluid_plugin(scene.fluid->type)->probe_quantities;
+      if (std::find(q.begin(), q.end(), p.quantity) == q.end())
+        probe_sections[i].fail("quantity", "'" + p.quantity + "' is not a probe of fluid type " +
+                                               scene.fluid->type);
     }
   }
   if (scene.coupling && (!scene.fluid || scene.structures.empty()))
@@ -471,6 +300,33 @@ void cross_check(Section& top, const Scene& scene, std::vector<Section>& structu
     top.fail("", "the scene has neither a fluid nor a structure: nothing to simulate");
   if (scene.time.courant && !scene.fluid)
     top.fail("time", "courant needs a fluid block (give dt for structure-only scenes)");
+  if (scene.fluid) find_fluid_plugin(scene.fluid->type)->check(scene, *fluid_section);
+  for (std::size_t i = 0; i < scene.structures.size(); ++i)
+    find_structure_plugin(scene.structures[i].type)
+        ->check(scene, i, structure_sections[i], probe_sections);
+}
+
+// The fluid block: its type picks the plug-in, which reads the rest. In documentation mode
+// every plug-in's keys are listed, each marked with its type.
+template <class Plugin, class Block>
+void read_solver_block(Section& s, const std::vector<Plugin>& plugins, Block& block,
+                       const std::string& what) {
+  std::vector<std::string> types;
+  for (const auto& p : plugins) types.push_back(p.name);
+  block.line = s.line();
+  block.type = s.choice("type", types, types.front(), what + " solver (apps/solvers/<type>/)");
+  if (!s.context().documenting()) {
+    for (const auto& p : plugins)
+      if (p.name == block.type) block.spec = p.read(s);
+    return;
+  }
+  auto& docs = *s.context().collector;
+  for (const auto& p : plugins) {
+    const std::size_t first = docs.size();
+    p.read(s);
+    for (std::size_t k = first; k < docs.size(); ++k)
+      docs[k].doc = "(type " + p.name + ") " + docs[k].doc;
+  }
 }
 
 Scene read_scene(Section top) {
@@ -482,12 +338,21 @@ Scene read_scene(Section top) {
   std::vector<Section> probe_sections;
   scene.output = read_output(top.required_block("output", "what is written, and how often"),
                              scene.time.end, probe_sections);
-  const auto fluid_section = top.block("fluid", "EMPS fluid; absent: no fluid");
-  if (fluid_section) scene.fluid = read_fluid(*fluid_section);
+  auto fluid_section = top.block("fluid", "the fluid; absent: no fluid");
+  if (fluid_section) {
+    scene.fluid.emplace();
+    read_solver_block(*fluid_section, fluid_plugins(), *scene.fluid, "fluid");
+    fluid_section->finish();
+  }
   for (auto& w : top.list("walls", "polygon walls (ERP), static or with prescribed motion"))
     scene.walls.push_back(read_wall(w));
-  auto structure_sections = top.list("structures", "FE structures (T6, St. Venant-Kirchhoff)");
-  for (auto& st : structure_sections) scene.structures.push_back(read_structure(st));
+  auto structure_sections = top.list("structures", "the structures");
+  for (auto& st : structure_sections) {
+    StructureBlock& b = scene.structures.emplace_back();
+    b.name = st.text("name", "structure name (probes refer to it)");
+    read_solver_block(st, structure_plugins(), b, "structure");
+    st.finish();
+  }
   if (auto c = top.block("coupling", "partitioned coupling; needs fluid and structures"))
     scene.coupling = read_coupling(*c, scene.time);
   if (auto c = top.block("checkpoint", "periodic checkpoints for fsi run --restart; absent: "
@@ -495,7 +360,7 @@ Scene read_scene(Section top) {
     scene.checkpoint = read_checkpoint_spec(*c);
   top.finish();
   if (!ctx.documenting()) {
-    cross_check(top, scene, structure_sections, probe_sections);
+    cross_check(top, scene, fluid_section, structure_sections, probe_sections);
     check_resources(scene, fluid_section, structure_sections, available_memory());
   }
   return scene;

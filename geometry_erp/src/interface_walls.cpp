@@ -44,8 +44,8 @@ double InterfaceWalls::parent_coordinate(int s, double t) const {
   return xi_a + t * (xi_b - xi_a);
 }
 
-void InterfaceWalls::update_nodes(WallSet& walls, const std::vector<Vec2>& x,
-                                  const std::vector<Vec2>& v, const std::vector<Vec2>& a) const {
+void InterfaceWalls::update_nodes(WallSet& walls, std::span<const Vec2> x, std::span<const Vec2> v,
+                                  std::span<const Vec2> a) const {
   assert(x.size() == static_cast<std::size_t>(node_count_) && v.size() == x.size() &&
          a.size() == x.size());
   WallNodes& nodes = walls.nodes();

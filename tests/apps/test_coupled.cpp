@@ -1,6 +1,8 @@
 // The coupled dam break with an elastic obstacle, coarse and short: the adapters keep the ERP
 // interface walls on the FE nodes (eqs. 60-62), hand the structure exactly the force the fluid's
 // walls take (eqs. 52-59), and BGS converges.
+#include "emps/emps_model.hpp"
+#include "fem/fem_model.hpp"
 #include "fsi_app/cli.hpp"
 #include "fsi_app/coupled_model.hpp"
 #include "fsi_app/scene.hpp"
@@ -27,9 +29,11 @@ TEST_CASE("apps: coupled dam break: walls follow the FE nodes, loads balance the
           "[apps][coupled]") {
   const Scene scene = coarse("css");
   CoupledModel model(scene);
-  const erp::InterfaceWalls& fe = *model.fluid().interface_walls();
-  const std::vector<int>& fe_node = model.structure_adapter().interface().fe_node;
-  const fem::Structure& structure = model.structure().structure();
+  auto& fluid = dynamic_cast<emps_plugin::EmpsModel&>(model.fluid());
+  const auto& obstacle = dynamic_cast<const fem_plugin::FemModel&>(model.structure(0));
+  const erp::InterfaceWalls& fe = fluid.interface_walls().front();
+  const std::vector<int>& fe_node = obstacle.interface().fe_node;
+  const fem::Structure& structure = obstacle.structure();
   Vec2 mean_load = Vec2::Zero();
   const double dt = 2e-5;
   for (int k = 0; k < 5000; ++k) {
@@ -38,11 +42,11 @@ TEST_CASE("apps: coupled dam break: walls follow the FE nodes, loads balance the
     model.advance(k * dt, dt);
     // Eqs. 60-62: every interface polygon node sits on its FE node.
     for (int k = 0; k < fe.node_count(); ++k)
-      REQUIRE((model.fluid().walls().nodes().x[static_cast<std::size_t>(fe.first_node() + k)] -
+      REQUIRE((fluid.walls().nodes().x[static_cast<std::size_t>(fe.first_node() + k)] -
                positions[static_cast<std::size_t>(fe_node[static_cast<std::size_t>(k)])])
                   .norm() < 1e-15);
     // Eqs. 52-59: total load on the structure = -(sum of the interface wall forces).
-    const auto& w = model.fluid().fluid().wall_forces();
+    const auto& w = fluid.fluid().wall_forces();
     Vec2 wall_total = Vec2::Zero();
     const int s0 = fe.first_segment(), s1 = s0 + fe.segment_count();
     for (std::size_t i = 0; i < w.segment.size(); ++i) {
@@ -50,7 +54,7 @@ TEST_CASE("apps: coupled dam break: walls follow the FE nodes, loads balance the
       if (w.segment2[i] >= s0 && w.segment2[i] < s1) wall_total -= w.f2[i];
     }
     Vec2 load_total = Vec2::Zero();
-    for (const auto& f : model.fluid_adapter().interface_loads().f) load_total += f;
+    for (const auto& f : fluid.adapter().interface_loads().f) load_total += f;
     REQUIRE((load_total - wall_total).norm() <= 1e-12 * std::max(1.0, wall_total.norm()));
     if (k >= 2500) mean_load += load_total / 2500.0;
   }

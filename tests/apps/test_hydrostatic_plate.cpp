@@ -1,9 +1,10 @@
 // Issue 6, test 3, with the real solvers: a water column resting on a clamped elastic plate
 // settles to the static deflection that the FEM gives for the same plate under the hydrostatic
 // load rho g H applied directly as a uniform traction on its top edge (plus its own weight).
+#include "emps/emps_spec.hpp"
+#include "fem/fem_model.hpp"
 #include "fsi_app/coupled_model.hpp"
 #include "fsi_app/scene.hpp"
-#include "fsi_app/structure_model.hpp"
 #include "structure_fem/loads.hpp"
 
 #include <catch2/catch.hpp>
@@ -11,17 +12,20 @@
 
 using namespace fsi;
 using namespace fsi::app;
+using namespace fsi::app::fem_plugin;
+using fsi::app::emps_plugin::FluidSpec;
 
 TEST_CASE("apps: water column on a clamped plate settles to the FEM deflection under rho g H",
           "[apps][coupled]") {
   const Scene scene = load_scene(FSI_TEST_DATA "/hydrostatic_plate_small.yaml", {});
-  const StructureSpec& plate = scene.structures.front();
+  const StructureBlock& plate = scene.structures.front();
+  const FluidSpec& fluid = scene.fluid->as<FluidSpec>();
   const ProbeSpec& mid_span = scene.output.probes.front();
 
   // Reference: the plate alone, rho g H on the top edge and gravity, solved statically.
-  const double H = scene.fluid->regions.front()[2].y() - scene.fluid->regions.front()[0].y();
+  const double H = fluid.regions.front()[2].y() - fluid.regions.front()[0].y();
   auto alone = build_structure(scene, plate);
-  const double q = scene.fluid->density * -scene.gravity.y() * H; // Pa
+  const double q = fluid.density * -scene.gravity.y() * H; // Pa
   alone->set_external_forces(fem::edge_traction_forces(alone->mesh(), "top", Vec2(0.0, -q)));
   alone->solve_static();
   const int node = probe_node(scene, alone->mesh(), mid_span);
@@ -29,7 +33,7 @@ TEST_CASE("apps: water column on a clamped plate settles to the FEM deflection u
 
   // Coupled: the fluid is damped until damping_time; the deflection is averaged after it.
   CoupledModel model(scene);
-  const double dt = *scene.time.dt, t_settled = scene.fluid->damping_time;
+  const double dt = *scene.time.dt, t_settled = fluid.damping_time;
   const long steps = std::lround(scene.time.end / dt);
   double sum = 0.0;
   long samples = 0;

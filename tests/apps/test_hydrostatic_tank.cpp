@@ -3,7 +3,7 @@
 // rises above its value at the end of the damping phase; the bottom row's pressure, averaged over
 // the last second, is within 3 % of rho g H; the mean speed at 10 s is below 1 % of sqrt(g H);
 // no particle ends behind a wall (advance throws) or leaves the tank.
-#include "fsi_app/fluid_model.hpp"
+#include "emps/emps_model.hpp"
 #include "fsi_app/scene.hpp"
 
 #include <catch2/catch.hpp>
@@ -11,6 +11,8 @@
 
 using namespace fsi;
 using namespace fsi::app;
+using fsi::app::emps_plugin::EmpsModel;
+using fsi::app::emps_plugin::FluidSpec;
 
 namespace {
 const ProbeSpec& named(const Scene& scene, const std::string& name) {
@@ -27,12 +29,13 @@ TEST_CASE("apps: the hydrostatic tank settles: bottom pressure, speed and energy
   const Scene scene = load_scene(FSI_SOURCE_DIR "/data/scenes/hydrostatic_tank.yaml", {});
   const ProbeSpec &p_bottom = named(scene, "p_bottom"), &speed = named(scene, "mean_speed"),
                   &energy = named(scene, "kinetic_energy");
-  FluidModel model(scene);
+  EmpsModel model(scene);
+  const FluidSpec& fluid = scene.fluid->as<FluidSpec>();
   const std::size_t particles = model.fluid().particles().size();
-  const double dt = *scene.time.dt, t_damped = scene.fluid->damping_time;
+  const double dt = *scene.time.dt, t_damped = fluid.damping_time;
   const long steps = std::lround(scene.time.end / dt);
   const long every = std::lround(scene.output.interval / dt); // probes.csv's sampling
-  const double rho_g_h = scene.fluid->density * -scene.gravity.y() * 0.5;
+  const double rho_g_h = fluid.density * -scene.gravity.y() * 0.5;
 
   double energy_damped = -1.0, energy_max = 0.0, pressure_sum = 0.0;
   long pressure_samples = 0;

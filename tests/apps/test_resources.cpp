@@ -37,15 +37,15 @@ TEST_CASE("apps: memory estimate counts region area / l0^2 particles", "[apps][r
   // Dam break: 0.146 m x 0.292 m of water at l0 = 1.46 mm is 100 x 200 = 20,000 particles.
   const auto scene = load_scene(FSI_SOURCE_DIR "/data/scenes/dam_break_elastic_obstacle.yaml", {});
   const auto e = estimate_memory(scene);
-  CHECK(e.particles == Approx(20000).epsilon(1e-9));
+  CHECK(e.fluid.count == Approx(20000).epsilon(1e-9));
   // Halving l0 quadruples the particles and (the cell grid aside) the fluid memory.
   const auto fine = estimate_memory(load_scene(
       FSI_SOURCE_DIR "/data/scenes/dam_break_elastic_obstacle.yaml", {"fluid.l0=7.3e-4"}));
-  CHECK(fine.particles == Approx(80000).epsilon(1e-9));
-  CHECK(fine.fluid_bytes / e.fluid_bytes == Approx(4.0).epsilon(0.05));
+  CHECK(fine.fluid.count == Approx(80000).epsilon(1e-9));
+  CHECK(fine.fluid.bytes / e.fluid.bytes == Approx(4.0).epsilon(0.05));
   // 2 elements_x elements_y T6 elements (2 x 12 cells here).
-  REQUIRE(e.structure_elements.size() == 1);
-  CHECK(e.structure_elements[0] == 48);
+  REQUIRE(e.structures.size() == 1);
+  CHECK(e.structures[0].count == 48);
   CHECK(fsi::app::available_memory() > 0.0);
 }
 

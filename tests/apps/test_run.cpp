@@ -1,9 +1,9 @@
 // A structure-only run end to end: the probes in probes.csv are the FE solution at the probed
 // node, frame by frame, and fields.h5, probes.csv and run.json agree on what was written.
+#include "fem/fem_model.hpp"
 #include "fsi_app/cli.hpp"
 #include "fsi_app/output/fields_file.hpp"
 #include "fsi_app/scene.hpp"
-#include "fsi_app/structure_model.hpp"
 
 #include <catch2/catch.hpp>
 #include <filesystem>
@@ -43,8 +43,8 @@ TEST_CASE("apps: a structure-only run writes the FE solution at the probed node"
 
   // The same scene advanced directly through the library.
   const Scene scene = load_scene(scene_file, {"time.end=0.02"});
-  auto structure = build_structure(scene, scene.structures[0]);
-  const int node = probe_node(scene, structure->mesh(), scene.output.probes[0]);
+  auto structure = fem_plugin::build_structure(scene, scene.structures[0]);
+  const int node = fem_plugin::probe_node(scene, structure->mesh(), scene.output.probes[0]);
   CHECK(structure->mesh().X[static_cast<std::size_t>(node)].isApprox(fsi::Vec2(1.0, 0.1)));
   for (std::size_t k = 0; k < rows.size(); ++k) {
     if (k > 0)

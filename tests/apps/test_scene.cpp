@@ -1,5 +1,6 @@
 // Scene parsing: a valid scene reads back its values; each class of bad input gives one line
 // `FILE:LINE: KEY: what` and exit status 2; overrides apply and fail the same way.
+#include "fem/fem_spec.hpp"
 #include "fsi/core/error.hpp"
 #include "fsi_app/cli.hpp"
 #include "fsi_app/scene.hpp"
@@ -36,7 +37,8 @@ TEST_CASE("apps: a valid scene reads back its values", "[apps][scene]") {
   CHECK(*s.time.dt == 1e-3);
   CHECK_FALSE(s.time.courant);
   REQUIRE(s.structures.size() == 1);
-  const auto& b = s.structures[0];
+  CHECK(s.structures[0].type == "fem"); // default
+  const auto& b = s.structures[0].as<fem_plugin::StructureSpec>();
   CHECK(b.mesh.kind == "rectangle");
   CHECK(b.mesh.elements_x == 4);
   CHECK(b.youngs_modulus == 2e6);
@@ -57,8 +59,9 @@ TEST_CASE("apps: overrides replace entries before validation", "[apps][scene]") 
       data + "valid_structure.yaml",
       {"time.end=0.5", "structures[0].material.density=2000", "structures[0].linear_solver=cg"});
   CHECK(s.time.end == 0.5);
-  CHECK(s.structures[0].density == 2000.0);
-  CHECK(s.structures[0].linear_solver == "cg");
+  const auto& b = s.structures[0].as<fem_plugin::StructureSpec>();
+  CHECK(b.density == 2000.0);
+  CHECK(b.linear_solver == "cg");
 }
 
 TEST_CASE("apps: each class of bad input names file, line and key, exit status 2",

@@ -1,13 +1,14 @@
 #pragma once
-// A fluid and one structure coupled through the scene's coupling scheme (css or bgs), or one of
-// them alone against a recorded interface.h5 (one_way_fluid: the fluid against the recorded
-// motion, the structure not solved; one_way_structure: the structure under the recorded loads,
-// the fluid not solved). The part not solved stays at its initial state in fields and probes.
+// A fluid and the scene's structures coupled through the scene's coupling scheme (css, bgs, ...),
+// or one side alone against a recorded interface.h5 (a scheme that replays a motion: the fluid
+// against it, the structures not solved; one that replays loads: the structures under them, the
+// fluid not solved). The part not solved stays at its initial state in fields and probes. It
+// knows the solvers only through their plug-in interfaces (solver_plugin.hpp); the structures'
+// interfaces are concatenated in scene order (coupling::StructureGroup).
 #include "coupling/registry.hpp"
 #include "coupling/scheme.hpp"
-#include "fsi_app/adapters.hpp"
-#include "fsi_app/fluid_model.hpp"
-#include "fsi_app/structure_model.hpp"
+#include "coupling/structure_group.hpp"
+#include "fsi_app/solver_plugin.hpp"
 
 #include <fstream>
 #include <memory>
@@ -19,8 +20,7 @@ class InterfaceHistoryWriter;
 
 class CoupledModel final : public Model {
 public:
-  /// Throws InputError (scene file and line) for a structure without interface tags, more than
-  /// one structure, or coupling options the scheme rejects.
+  /// Throws InputError (scene file and line) for coupling options the scheme rejects.
   /// one_way_*: InputError (`FILE:LINE: coupling.motion|loads: what`) for a recorded file whose
   /// node count differs from the interface's.
   explicit CoupledModel(const Scene& scene);
@@ -32,7 +32,7 @@ public:
   /// not continued across a restart: refused with InputError).
   void open_logs(const std::filesystem::path& out, bool resume) override;
   void flush_logs() override;
-  void declare(FieldsFile& file) const override { structure_->declare(file); }
+  void declare(FieldsFile& file) const override;
   void write_frame(FieldsFile& file, const std::vector<std::string>& fields) const override;
   std::optional<double> probe(const ProbeSpec& probe) const override;
   void report(JsonObject& run) const override;
@@ -41,16 +41,13 @@ public:
   void read_state(const StateArchive& archive) override { scheme_->read_state(archive); }
 
   const coupling::CouplingScheme& scheme() const { return *scheme_; }
-  const FluidAdapter& fluid_adapter() const { return *fluid_adapter_; }
-  const StructureAdapter& structure_adapter() const { return *structure_adapter_; }
-  FluidModel& fluid() { return *fluid_; }
-  StructureModel& structure() { return *structure_; }
+  FluidPart& fluid() { return *fluid_; }
+  StructurePart& structure(std::size_t i) { return *structures_[i]; }
 
 private:
-  std::unique_ptr<StructureModel> structure_;
-  std::unique_ptr<FluidModel> fluid_;
-  std::unique_ptr<FluidAdapter> fluid_adapter_;
-  std::unique_ptr<StructureAdapter> structure_adapter_;
+  std::vector<std::unique_ptr<StructurePart>> structures_;
+  std::unique_ptr<FluidPart> fluid_;
+  std::unique_ptr<coupling::StructureGroup> group_;
   std::unique_ptr<coupling::CouplingScheme> scheme_;
   std::unique_ptr<std::ofstream> step_log_;
   // Recording and one-way replay.

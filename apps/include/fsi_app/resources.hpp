@@ -3,19 +3,18 @@
 // allocate anything, with the estimate in the message.
 #include "fsi_app/scene.hpp"
 #include "fsi_app/scene_reader.hpp"
+#include "fsi_app/solver_plugin.hpp"
 
 #include <optional>
 #include <vector>
 
 namespace fsi::app {
 
-/// What a scene needs, from the data layout of the solvers (see docs/reliability.md).
+/// What a scene needs, from the data layout of the solvers (each plug-in's footprint; see
+/// docs/reliability.md).
 struct MemoryEstimate {
-  double particles = 0.0;   ///< fluid region area / l0^2
-  double cells = 0.0;       ///< cell-grid cells over the fluid domain
-  double fluid_bytes = 0.0; ///< particles, neighbour lists, wall queries, cell grid, output
-  std::vector<double> structure_elements; ///< per structure; 0 for Gmsh meshes (bounded by file)
-  std::vector<double> structure_bytes;    ///< per structure: mesh, sparse matrices, factor
+  Footprint fluid;                   ///< count: particles (region area / l0^2)
+  std::vector<Footprint> structures; ///< count: elements; 0 for a Gmsh mesh (bounded by file)
   double total() const;
 };
 

@@ -1,10 +1,12 @@
 #pragma once
 // The scene: what one scene file describes, in SI units, after strict validation. Plain data; the
-// solvers get their own option structs built from it (apps/src/build_*.cpp), never this.
+// solver blocks are parsed by their plug-ins (apps/solvers/<type>/), which also build the solvers
+// from them: no solver library sees this.
 #include "coupling/options.hpp"
 #include "fsi/core/types.hpp"
 
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -53,55 +55,26 @@ struct WallSpec {
   std::optional<MotionSpec> motion;
 };
 
-struct FluidSpec {
+/// A solver's own block of the scene, as its plug-in parsed it (apps/solvers/<type>/).
+struct SolverSpec {
+  virtual ~SolverSpec() = default;
+};
+
+/// The fluid block: `type` names the plug-in, `spec` holds what that plug-in read.
+struct FluidBlock {
+  std::string type;
   int line = 0;
-  double density = 1000.0;                ///< kg/m^3
-  double viscosity = 0.0;                 ///< kinematic, m^2/s; 0 skips the viscous loop
-  double l0 = 0.0;                        ///< initial particle spacing, m
-  double re_over_l0 = 3.1;                ///< effective radius r_e / l0
-  double sound_speed = 0.0;               ///< c of eq. 15, m/s
-  double beta = 1.0;                      ///< free-surface threshold of eq. 17
-  double alpha_rep = 0.0;                 ///< repulsive coefficient of eq. 27, N/m^3
-  std::string wall_condition;             ///< no_slip | slip
-  std::string wall_density;               ///< added | scaled
-  double artificial_viscosity = 0.0;      ///< alpha of the closing-pair viscosity alpha c l0
-  bool corner_faces = true;               ///< a concave corner's second face (z, mirrors)
-  bool convex_corners = true;             ///< the solid's wedge in pnd and wall pressure
-  std::vector<std::vector<Vec2>> regions; ///< closed polygons filled with particles
-  Vec2 domain_min = Vec2::Zero();         ///< particles leaving this box are removed (and counted)
-  Vec2 domain_max = Vec2::Zero();
-  double damping_time = 0.0; ///< initial velocity damping phase (hydrostatic starts), s
+  std::shared_ptr<const SolverSpec> spec;
+  template <class T> const T& as() const { return dynamic_cast<const T&>(*spec); }
 };
 
-struct MeshSpec {
-  std::string kind; ///< rectangle | gmsh
-  Vec2 origin = Vec2::Zero();
-  double width = 0.0, height = 0.0;
-  int elements_x = 0, elements_y = 0;
-  std::filesystem::path file;
-};
-
-struct PointLoadSpec {
-  std::string boundary;      ///< boundary tag whose nodes share the force equally
-  Vec2 force = Vec2::Zero(); ///< N (per unit thickness) in total
-};
-
-struct StructureSpec {
+/// One entry of `structures`.
+struct StructureBlock {
+  std::string type;
   std::string name;
-  int line = 0; ///< scene line of this entry, for messages after parsing
-  MeshSpec mesh;
-  double youngs_modulus = 0.0, poisson_ratio = 0.0, density = 0.0;
-  std::string plane;                  ///< strain | stress
-  std::string material_model;         ///< saint_venant_kirchhoff | neo_hookean
-  std::vector<std::string> clamped;   ///< boundary tags held fixed
-  std::string clamped_motion;         ///< wall whose rigid motion the clamped nodes follow
-  std::vector<std::string> interface; ///< boundary tags wetted by the fluid
-  double newmark_beta = 0.3025, newmark_gamma = 0.6;
-  double newton_tolerance = 1e-8, increment_tolerance = 1e-10;
-  int newton_max_iterations = 20;
-  int newton_substep_levels = 0; ///< retries of a failed step with 2^level sub-steps
-  std::string linear_solver;     ///< cg | cholmod | umfpack | ldlt
-  std::vector<PointLoadSpec> loads;
+  int line = 0;
+  std::shared_ptr<const SolverSpec> spec;
+  template <class T> const T& as() const { return dynamic_cast<const T&>(*spec); }
 };
 
 struct CouplingSpec {
@@ -128,9 +101,9 @@ struct Scene {
   Vec2 gravity = Vec2::Zero();
   TimeSpec time;
   OutputSpec output;
-  std::optional<FluidSpec> fluid;
+  std::optional<FluidBlock> fluid;
   std::vector<WallSpec> walls;
-  std::vector<StructureSpec> structures;
+  std::vector<StructureBlock> structures;
   std::optional<CouplingSpec> coupling;
   std::optional<CheckpointSpec> checkpoint; ///< absent: checkpoints only on SIGINT/SIGTERM
   std::vector<std::string> overrides;       ///< `key=value` as given on the command line

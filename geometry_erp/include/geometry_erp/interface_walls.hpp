@@ -14,6 +14,7 @@
 #include "geometry_erp/wall_set.hpp"
 
 #include <array>
+#include <span>
 #include <vector>
 
 namespace fsi::erp {
@@ -50,8 +51,8 @@ public:
   }
 
   /// Eqs. 60-62: x_L, v_L, a_L of every interface node from the structure's interface state.
-  void update_nodes(WallSet& walls, const std::vector<Vec2>& x, const std::vector<Vec2>& v,
-                    const std::vector<Vec2>& a) const;
+  void update_nodes(WallSet& walls, std::span<const Vec2> x, std::span<const Vec2> v,
+                    std::span<const Vec2> a) const;
 
 private:
   InterfaceMesh mesh_;

@@ -1,4 +1,4 @@
-#include "fsi_app/fluid_model.hpp"
+#include "emps/emps_model.hpp"
 
 #include "fsi/core/error.hpp"
 #include "fsi_app/wall_motion.hpp"
@@ -9,10 +9,10 @@
 #include <cmath>
 #include <limits>
 
-namespace fsi::app {
+namespace fsi::app::emps_plugin {
 
 emps::FluidOptions fluid_options(const Scene& scene) {
-  const FluidSpec& f = *scene.fluid;
+  const FluidSpec& f = scene.fluid->as<FluidSpec>();
   emps::FluidOptions o;
   o.density = f.density;
   o.viscosity = f.viscosity;
@@ -45,8 +45,8 @@ emps::FluidOptions fluid_options(const Scene& scene) {
   return o;
 }
 
-FluidModel::FluidModel(const Scene& scene, const InterfaceMesh* interface,
-                       const std::vector<erp::Polygon>& solid)
+EmpsModel::EmpsModel(const Scene& scene, const std::vector<InterfaceMesh>& interfaces,
+                     const std::vector<Polygon>& solid)
     : walls_(std::make_unique<erp::WallSet>()) {
   int group = 0;
   for (const auto& w : scene.walls) {
@@ -56,9 +56,9 @@ FluidModel::FluidModel(const Scene& scene, const InterfaceMesh* interface,
       walls_->add_polyline(w.polyline, w.closed, group++);
   }
   std::vector<erp::Polygon> holes = solid;
-  if (interface)
-    interface_walls_ = std::make_unique<erp::InterfaceWalls>(*walls_, *interface, group++);
-  const FluidSpec& f = *scene.fluid;
+  interface_walls_.reserve(interfaces.size()); // the adapter keeps a reference to the list
+  for (const auto& mesh : interfaces) interface_walls_.emplace_back(*walls_, mesh, group++);
+  const FluidSpec& f = scene.fluid->as<FluidSpec>();
   std::vector<Vec2> positions;
   // Each region on its own lattice from its lower-left corner, so a region a whole number of l0
   // wide has l0/2 gaps at both sides; earlier regions are holes for later ones (no doubles).
@@ -76,23 +76,25 @@ FluidModel::FluidModel(const Scene& scene, const InterfaceMesh* interface,
     holes.push_back(region);
   }
   if (positions.empty())
-    fail_at(scene, f.line, "fluid.regions", "no particle fits in the regions at this l0");
+    fail_at(scene, scene.fluid->line, "fluid.regions",
+            "no particle fits in the regions at this l0");
   initial_count_ = positions.size();
   fluid_ = std::make_unique<emps::EmpsFluid>(fluid_options(scene), positions, *walls_);
+  adapter_ = std::make_unique<FluidAdapter>(*fluid_, *walls_, interface_walls_);
 }
 
-void FluidModel::advance(double time, double dt) {
+void EmpsModel::advance(double time, double dt) {
   walls_->move_rigid(time + dt);
   fluid_->advance(time, dt);
 }
 
-std::optional<double> FluidModel::stable_dt(double courant) const {
+std::optional<double> EmpsModel::stable_dt(double courant) const {
   return fluid_->stable_dt(courant);
 }
 
-void FluidModel::declare(FieldsFile&) const {}
+void EmpsModel::declare(FieldsFile&) const {}
 
-void FluidModel::write_frame(FieldsFile& file, const std::vector<std::string>& fields) const {
+void EmpsModel::write_frame(FieldsFile& file, const std::vector<std::string>& fields) const {
   const emps::Particles& p = fluid_->particles();
   const std::size_t n = p.size();
   xy_.resize(2 * n);
@@ -114,7 +116,7 @@ void FluidModel::write_frame(FieldsFile& file, const std::vector<std::string>& f
   file.write_grid("particles", xy_, out);
 }
 
-std::optional<double> FluidModel::probe(const ProbeSpec& probe) const {
+std::optional<double> EmpsModel::probe(const ProbeSpec& probe) const {
   const emps::Particles& p = fluid_->particles();
   if (probe.quantity ==
       "surge_front") { // largest x of the bulk: isolated spray (pnd < n0/2) skipped
@@ -158,17 +160,17 @@ std::optional<double> FluidModel::probe(const ProbeSpec& probe) const {
   return std::nullopt;
 }
 
-void FluidModel::write_state(StateArchive& archive) const {
+void EmpsModel::write_state(StateArchive& archive) const {
   fluid_->write_state(archive, "fluid/");
   walls_->write_state(archive, "walls/");
 }
 
-void FluidModel::read_state(const StateArchive& archive) {
+void EmpsModel::read_state(const StateArchive& archive) {
   fluid_->read_state(archive, "fluid/");
   walls_->read_state(archive, "walls/");
 }
 
-void FluidModel::report(JsonObject& run) const {
+void EmpsModel::report(JsonObject& run) const {
   JsonObject f;
   f.add("particles_initial", static_cast<long long>(initial_count_))
       .add("particles", static_cast<long long>(fluid_->particles().size()))
@@ -178,4 +180,4 @@ void FluidModel::report(JsonObject& run) const {
   run.add("fluid", f);
 }
 
-} // namespace fsi::app
+} // namespace fsi::app::emps_plugin

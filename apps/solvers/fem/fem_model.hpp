@@ -1,17 +1,22 @@
 #pragma once
-// A structure alone (no fluid): the T6 FEM solid under gravity and the scene's constant loads.
-#include "fsi_app/model.hpp"
+// The FE structure of one scene entry (structures[].type: fem): the T6 solid under gravity, the
+// scene's constant loads and, coupled, the interface loads; also the coupler's S through the
+// interface its tagged boundary describes.
+#include "coupling/interface.hpp"
+#include "fem/fem_spec.hpp"
+#include "fsi_app/solver_plugin.hpp"
 #include "geometry_erp/motion.hpp"
+#include "structure_fem/interface_mesh.hpp"
 #include "structure_fem/structure.hpp"
 
 #include <memory>
 #include <optional>
 
-namespace fsi::app {
+namespace fsi::app::fem_plugin {
 
-/// The FEM structure of one scene entry: mesh built, options mapped, probes resolved to nodes.
-/// Throws InputError (scene file and line) for tags, probes or meshes that do not fit.
-std::unique_ptr<fem::Structure> build_structure(const Scene& scene, const StructureSpec& spec);
+/// The FEM structure of one scene entry: mesh built, options mapped. Throws InputError (scene
+/// file and line) for tags or meshes that do not fit.
+std::unique_ptr<fem::Structure> build_structure(const Scene& scene, const StructureBlock& block);
 
 /// The moving frame a structure is clamped in (its clamped_motion wall): that wall's rigid motion
 /// about its pivot.
@@ -21,37 +26,45 @@ struct TankFrame {
 };
 
 /// The frame of the structure's clamped_motion wall, or nullopt if it is clamped in place.
-std::optional<TankFrame> tank_frame(const Scene& scene, const StructureSpec& spec);
-
-/// The area the mesh occupies, for a fluid to keep free of particles: each element's corner
-/// triangle.
-std::vector<std::vector<Vec2>> occupied_area(const fem::Mesh& mesh);
+std::optional<TankFrame> tank_frame(const Scene& scene, const StructureBlock& block);
 
 /// The FE node a displacement probe names (by index, or by reference position).
 int probe_node(const Scene& scene, const fem::Mesh& mesh, const ProbeSpec& probe);
 
-class StructureModel final : public Model {
+class FemModel final : public StructurePart {
 public:
-  StructureModel(const Scene& scene, const StructureSpec& spec);
+  FemModel(const Scene& scene, const StructureBlock& block);
+  ~FemModel() override;
   void advance(double time, double dt) override;
   void declare(FieldsFile& file) const override;
   void write_frame(FieldsFile& file, const std::vector<std::string>& fields) const override;
   std::optional<double> probe(const ProbeSpec& probe) const override;
   void report(JsonObject& run) const override;
+  /// The structure and its Newton counters under "structures/<name>/", coupled or not.
   void write_state(StateArchive& archive) const override;
   void read_state(const StateArchive& archive) override;
+  const std::string& name() const override { return name_; }
+  const InterfaceMesh& interface_mesh() const override { return interface_.mesh; }
+  std::vector<Polygon> occupied_area() const override;
+  coupling::StructureSolver& coupling_solver() override;
 
   fem::Structure& structure() { return *structure_; }
+  const fem::Structure& structure() const { return *structure_; }
+  /// The interface with its FE nodes (NCR, eq. 50).
+  const fem::FeInterface& interface() const { return interface_; }
 
 private:
+  class Adapter;
   std::string name_;
   std::unique_ptr<fem::Structure> structure_;
+  fem::FeInterface interface_;
   std::optional<TankFrame> frame_; // the clamped_motion wall's motion (tank-frame probes)
   std::vector<std::pair<std::string, int>> probe_nodes_; // probe name -> node
+  std::unique_ptr<Adapter> adapter_;
   long newton_iterations_ = 0, steps_ = 0;
   int newton_max_ = 0;
   long newton_halvings_ = 0, steps_with_halvings_ = 0; ///< Newton safeguard (Structure::newton)
   long substepped_steps_ = 0, substeps_ = 0;           ///< retried steps, their sub-steps
 };
 
-} // namespace fsi::app
+} // namespace fsi::app::fem_plugin

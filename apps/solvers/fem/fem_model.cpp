@@ -1,4 +1,4 @@
-#include "fsi_app/structure_model.hpp"
+#include "fem/fem_model.hpp"
 
 #include "fsi/core/error.hpp"
 #include "fsi_app/wall_motion.hpp"
@@ -10,11 +10,12 @@
 #include <cmath>
 #include <sstream>
 
-namespace fsi::app {
+namespace fsi::app::fem_plugin {
 
 namespace {
 
-fem::Mesh build_mesh(const Scene& scene, const StructureSpec& spec) {
+fem::Mesh build_mesh(const Scene& scene, const StructureBlock& block) {
+  const StructureSpec& spec = block.as<StructureSpec>();
   if (spec.mesh.kind == "rectangle") {
     fem::RectangleMeshOptions r;
     r.origin = spec.mesh.origin;
@@ -30,7 +31,7 @@ fem::Mesh build_mesh(const Scene& scene, const StructureSpec& spec) {
   try {
     return fem::read_gmsh(spec.mesh.file.string(), groups);
   } catch (const InputError& e) {
-    fail_at(scene, spec.line, "structures." + spec.name + ".mesh", e.what());
+    fail_at(scene, block.line, "structures." + block.name + ".mesh", e.what());
   }
 }
 
@@ -51,15 +52,6 @@ double edge_length(const fem::Mesh& mesh, const std::string& tag) {
 }
 
 } // namespace
-
-std::vector<std::vector<Vec2>> occupied_area(const fem::Mesh& mesh) {
-  std::vector<std::vector<Vec2>> triangles;
-  for (const auto& e : mesh.elements)
-    triangles.push_back({mesh.X[static_cast<std::size_t>(e[0])],
-                         mesh.X[static_cast<std::size_t>(e[1])],
-                         mesh.X[static_cast<std::size_t>(e[2])]});
-  return triangles;
-}
 
 int probe_node(const Scene& scene, const fem::Mesh& mesh, const ProbeSpec& probe) {
   const int count = static_cast<int>(mesh.num_nodes());
@@ -87,22 +79,24 @@ int probe_node(const Scene& scene, const fem::Mesh& mesh, const ProbeSpec& probe
   return best;
 }
 
-std::optional<TankFrame> tank_frame(const Scene& scene, const StructureSpec& spec) {
+std::optional<TankFrame> tank_frame(const Scene& scene, const StructureBlock& block) {
+  const StructureSpec& spec = block.as<StructureSpec>();
   if (spec.clamped_motion.empty()) return std::nullopt;
-  const WallSpec& wall = moving_wall(scene, spec.clamped_motion, spec.line,
-                                     "structures." + spec.name + ".clamped_motion");
+  const WallSpec& wall = moving_wall(scene, spec.clamped_motion, block.line,
+                                     "structures." + block.name + ".clamped_motion");
   return TankFrame{make_motion(wall), wall.motion->pivot};
 }
 
-std::unique_ptr<fem::Structure> build_structure(const Scene& scene, const StructureSpec& spec) {
-  fem::Mesh mesh = build_mesh(scene, spec);
-  const std::string key = "structures." + spec.name;
+std::unique_ptr<fem::Structure> build_structure(const Scene& scene, const StructureBlock& block) {
+  const StructureSpec& spec = block.as<StructureSpec>();
+  fem::Mesh mesh = build_mesh(scene, block);
+  const std::string key = "structures." + block.name;
   for (const auto& tag : spec.clamped)
     if (!mesh.has_tag(tag))
-      fail_at(scene, spec.line, key + ".clamped", "no boundary '" + tag + "'");
+      fail_at(scene, block.line, key + ".clamped", "no boundary '" + tag + "'");
   for (const auto& tag : spec.interface)
     if (!mesh.has_tag(tag))
-      fail_at(scene, spec.line, key + ".interface", "no boundary '" + tag + "'");
+      fail_at(scene, block.line, key + ".interface", "no boundary '" + tag + "'");
   fem::StructureOptions o;
   o.material.youngs_modulus = spec.youngs_modulus;
   o.material.poisson_ratio = spec.poisson_ratio;
@@ -114,7 +108,7 @@ std::unique_ptr<fem::Structure> build_structure(const Scene& scene, const Struct
                          : fem::MaterialModel::saint_venant_kirchhoff;
   o.gravity = scene.gravity;
   fem::PrescribedMotion clamped_motion; // empty: fixed
-  if (const auto frame = tank_frame(scene, spec)) {
+  if (const auto frame = tank_frame(scene, block)) {
     clamped_motion = [frame](const Vec2& X, double t) { // the tank's rigid motion at X
       const erp::NodeState n = erp::rigid_node_state(frame->motion->at(t), frame->pivot, X);
       return fem::PrescribedKinematics{n.x - X, n.v, n.a};
@@ -131,7 +125,7 @@ std::unique_ptr<fem::Structure> build_structure(const Scene& scene, const Struct
   fem::Vector loads = fem::Vector::Zero(2 * static_cast<Eigen::Index>(mesh.num_nodes()));
   for (const auto& l : spec.loads) {
     if (!mesh.has_tag(l.boundary))
-      fail_at(scene, spec.line, key + ".loads", "no boundary '" + l.boundary + "'");
+      fail_at(scene, block.line, key + ".loads", "no boundary '" + l.boundary + "'");
     loads += fem::edge_traction_forces(mesh, l.boundary, l.force / edge_length(mesh, l.boundary));
   }
   auto structure = std::make_unique<fem::Structure>(std::move(mesh), o);
@@ -144,20 +138,82 @@ std::unique_ptr<fem::Structure> build_structure(const Scene& scene, const Struct
       structure->solve_static({.load_steps = 1, .time = 0.0});
       structure->update_acceleration();
     } catch (const RunError& e) {
-      fail_at(scene, spec.line, key + ".clamped_motion", e.what());
+      fail_at(scene, block.line, key + ".clamped_motion", e.what());
     }
   }
   return structure;
 }
 
-StructureModel::StructureModel(const Scene& scene, const StructureSpec& spec)
-    : name_(spec.name), structure_(build_structure(scene, spec)), frame_(tank_frame(scene, spec)) {
+// S (eq. 67): interface loads in (as FE nodal forces, eq. 59); FE node motion out (eqs. 60-62).
+// It advances the model itself, so the model's Newton counters cover coupled runs too.
+class FemModel::Adapter final : public coupling::StructureSolver {
+public:
+  explicit Adapter(FemModel& model)
+      : model_(model),
+        forces_(fem::Vector::Zero(2 * static_cast<Eigen::Index>(model.structure().num_nodes()))) {}
+  void initialize() override {}
+  void set_interface_loads(const coupling::InterfaceLoads& loads) override {
+    forces_.setZero();
+    for (std::size_t k = 0; k < loads.size(); ++k) { // eq. 59
+      const int K = model_.interface_.fe_node[k];
+      forces_[2 * K] = loads.f[k].x();
+      forces_[2 * K + 1] = loads.f[k].y();
+    }
+    model_.structure().set_external_forces(forces_);
+  }
+  void advance(double t, double dt) override { model_.advance(t, dt); }
+  coupling::InterfaceMotion interface_motion() const override {
+    const fem::Structure& s = model_.structure();
+    const std::size_t n = model_.interface_.fe_node.size();
+    coupling::InterfaceMotion m = coupling::InterfaceMotion::zeros(n);
+    const auto& X = s.mesh().X;
+    const auto &u = s.displacement(), &v = s.velocity(), &a = s.acceleration();
+    for (std::size_t k = 0; k < n; ++k) { // eqs. 60-62
+      const int K = model_.interface_.fe_node[k];
+      m.x[k] = X[static_cast<std::size_t>(K)] + Vec2(u[2 * K], u[2 * K + 1]);
+      m.v[k] = Vec2(v[2 * K], v[2 * K + 1]);
+      m.a[k] = Vec2(a[2 * K], a[2 * K + 1]);
+    }
+    return m;
+  }
+  // The Newton counters are not rolled back: they count every solve, re-run evaluations too.
+  void save_state() override { saved_ = model_.structure().save(); }
+  void restore_state() override { model_.structure().restore(*saved_); }
+  void write_state(StateArchive& archive) const override { model_.write_state(archive); }
+  void read_state(const StateArchive& archive) override { model_.read_state(archive); }
+
+private:
+  FemModel& model_;
+  fem::Vector forces_;
+  std::optional<fem::StructureState> saved_;
+};
+
+FemModel::FemModel(const Scene& scene, const StructureBlock& block)
+    : name_(block.name), structure_(build_structure(scene, block)),
+      interface_(fem::interface_of(structure_->mesh(), block.as<StructureSpec>().interface)),
+      frame_(tank_frame(scene, block)), adapter_(std::make_unique<Adapter>(*this)) {
   for (const auto& p : scene.output.probes)
-    if (p.structure == spec.name)
+    if (p.structure == block.name)
       probe_nodes_.emplace_back(p.name, probe_node(scene, structure_->mesh(), p));
 }
 
-void StructureModel::advance(double /*time*/, double dt) {
+FemModel::~FemModel() = default;
+
+coupling::StructureSolver& FemModel::coupling_solver() {
+  return *adapter_;
+}
+
+std::vector<Polygon> FemModel::occupied_area() const {
+  const fem::Mesh& mesh = structure_->mesh();
+  std::vector<Polygon> triangles;
+  for (const auto& e : mesh.elements)
+    triangles.push_back({mesh.X[static_cast<std::size_t>(e[0])],
+                         mesh.X[static_cast<std::size_t>(e[1])],
+                         mesh.X[static_cast<std::size_t>(e[2])]});
+  return triangles;
+}
+
+void FemModel::advance(double /*time*/, double dt) {
   const auto& report = structure_->advance(dt);
   newton_iterations_ += report.iterations;
   newton_max_ = std::max(newton_max_, report.iterations);
@@ -167,13 +223,13 @@ void StructureModel::advance(double /*time*/, double dt) {
   ++steps_;
 }
 
-void StructureModel::declare(FieldsFile& file) const {
+void FemModel::declare(FieldsFile& file) const {
   std::vector<std::int64_t> t6;
   for (const auto& e : structure_->mesh().elements) t6.insert(t6.end(), e.begin(), e.end());
   file.add_mesh(name_, t6);
 }
 
-void StructureModel::write_frame(FieldsFile& file, const std::vector<std::string>& fields) const {
+void FemModel::write_frame(FieldsFile& file, const std::vector<std::string>& fields) const {
   const auto x = structure_->positions();
   std::vector<double> xy;
   xy.reserve(2 * x.size());
@@ -189,7 +245,7 @@ void StructureModel::write_frame(FieldsFile& file, const std::vector<std::string
   file.write_grid(name_, xy, out);
 }
 
-std::optional<double> StructureModel::probe(const ProbeSpec& probe) const {
+std::optional<double> FemModel::probe(const ProbeSpec& probe) const {
   for (const auto& [name, node] : probe_nodes_) {
     if (name != probe.name) continue;
     const int c = probe.quantity.starts_with("displacement_y") ? 1 : 0;
@@ -207,7 +263,7 @@ std::optional<double> StructureModel::probe(const ProbeSpec& probe) const {
   return std::nullopt;
 }
 
-void StructureModel::write_state(StateArchive& archive) const {
+void FemModel::write_state(StateArchive& archive) const {
   const std::string prefix = "structures/" + name_ + "/";
   structure_->write_state(archive, prefix);
   archive.put("run/" + prefix + "newton",
@@ -217,7 +273,7 @@ void StructureModel::write_state(StateArchive& archive) const {
                                         substeps_});
 }
 
-void StructureModel::read_state(const StateArchive& archive) {
+void FemModel::read_state(const StateArchive& archive) {
   const std::string prefix = "structures/" + name_ + "/";
   structure_->read_state(archive, prefix);
   const auto& counts = archive.integers("run/" + prefix + "newton", 3);
@@ -229,7 +285,7 @@ void StructureModel::read_state(const StateArchive& archive) {
   }
 }
 
-void StructureModel::report(JsonObject& run) const {
+void FemModel::report(JsonObject& run) const {
   JsonObject s;
   s.add("nodes", static_cast<long long>(structure_->mesh().num_nodes()))
       .add("elements", static_cast<long long>(structure_->mesh().num_elements()))
@@ -243,4 +299,4 @@ void StructureModel::report(JsonObject& run) const {
   run.add("structure_" + name_, s);
 }
 
-} // namespace fsi::app
+} // namespace fsi::app::fem_plugin

@@ -1,0 +1,88 @@
+#pragma once
+// Solver plug-ins: how a fluid or structure solver joins a scene. Each solver has one folder,
+// apps/solvers/<name>/, that declares its scene keys once (read), builds its model and coupling
+// adapter (build), and names its output fields, probe quantities and memory estimate; the
+// registration list in apps/solvers/registry.cpp is the one place that names them all. The rest
+// of apps/ (scene reader, run driver, coupled model) knows only these interfaces.
+#include "coupling/interface.hpp"
+#include "fsi/core/interface_mesh.hpp"
+#include "fsi_app/model.hpp"
+#include "fsi_app/scene.hpp"
+#include "fsi_app/scene_reader.hpp"
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace fsi::app {
+
+using Polygon = std::vector<Vec2>;
+
+/// A fluid in a run: stand-alone (the Model interface) and, in a coupled scene, the coupler's F.
+class FluidPart : public Model {
+public:
+  /// F against the interfaces the part was built with, their nodes concatenated in the order
+  /// given (coupling/interface.hpp).
+  virtual coupling::FluidSolver& coupling_solver() = 0;
+};
+
+/// A structure in a run: stand-alone, or the coupler's S through the interface it describes.
+class StructurePart : public Model {
+public:
+  virtual const std::string& name() const = 0;
+  /// The coupling interface (its wetted boundary), in the reference configuration.
+  virtual const InterfaceMesh& interface_mesh() const = 0;
+  /// The area the structure occupies, kept free of fluid particles.
+  virtual std::vector<Polygon> occupied_area() const = 0;
+  virtual coupling::StructureSolver& coupling_solver() = 0;
+};
+
+/// Memory a part needs, for the up-front check (apps/src/resources.cpp).
+struct Footprint {
+  double bytes = 0.0;
+  double count = 0.0; ///< particles, elements: what sets the size
+  std::string key;    ///< the key of the part's block that sets it, e.g. "l0"
+  std::string counts; ///< what was counted, for the message ("20000 particles (...)")
+  /// Counts that exceed the solver's index types: (key, message).
+  std::vector<std::pair<std::string, std::string>> overflows;
+};
+
+struct FluidPlugin {
+  std::string name, doc;
+  /// Reads the solver's own keys of the fluid block (every key declared there, once).
+  std::function<std::shared_ptr<const SolverSpec>(Section&)> read;
+  /// Cross-checks against the whole scene (after every block is read).
+  std::function<void(const Scene&, Section&)> check;
+  /// interfaces: the coupled structures' interfaces (empty for a fluid alone); solid: the areas
+  /// they occupy.
+  std::function<std::unique_ptr<FluidPart>(const Scene&, const std::vector<InterfaceMesh>&,
+                                           const std::vector<Polygon>&)>
+      build;
+  std::function<Footprint(const Scene&)> footprint;
+  std::vector<std::string> fields;           ///< output fields it writes
+  std::vector<std::string> probe_quantities; ///< probes it answers (without a `structure`)
+};
+
+struct StructurePlugin {
+  std::string name, doc;
+  std::function<std::shared_ptr<const SolverSpec>(Section&)> read;
+  /// Cross-checks of entry `index` against the whole scene (probes naming it, walls it follows).
+  std::function<void(const Scene&, std::size_t index, Section&, std::vector<Section>& probes)>
+      check;
+  std::function<std::unique_ptr<StructurePart>(const Scene&, std::size_t index)> build;
+  std::function<Footprint(const Scene&, std::size_t index)> footprint;
+  std::vector<std::string> fields;
+  std::vector<std::string> probe_quantities; ///< probes naming a structure of this type
+};
+
+/// The registration lists (apps/solvers/registry.cpp), in registration order; the first entry
+/// is the default type.
+const std::vector<FluidPlugin>& fluid_plugins();
+const std::vector<StructurePlugin>& structure_plugins();
+/// By name; nullptr for an unknown name.
+const FluidPlugin* find_fluid_plugin(std::string_view name);
+const StructurePlugin* find_structure_plugin(std::string_view name);
+
+} // namespace fsi::app

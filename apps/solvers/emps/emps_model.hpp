@@ -1,0 +1,55 @@
+#pragma once
+// The EMPS fluid of a scene (fluid.type: emps) against its polygon walls (static or with
+// prescribed motion) and the interfaces of the structures it is coupled to.
+#include "emps/emps_adapter.hpp"
+#include "emps/emps_spec.hpp"
+#include "fluid_emps/emps_fluid.hpp"
+#include "fsi/core/interface_mesh.hpp"
+#include "fsi_app/solver_plugin.hpp"
+#include "geometry_erp/interface_walls.hpp"
+#include "geometry_erp/wall_set.hpp"
+
+#include <memory>
+
+namespace fsi::app::emps_plugin {
+
+/// The solver options of the scene's fluid block; without a domain, the box around walls and
+/// regions with a margin of 4 r_e.
+emps::FluidOptions fluid_options(const Scene& scene);
+
+class EmpsModel final : public FluidPart {
+public:
+  /// Builds walls, fills the regions with particles and maps the options. Each coupled
+  /// structure's interface (as the structure describes it) becomes ERP walls whose nodes are its
+  /// interface nodes (eqs. 47-51), and the areas the structures occupy (`solid`) are kept free of
+  /// particles. Throws InputError (scene file and line) for a motion table or region that does
+  /// not fit.
+  EmpsModel(const Scene& scene, const std::vector<InterfaceMesh>& interfaces = {},
+            const std::vector<Polygon>& solid = {});
+  void advance(double time, double dt) override;
+  std::optional<double> stable_dt(double courant) const override;
+  void declare(FieldsFile& file) const override;
+  void write_frame(FieldsFile& file, const std::vector<std::string>& fields) const override;
+  std::optional<double> probe(const ProbeSpec& probe) const override;
+  void report(JsonObject& run) const override;
+  /// The fluid under "fluid/", all wall nodes under "walls/".
+  void write_state(StateArchive& archive) const override;
+  void read_state(const StateArchive& archive) override;
+  coupling::FluidSolver& coupling_solver() override { return *adapter_; }
+
+  emps::EmpsFluid& fluid() { return *fluid_; }
+  erp::WallSet& walls() { return *walls_; }
+  /// The walls of the coupled structures' interfaces, in the order given.
+  const std::vector<erp::InterfaceWalls>& interface_walls() const { return interface_walls_; }
+  const FluidAdapter& adapter() const { return *adapter_; }
+
+private:
+  std::unique_ptr<erp::WallSet> walls_;
+  std::vector<erp::InterfaceWalls> interface_walls_;
+  std::unique_ptr<emps::EmpsFluid> fluid_;
+  std::unique_ptr<FluidAdapter> adapter_;
+  std::size_t initial_count_ = 0;
+  mutable std::vector<double> xy_, v_, flag_; // output buffers
+};
+
+} // namespace fsi::app::emps_plugin

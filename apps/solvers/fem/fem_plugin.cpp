@@ -1,0 +1,125 @@
+// The FE structure as a plug-in: its scene keys (fem_scene.cpp), its checks against the scene,
+// its model, fields, probes and memory footprint.
+#include "fem/fem_plugin.hpp"
+
+#include "fem/fem_model.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <set>
+#include <sstream>
+
+namespace fsi::app::fem_plugin {
+
+namespace {
+
+std::string count(double n) {
+  std::ostringstream out;
+  out.precision(3);
+  out << n;
+  return out.str();
+}
+
+// A structured T6 rectangle has (2 nx + 1)(2 ny + 1) nodes on a regular grid.
+void check_rectangle_probe(const MeshSpec& m, const ProbeSpec& p, const Section& s) {
+  const long nodes = (2L * m.elements_x + 1) * (2L * m.elements_y + 1);
+  if (p.node && *p.node >= nodes)
+    s.fail("node", "node " + std::to_string(*p.node) + " does not exist (the mesh has " +
+                       std::to_string(nodes) + " nodes)");
+  if (p.point) {
+    const Vec2 h(m.width / (2 * m.elements_x), m.height / (2 * m.elements_y));
+    const Vec2 grid = (*p.point - m.origin).cwiseQuotient(h);
+    const Vec2 snapped = grid.array().round();
+    const bool inside = snapped.x() >= 0 && snapped.x() <= 2 * m.elements_x && snapped.y() >= 0 &&
+                        snapped.y() <= 2 * m.elements_y;
+    if (!inside || (grid - snapped).cwiseAbs().maxCoeff() > 1e-6) {
+      std::ostringstream msg;
+      msg << "no node of structure '" << p.structure << "' at (" << p.point->x() << ", "
+          << p.point->y() << ")";
+      s.fail("point", msg.str());
+    }
+  }
+}
+
+void check(const Scene& scene, std::size_t index, Section& s, std::vector<Section>& probes) {
+  const StructureBlock& block = scene.structures[index];
+  const StructureSpec& st = block.as<StructureSpec>();
+  if (st.mesh.kind == "rectangle") {
+    const std::set<std::string> tags = {"left", "right", "bottom", "top"};
+    auto check_tags = [&](const std::vector<std::string>& list, const std::string& key) {
+      for (const auto& t : list)
+        if (!tags.count(t))
+          s.fail(key,
+                 "unknown boundary tag '" + t + "' (a rectangle has left, right, bottom, top)");
+    };
+    check_tags(st.clamped, "clamped");
+    check_tags(st.interface, "interface");
+    for (const auto& l : st.loads)
+      if (!tags.count(l.boundary)) s.fail("loads", "unknown boundary tag '" + l.boundary + "'");
+  }
+  if (!st.clamped_motion.empty()) {
+    if (st.clamped.empty()) s.fail("clamped_motion", "needs clamped boundary tags to move");
+    const auto w = std::find_if(scene.walls.begin(), scene.walls.end(),
+                                [&](const WallSpec& x) { return x.name == st.clamped_motion; });
+    if (w == scene.walls.end())
+      s.fail("clamped_motion", "no wall named '" + st.clamped_motion + "'");
+    if (!w->motion) s.fail("clamped_motion", "wall '" + st.clamped_motion + "' has no motion");
+  }
+  if (scene.fluid && st.interface.empty()) // a fluid and a structure are coupled
+    s.fail("interface", "a structure coupled to the fluid needs the boundary tags it is wetted on");
+  for (std::size_t i = 0; i < scene.output.probes.size(); ++i) {
+    const auto& p = scene.output.probes[i];
+    if (p.structure != block.name) continue;
+    if (st.mesh.kind == "rectangle") check_rectangle_probe(st.mesh, p, probes[i]);
+    if (p.quantity.ends_with("_tank") && st.clamped_motion.empty())
+      probes[i].fail("quantity", "'" + p.quantity + "' needs structure '" + p.structure +
+                                     "' to have a clamped_motion");
+  }
+}
+
+// A structured T6 rectangle: (2 nx + 1)(2 ny + 1) nodes, 2 nx ny elements. Per degree of
+// freedom the sparse M, K and K_eff hold about 26 entries per row (12 B each in CSR), the
+// Cholesky factor about 8 times the entries of K (2D nested dissection fill, an assumption), and
+// about 16 state and work vectors; per element the 144 assembly triplets (16 B each).
+Footprint footprint(const Scene& scene, std::size_t index) {
+  const StructureSpec& st = scene.structures[index].as<StructureSpec>();
+  Footprint e;
+  e.key = "mesh";
+  if (st.mesh.kind != "rectangle") return e; // a Gmsh mesh is bounded by its file
+  const double nx = st.mesh.elements_x, ny = st.mesh.elements_y;
+  const double nodes = (2 * nx + 1) * (2 * ny + 1);
+  const double elements = 2 * nx * ny;
+  const double dofs = 2 * nodes;
+  const double row_entries = 26;
+  const double per_dof = 3 * row_entries * 12 + 8 * row_entries * 12 + 16 * 8;
+  const double per_element = 144 * 16 + 6 * 4 + 8;
+  const double per_node = 16 + 16 + 8; // X, positions, node_label
+  e.count = elements;
+  e.bytes = dofs * per_dof + elements * per_element + nodes * per_node;
+  e.counts = count(elements) + " T6 elements (2 elements_x elements_y)";
+  if (elements * 4 * 26 >
+      std::numeric_limits<int>::max()) // 2 dofs x 2 nodes per element, 26 per row
+    e.overflows.emplace_back(
+        "mesh", count(elements) + " T6 elements: the sparse matrices would exceed 2^31 entries");
+  return e;
+}
+
+} // namespace
+
+StructurePlugin plugin() {
+  StructurePlugin p;
+  p.name = "fem";
+  p.doc = "total-Lagrangian T6 finite elements, Newmark-beta, Newton-Raphson";
+  p.read = read_structure;
+  p.check = check;
+  p.build = [](const Scene& scene, std::size_t index) -> std::unique_ptr<StructurePart> {
+    return std::make_unique<FemModel>(scene, scene.structures[index]);
+  };
+  p.footprint = footprint;
+  p.fields = {"displacement", "velocity", "von_mises"};
+  p.probe_quantities = {"displacement_x", "displacement_y", "displacement_x_tank",
+                        "displacement_y_tank"};
+  return p;
+}
+
+} // namespace fsi::app::fem_plugin
