@@ -8,14 +8,28 @@
 
 namespace fsi::app {
 
-const std::vector<FluidPlugin>& fluid_plugins() {
-  static const std::vector<FluidPlugin> list{emps_plugin::plugin()};
+namespace {
+std::vector<FluidPlugin>& fluids() {
+  static std::vector<FluidPlugin> list{emps_plugin::plugin()};
   return list;
 }
-
-const std::vector<StructurePlugin>& structure_plugins() {
-  static const std::vector<StructurePlugin> list{fem_plugin::plugin()};
+std::vector<StructurePlugin>& structures() {
+  static std::vector<StructurePlugin> list{fem_plugin::plugin()};
   return list;
+}
+} // namespace
+
+const std::vector<FluidPlugin>& fluid_plugins() {
+  return fluids();
+}
+const std::vector<StructurePlugin>& structure_plugins() {
+  return structures();
+}
+void add_fluid_plugin(FluidPlugin plugin) {
+  fluids().push_back(std::move(plugin));
+}
+void add_structure_plugin(StructurePlugin plugin) {
+  structures().push_back(std::move(plugin));
 }
 
 namespace {

@@ -93,7 +93,6 @@ ProbeSpec read_probe(Section s) {
     const auto on = structure_quantities();
     const bool on_structure = std::find(on.begin(), on.end(), p.quantity) != on.end();
     if (on_structure && p.structure.empty()) s.fail("structure", "required key missing");
-    if (on_structure && !p.node && !p.point) s.fail("", "give node or point");
     if (p.quantity == "pressure" && !p.point) s.fail("point", "required key missing");
     if (p.quantity == "mean_pressure") {
       if (!p.box_min) s.fail("min", "required key missing");

@@ -81,6 +81,10 @@ struct StructurePlugin {
 /// is the default type.
 const std::vector<FluidPlugin>& fluid_plugins();
 const std::vector<StructurePlugin>& structure_plugins();
+/// Adds a plug-in after the built-in ones (a solver of one's own, e.g. a test's stand-in), before
+/// any scene is read; it then takes part in reading, the reference and building like the others.
+void add_fluid_plugin(FluidPlugin plugin);
+void add_structure_plugin(StructurePlugin plugin);
 /// By name; nullptr for an unknown name.
 const FluidPlugin* find_fluid_plugin(std::string_view name);
 const StructurePlugin* find_structure_plugin(std::string_view name);
