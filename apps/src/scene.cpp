@@ -129,6 +129,9 @@ MotionSpec read_motion(Section s) {
                "factor on the values, e.g. -1 for a table whose positive angles turn clockwise "
                "(the scene's turn counter-clockwise)");
     m.table_scale = scale * (unit == "deg" ? M_PI / 180.0 : 1.0);
+    m.hold = s.boolean("hold", false,
+                       "hold the table's first value before its first time and its last value "
+                       "after its last; without it the table must cover 0 .. time.end");
     if (!doc && (unit == "m") != (m.dof != "rotation"))
       s.fail("unit", "'" + unit + "' does not match dof '" + m.dof + "'");
   }
