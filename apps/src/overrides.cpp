@@ -18,7 +18,8 @@ struct Step {
 std::vector<Step> parse_path(const std::string& path, const std::string& text,
                              const std::string& file) {
   auto bad = [&](const std::string& what) {
-    return InputError(file + ": --set " + text + ": " + path + ": " + what);
+    const std::string shown = text.size() > 120 ? text.substr(0, 120) + "..." : text;
+    return InputError(file + ": --set " + shown + ": " + path + ": " + what);
   };
   std::vector<Step> steps;
   std::size_t i = 0;
@@ -52,8 +53,10 @@ std::vector<Step> parse_path(const std::string& path, const std::string& text,
 } // namespace
 
 void apply_override(YAML::Node& root, const std::string& text, ReadContext& ctx) {
-  // Every message names the scene file the override applies to, then the argument.
-  const std::string where = ctx.file + ": --set " + text + ": ";
+  // Every message names the scene file the override applies to, then the argument (at most
+  // 120 characters of it).
+  const std::string shown = text.size() > 120 ? text.substr(0, 120) + "..." : text;
+  const std::string where = ctx.file + ": --set " + shown + ": ";
   const std::size_t eq = text.find('=');
   if (eq == std::string::npos || eq == 0) throw InputError(where + "expected key.path=value");
   const std::string path = text.substr(0, eq);

@@ -141,15 +141,22 @@ std::string Section::key_path(const std::string& key) const {
   return path_.empty() ? key : path_ + "." + key;
 }
 
+namespace {
+/// A `--set` argument as messages show it: at most 120 characters.
+std::string shown(const std::string& text) {
+  return text.size() > 120 ? text.substr(0, 120) + "..." : text;
+}
+} // namespace
+
 std::string Section::location(const std::string& key) const {
   const std::string full = key_path(key);
   for (const auto& [path, text] : ctx_->created)
     if (full == path || full.rfind(path + ".", 0) == 0 || full.rfind(path + "[", 0) == 0)
-      return ctx_->file + ": --set " + text;
+      return ctx_->file + ": --set " + shown(text);
   for (const auto& [path, text] : ctx_->overrides)
     if (full == path || full.rfind(path + ".", 0) == 0 || full.rfind(path + "[", 0) == 0 ||
         path.rfind(full + ".", 0) == 0 || path.rfind(full + "[", 0) == 0)
-      return ctx_->file + ": --set " + path + "=" + text;
+      return ctx_->file + ": --set " + shown(path + "=" + text);
   int line = key_line_ > 0 ? key_line_ : 1;
   if (!key.empty() && node_.IsMap())
     for (auto it = node_.begin(); it != node_.end(); ++it)
@@ -198,7 +205,7 @@ void Section::missing(const std::string& key) const {
   const std::string full = key_path(key);
   for (const auto& [path, text] : ctx_->created)
     if (full.rfind(path + ".", 0) == 0 || full.rfind(path + "[", 0) == 0)
-      hint += " (block '" + path + "' is not in the scene file: --set " + text +
+      hint += " (block '" + path + "' is not in the scene file: --set " + shown(text) +
               " created it, so give its required keys too)";
   fail(key, "required key missing" + hint);
 }

@@ -36,10 +36,10 @@ void check_motion_tables(const Scene& scene) {
     }
     const double first = table.columns[0].front(), last = table.columns[0].back();
     const double end = scene.time.end;
-    if (first > 0.0 || last < end * (1.0 - 1e-12)) {
+    if (!w.motion->hold && (first > 0.0 || last < end * (1.0 - 1e-12))) {
       std::ostringstream what;
       what << file << ": covers t = " << first << " .. " << last << " s, the run needs 0 .. " << end
-           << " s (a table is not extrapolated: extend it, or lower time.end)";
+           << " s (extend it, lower time.end, or give hold: true to hold its end values)";
       fail_at(scene, w.line, key, what.str());
     }
   }

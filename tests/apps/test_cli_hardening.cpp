@@ -150,8 +150,8 @@ TEST_CASE("apps: cli: --threads above the processors is refused with the number"
   const unsigned processors = std::thread::hardware_concurrency();
   const auto r = fsi({"run", structure, "--out", (out / "o").string(), "--threads", "100000"});
   require_clear(r, {"--threads 100000", "this machine has"});
-  if (processors > 0) CHECK(r.err.find("has " + std::to_string(processors) + " processor") !=
-                            std::string::npos);
+  if (processors > 0)
+    CHECK(r.err.find("has " + std::to_string(processors) + " processor") != std::string::npos);
   CHECK(!fs::exists(out / "o"));
 }
 
@@ -191,8 +191,8 @@ TEST_CASE("apps: cli: duplicate YAML keys and a second document are errors namin
   std::string text = slurp(structure);
   const auto at = text.find("      density: 1200.0\n");
   REQUIRE(at != std::string::npos);
-  write(dir / "density.yaml", text.substr(0, at) + "      density: 1200.0\n      density: -5\n" +
-                                  text.substr(at + 22));
+  write(dir / "density.yaml",
+        text.substr(0, at) + "      density: 1200.0\n      density: -5\n" + text.substr(at + 22));
   auto r = fsi({"check", (dir / "density.yaml").string()});
   require_clear(r, {"density.yaml:25: structures[0].material.density: duplicate key (first on "
                     "line 24)"});
@@ -211,10 +211,10 @@ TEST_CASE("apps: cli: a motion table that does not cover the run is refused nami
   write(dir / "late.csv", "time,angle\n1,0\n2,0.01\n");
   write(dir / "empty.csv", "");
   write(dir / "binary.csv", std::string("\x01\x02\x03garbage\n\xff\xfe,1\n", 17));
-  const std::string sinusoid = "      kind: sinusoid\n      dof: rotation\n      pivot: [0.0, 0.0]\n"
-                               "      amplitude: 0.05\n      period: 0.1\n";
-  for (const auto& [table, expected] :
-       std::vector<std::pair<std::string, std::string>>{
+  const std::string sinusoid =
+      "      kind: sinusoid\n      dof: rotation\n      pivot: [0.0, 0.0]\n"
+      "      amplitude: 0.05\n      period: 0.1\n";
+  for (const auto& [table, expected] : std::vector<std::pair<std::string, std::string>>{
            {"short.csv", "short.csv: covers t = 0 .. 0.001 s, the run needs 0 .. 0.02 s"},
            {"late.csv", "late.csv: covers t = 1 .. 2 s, the run needs 0 .. 0.02 s"},
            {"empty.csv", "empty.csv: 0 rows of numbers; a table needs at least two"},
@@ -226,6 +226,13 @@ TEST_CASE("apps: cli: a motion table that does not cover the run is refused nami
     require_clear(r, {table + ".yaml:", "walls[2].motion.table: ", expected});
     CHECK(r.err.find(":0:") == std::string::npos);
   }
+  // The explicit option to hold the end values.
+  const fs::path held = variant(
+      dir, "held.yaml",
+      {{sinusoid, "      kind: table\n      table: short.csv\n      unit: rad\n      hold: true\n"}});
+  const auto r = fsi({"check", held.string()});
+  INFO(r.err);
+  CHECK(r.status == 0);
 }
 
 TEST_CASE("apps: cli: after SIGINT the continue command carries --set and --threads; the "
@@ -233,7 +240,7 @@ TEST_CASE("apps: cli: after SIGINT the continue command carries --set and --thre
           "[apps][cli]") {
   const fs::path dir = fresh("sigint");
   const fs::path out = dir / "run";
-  const std::vector<std::string> args = {"run",   fluid,     "--out",   out.string(),
+  const std::vector<std::string> args = {"run",   fluid,        "--out",     out.string(),
                                          "--set", "time.end=2", "--threads", "1"};
   const pid_t pid = spawn(args, dir);
   for (int i = 0; i < 3000 && !fs::exists(out / "probes.csv"); ++i)
@@ -245,8 +252,9 @@ TEST_CASE("apps: cli: after SIGINT the continue command carries --set and --thre
   INFO(err);
   const std::smatch m = [&] {
     std::smatch s;
-    std::regex_search(err, s, std::regex("continue with: fsi run (\\S+) --out (\\S+) --set "
-                                         "time.end=2 --threads 1 --restart (\\S+)"));
+    std::regex_search(err, s,
+                      std::regex("continue with: fsi run (\\S+) --out (\\S+) --set "
+                                 "time.end=2 --threads 1 --restart (\\S+)"));
     return s;
   }();
   REQUIRE(!m.empty());
@@ -279,7 +287,9 @@ TEST_CASE("apps: cli: a double Ctrl-C leaves run.json saying interrupted", "[app
   for (int i = 0; i < 3000 && !fs::exists(out / "probes.csv"); ++i)
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  // Two separate signals (sent back to back, the second would merge into the pending first).
   kill(pid, SIGINT);
+  std::this_thread::sleep_for(std::chrono::microseconds(1500));
   kill(pid, SIGINT);
   CHECK(wait_status(pid) == 130);
   const std::string json = slurp(out / "run.json");
