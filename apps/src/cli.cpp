@@ -132,7 +132,16 @@ int dispatch(const Args& a, std::ostream& out, std::ostream& err, bool terminal)
                      " for this process; give at most " + std::to_string(processors));
   const Scene scene = load_scene(a.scene, a.overrides);
   check_motion_tables(scene);
-  auto models = build_models(scene);
+  // Errors from the libraries (a mesher's "duplicate node") name no file: give them the scene's.
+  auto models = [&] {
+    try {
+      return build_models(scene);
+    } catch (const InputError& e) {
+      const std::string what = e.what();
+      if (what.find(a.scene) != std::string::npos) throw;
+      throw InputError(a.scene + ": " + what);
+    }
+  }();
   if (a.command == "check") {
     out << a.scene << ": ok\n";
     return 0;
