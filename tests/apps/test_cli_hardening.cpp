@@ -227,9 +227,10 @@ TEST_CASE("apps: cli: a motion table that does not cover the run is refused nami
     CHECK(r.err.find(":0:") == std::string::npos);
   }
   // The explicit option to hold the end values.
-  const fs::path held = variant(
-      dir, "held.yaml",
-      {{sinusoid, "      kind: table\n      table: short.csv\n      unit: rad\n      hold: true\n"}});
+  const fs::path held =
+      variant(dir, "held.yaml",
+              {{sinusoid,
+                "      kind: table\n      table: short.csv\n      unit: rad\n      hold: true\n"}});
   const auto r = fsi({"check", held.string()});
   INFO(r.err);
   CHECK(r.status == 0);
