@@ -111,6 +111,16 @@ void require_clear(const Result& r, const std::vector<std::string>& parts) {
   for (const auto& p : parts) CHECK(r.err.find(p) != std::string::npos);
 }
 
+/// Whether a signal waits for delivery to `pid` (/proc/PID/status ShdPnd or SigPnd non-zero).
+bool signal_pending(pid_t pid) {
+  std::ifstream in("/proc/" + std::to_string(pid) + "/status");
+  for (std::string line; std::getline(in, line);)
+    if ((line.rfind("ShdPnd:", 0) == 0 || line.rfind("SigPnd:", 0) == 0) &&
+        line.find_first_not_of("0\t ", 7) != std::string::npos)
+      return true;
+  return false;
+}
+
 std::string json_field(const std::string& json, const std::string& key) {
   const std::regex re("\"" + key + "\": (\"[^\"]*\"|[^,\\n}]*)");
   std::smatch m;
@@ -284,13 +294,17 @@ TEST_CASE("apps: cli: after SIGINT the continue command carries --set and --thre
 TEST_CASE("apps: cli: a double Ctrl-C leaves run.json saying interrupted", "[apps][cli]") {
   const fs::path dir = fresh("double");
   const fs::path out = dir / "run";
-  const pid_t pid = spawn({"run", fluid, "--out", out.string(), "--set", "time.end=2"}, dir);
+  // 16 times the particles: a step lasts several ms, so the second signal lands inside one.
+  const pid_t pid = spawn(
+      {"run", fluid, "--out", out.string(), "--set", "time.end=2", "--set", "fluid.l0=1e-3"}, dir);
   for (int i = 0; i < 3000 && !fs::exists(out / "probes.csv"); ++i)
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   std::this_thread::sleep_for(std::chrono::milliseconds(300));
-  // Two separate signals (sent back to back, the second would merge into the pending first).
+  // Two separate signals: the second is sent once the first has left the pending set (two
+  // sent back to back would merge into one).
   kill(pid, SIGINT);
-  std::this_thread::sleep_for(std::chrono::microseconds(1500));
+  for (int i = 0; i < 1000 && signal_pending(pid); ++i)
+    std::this_thread::sleep_for(std::chrono::microseconds(200));
   kill(pid, SIGINT);
   CHECK(wait_status(pid) == 130);
   const std::string json = slurp(out / "run.json");
