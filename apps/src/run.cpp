@@ -199,9 +199,6 @@ Clock read_archive(const Scene& scene, std::vector<std::unique_ptr<Model>>& mode
     c.frames = static_cast<int>(a.integer("driver/frames"));
     c.dt_min = a.real("driver/dt_min");
     c.dt_max = a.real("driver/dt_max");
-    if (c.time > scene.time.end * (1.0 + 1e-12))
-      throw InputError("at t = " + format_g(c.time) +
-                       " s, past time.end = " + format_g(scene.time.end) + " s of this run");
     for (auto& m : models) m->read_state(a);
     // After the state (a checkpoint of another mesh names its key first); checkpoints written
     // before the overrides were recorded have no entry.
@@ -210,6 +207,9 @@ Clock read_archive(const Scene& scene, std::vector<std::unique_ptr<Model>>& mode
           override_difference(decode_strings(a.integers("driver/overrides")), scene.overrides);
       if (!diff.empty()) throw InputError(diff);
     }
+    if (c.time > scene.time.end * (1.0 + 1e-12))
+      throw InputError("at t = " + format_g(c.time) +
+                       " s, past time.end = " + format_g(scene.time.end) + " s of this run");
   } catch (const InputError& e) {
     throw InputError(file.string() + ": " + e.what());
   }
