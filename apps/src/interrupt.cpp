@@ -1,6 +1,8 @@
 #include "fsi_app/interrupt.hpp"
 
 #include <csignal>
+#include <fcntl.h>
+#include <unistd.h>
 
 namespace fsi::app {
 
@@ -9,18 +11,55 @@ namespace {
 volatile std::sig_atomic_t received_signal = 0;
 struct sigaction previous_int, previous_term;
 
+// The run.json to leave on a second signal: two buffers, the handler reads the active one while
+// the driver fills the other (the handler may run on any thread).
+struct LastWords {
+  std::string path, tmp, text;
+};
+LastWords last_words[2];
+volatile std::sig_atomic_t active = -1;
+
+void write_all(int fd, const char* data, std::size_t size) {
+  while (size > 0) {
+    const ssize_t n = write(fd, data, size);
+    if (n <= 0) return;
+    data += n, size -= static_cast<std::size_t>(n);
+  }
+}
+
 void record(int signal) {
-  received_signal = signal;
+  if (received_signal == 0) {
+    received_signal = signal;
+    return;
+  }
+  // Second signal: end now, but leave run.json saying "interrupted" (only async-signal-safe
+  // calls: open, write, close, rename, _exit).
+  const int a = active;
+  if (a >= 0) {
+    const LastWords& w = last_words[a];
+    const int fd = open(w.tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    if (fd >= 0) {
+      write_all(fd, w.text.data(), w.text.size());
+      if (close(fd) == 0) rename(w.tmp.c_str(), w.path.c_str());
+    }
+  }
+  const char note[] = "second signal: stopped at once (run.json: interrupted); continue from the "
+                      "last checkpoint_*.h5, if any\n";
+  write_all(STDERR_FILENO, note, sizeof note - 1);
+  _exit(128 + signal);
 }
 
 } // namespace
 
 InterruptGuard::InterruptGuard() {
   received_signal = 0;
+  active = -1;
   struct sigaction action = {};
   action.sa_handler = record;
   sigemptyset(&action.sa_mask);
-  action.sa_flags = SA_RESETHAND; // a second signal ends the process at once
+  sigaddset(&action.sa_mask, SIGINT);
+  sigaddset(&action.sa_mask, SIGTERM);
+  action.sa_flags = 0; // the handler stays: a second signal writes run.json and ends at once
   sigaction(SIGINT, &action, &previous_int);
   sigaction(SIGTERM, &action, &previous_term);
 }
@@ -28,10 +67,19 @@ InterruptGuard::InterruptGuard() {
 InterruptGuard::~InterruptGuard() {
   sigaction(SIGINT, &previous_int, nullptr);
   sigaction(SIGTERM, &previous_term, nullptr);
+  active = -1;
 }
 
 int InterruptGuard::received() const {
   return received_signal;
+}
+
+void InterruptGuard::set_last_words(const std::filesystem::path& file, const std::string& text) {
+  const int next = active == 0 ? 1 : 0;
+  last_words[next].path = file.string();
+  last_words[next].tmp = file.string() + ".tmp";
+  last_words[next].text = text;
+  active = next;
 }
 
 } // namespace fsi::app

@@ -15,9 +15,11 @@ struct Step {
   long index = -1;
 };
 
-std::vector<Step> parse_path(const std::string& path, const std::string& text) {
+std::vector<Step> parse_path(const std::string& path, const std::string& text,
+                             const std::string& file) {
   auto bad = [&](const std::string& what) {
-    return InputError("--set " + text + ": " + path + ": " + what);
+    const std::string shown = text.size() > 120 ? text.substr(0, 120) + "..." : text;
+    return InputError(file + ": --set " + shown + ": " + path + ": " + what);
   };
   std::vector<Step> steps;
   std::size_t i = 0;
@@ -51,28 +53,39 @@ std::vector<Step> parse_path(const std::string& path, const std::string& text) {
 } // namespace
 
 void apply_override(YAML::Node& root, const std::string& text, ReadContext& ctx) {
+  // Every message names the scene file the override applies to, then the argument (at most
+  // 120 characters of it).
+  const std::string shown = text.size() > 120 ? text.substr(0, 120) + "..." : text;
+  const std::string where = ctx.file + ": --set " + shown + ": ";
   const std::size_t eq = text.find('=');
-  if (eq == std::string::npos || eq == 0)
-    throw InputError("--set " + text + ": expected key.path=value");
+  if (eq == std::string::npos || eq == 0) throw InputError(where + "expected key.path=value");
   const std::string path = text.substr(0, eq);
   const std::string value_text = text.substr(eq + 1);
-  const std::vector<Step> steps = parse_path(path, text);
+  const std::vector<Step> steps = parse_path(path, text, ctx.file);
   YAML::Node value;
   try {
     value = YAML::Load(value_text);
   } catch (const YAML::DeepRecursion& e) {
-    throw InputError("--set " + text + ": " + path + ": value nested too deeply (" +
-                     std::to_string(e.depth()) + " levels)");
+    throw InputError(where + path + ": value nested too deeply (" + std::to_string(e.depth()) +
+                     " levels)");
   } catch (const YAML::Exception& e) {
-    throw InputError("--set " + text + ": " + path + ": value is not valid YAML: " + e.msg);
+    throw InputError(where + path + ": value is not valid YAML: " + e.msg);
   }
   YAML::Node node = root;
+  std::string reached; // dotted path of `node`
+  bool creating = false;
   for (std::size_t k = 0; k < steps.size(); ++k) {
     const Step& s = steps[k];
+    if (s.index >= 0) {
+      reached.append("[").append(std::to_string(s.index)).append("]");
+    } else {
+      if (!reached.empty()) reached.push_back('.');
+      reached.append(s.key);
+    }
     const bool last = k + 1 == steps.size();
     if (s.index >= 0) {
       if (!node.IsSequence() || s.index >= static_cast<long>(node.size()))
-        throw InputError("--set " + text + ": " + path + ": list index " + std::to_string(s.index) +
+        throw InputError(where + path + ": list index " + std::to_string(s.index) +
                          " does not exist");
       if (last) {
         node[static_cast<std::size_t>(s.index)] = value;
@@ -81,13 +94,16 @@ void apply_override(YAML::Node& root, const std::string& text, ReadContext& ctx)
       node.reset(node[static_cast<std::size_t>(s.index)]);
     } else {
       if (node.IsDefined() && !node.IsNull() && !node.IsMap())
-        throw InputError("--set " + text + ": " + path + ": '" + s.key + "' is inside a value");
+        throw InputError(where + path + ": '" + s.key + "' is inside a value");
       if (last) {
         node[s.key] = value;
         break;
       }
-      if (!node[s.key].IsDefined() || node[s.key].IsNull())
+      if (!node[s.key].IsDefined() || node[s.key].IsNull()) {
         node[s.key] = YAML::Node(YAML::NodeType::Map);
+        if (!creating && !ctx.created.count(reached)) ctx.created[reached] = text;
+        creating = true;
+      }
       YAML::Node child = node[s.key];
       node.reset(child);
     }

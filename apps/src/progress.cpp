@@ -1,5 +1,6 @@
 #include "fsi_app/progress.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <string>
 
@@ -18,13 +19,21 @@ Progress::Progress(double end_time, bool terminal, std::ostream& out, long first
 
 std::string Progress::line(double time, long steps) const {
   const double wall = seconds(std::chrono::steady_clock::now() - start_);
-  const double fraction = end_ > 0 ? time / end_ : 1.0;
+  // Progress in [0, 100] %, an ETA that is never negative and says "unknown" rather than
+  // overflowing (a step so small that the end is out of reach).
+  const double fraction = end_ > 0 ? std::clamp(time / end_, 0.0, 1.0) : 1.0;
   const double rate = wall > 0 ? static_cast<double>(steps - first_step_) / wall : 0.0;
   const double done = time - first_time_;
-  const double eta = done > 0 ? wall * (end_ - time) / done : 0.0;
-  char buf[160];
-  std::snprintf(buf, sizeof buf, "t = %.5g s  %5.1f %%  %.0f steps/s  ETA %dm%02ds", time,
-                100.0 * fraction, rate, static_cast<int>(eta) / 60, static_cast<int>(eta) % 60);
+  const double eta = done > 0 ? std::max(0.0, wall * (end_ - time) / done) : 0.0;
+  char eta_text[48];
+  if (!(eta < 1e7)) // about 116 days
+    std::snprintf(eta_text, sizeof eta_text, "ETA > 100 days");
+  else
+    std::snprintf(eta_text, sizeof eta_text, "ETA %lldm%02llds", static_cast<long long>(eta) / 60,
+                  static_cast<long long>(eta) % 60);
+  char buf[200];
+  std::snprintf(buf, sizeof buf, "t = %.5g s  %5.1f %%  %.0f steps/s  %s", time, 100.0 * fraction,
+                rate, eta_text);
   return buf;
 }
 

@@ -33,6 +33,12 @@ TimeSpec read_time(Section s) {
     if (t.dt && t.courant) s.fail("courant", "give either dt or courant, not both");
     if (!t.dt && !t.courant) s.fail("", "one of dt or courant is required");
     if (t.dt && *t.dt > t.end) s.fail("dt", "is larger than time.end");
+    // At most 1e9 steps (docs/reliability.md, "Time steps"); also keeps the count in a long.
+    if (t.dt && !(t.end / *t.dt <= 1e9)) {
+      std::ostringstream n;
+      n << t.end / *t.dt;
+      s.fail("dt", "time.end / time.dt = " + n.str() + " steps; a run takes at most 1e9 steps");
+    }
   }
   s.finish();
   return t;
@@ -151,6 +157,9 @@ MotionSpec read_motion(Section s) {
                "factor on the values, e.g. -1 for a table whose positive angles turn clockwise "
                "(the scene's turn counter-clockwise)");
     m.table_scale = scale * (unit == "deg" ? M_PI / 180.0 : 1.0);
+    m.hold = s.boolean("hold", false,
+                       "hold the table's first value before its first time and its last value "
+                       "after its last; without it the table must cover 0 .. time.end");
     if (!doc && (unit == "m") != (m.dof != "rotation"))
       s.fail("unit", "'" + unit + "' does not match dof '" + m.dof + "'");
   }
@@ -372,10 +381,7 @@ void fail_at(const Scene& scene, int line, const std::string& key, const std::st
 }
 
 Scene load_scene(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(file.string() + ": cannot open scene file");
-  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-  return parse_scene(text, file, overrides);
+  return parse_scene(read_scene_file(file), file, overrides);
 }
 
 Scene parse_scene(const std::string& text, const std::filesystem::path& file,
@@ -383,15 +389,7 @@ Scene parse_scene(const std::string& text, const std::filesystem::path& file,
   ReadContext ctx;
   ctx.file = file.string();
   ctx.dir = file.parent_path();
-  YAML::Node root;
-  try {
-    root = YAML::Load(text);
-  } catch (const YAML::DeepRecursion& e) {
-    throw InputError(file.string() + ":" + std::to_string(e.mark.line + 1) +
-                     ": yaml: nested too deeply (" + std::to_string(e.depth()) + " levels)");
-  } catch (const YAML::ParserException& e) {
-    throw InputError(file.string() + ":" + std::to_string(e.mark.line + 1) + ": yaml: " + e.msg);
-  }
+  YAML::Node root = load_scene_yaml(text, file.string());
   if (!root.IsMap()) throw InputError(file.string() + ":1: scene: expected a block of keys");
   for (const auto& o : overrides) apply_override(root, o, ctx);
   Scene scene = read_scene(Section(root, "", ctx));

@@ -3,8 +3,14 @@
 #include "fsi/core/error.hpp"
 
 #include <algorithm>
+#include <cctype>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
+#include <fstream>
+#include <iterator>
 #include <sstream>
+#include <yaml-cpp/depthguard.h>
 
 namespace fsi::app {
 
@@ -39,10 +45,79 @@ std::string join(const std::vector<std::string>& items, const std::string& sep) 
 
 } // namespace
 
+std::string read_scene_file(const std::filesystem::path& file) {
+  namespace fs = std::filesystem;
+  const std::string name = file.string();
+  std::error_code ec;
+  const fs::file_status st = fs::status(file, ec);
+  if (ec || !fs::exists(st)) throw InputError(name + ": cannot open scene file");
+  if (fs::is_directory(st)) throw InputError(name + ": is a directory; give a scene file (.yaml)");
+  if (!fs::is_regular_file(st))
+    throw InputError(name + ": not a regular file (a FIFO, device or socket); give a scene file");
+  const std::uintmax_t size = fs::file_size(file, ec);
+  if (ec) throw InputError(name + ": cannot open scene file (" + ec.message() + ")");
+  if (size > kMaxSceneBytes)
+    throw InputError(name + ": " + std::to_string(size) + " bytes; a scene file is at most " +
+                     std::to_string(kMaxSceneBytes >> 20) + " MiB");
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw InputError(name + ": cannot open scene file (" + std::strerror(errno) + ")");
+  std::string text;
+  text.reserve(static_cast<std::size_t>(size));
+  text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  if (in.bad() || text.size() > kMaxSceneBytes) throw InputError(name + ": cannot read scene file");
+  return text;
+}
+
+YAML::Node load_scene_yaml(const std::string& text, const std::string& file) {
+  std::vector<YAML::Node> documents;
+  try {
+    documents = YAML::LoadAll(text);
+  } catch (const YAML::DeepRecursion& e) {
+    throw InputError(file + ":" + std::to_string(e.mark.line + 1) + ": yaml: nested too deeply (" +
+                     std::to_string(e.depth()) + " levels)");
+  } catch (const YAML::ParserException& e) {
+    throw InputError(file + ":" + std::to_string(e.mark.line + 1) + ": yaml: " + e.msg);
+  }
+  if (documents.empty()) return YAML::Node(YAML::NodeType::Null);
+  if (documents.size() > 1) {
+    // The line of the '---' that opens the second document: the last separator line at or
+    // before its content (a document of nothing but '---' has no mark).
+    const int content = documents[1].Mark().line + 1;
+    int second = content, line = 1;
+    for (std::size_t i = 0; i <= text.size(); ++i) {
+      const bool start = i == 0 || text[i - 1] == '\n';
+      if (start && text.compare(i, 3, "---") == 0 &&
+          (i + 3 >= text.size() || std::isspace(static_cast<unsigned char>(text[i + 3]))) &&
+          (content <= 0 || line <= content))
+        second = line;
+      if (i < text.size() && text[i] == '\n') ++line;
+    }
+    throw InputError(file + ":" + std::to_string(std::max(second, 1)) +
+                     ": yaml: a second YAML document (the scene is the document of line " +
+                     std::to_string(std::max(documents[0].Mark().line + 1, 1)) +
+                     "); a scene file holds one document: remove the '---' and what follows");
+  }
+  return documents[0];
+}
+
 Section::Section(YAML::Node node, std::string path, ReadContext& ctx, int key_line)
     : node_(std::move(node)), path_(std::move(path)), ctx_(&ctx), key_line_(key_line) {
-  if (!ctx.documenting() && node_.IsDefined() && !node_.IsNull() && !node_.IsMap())
+  if (ctx.documenting()) return;
+  if (node_.IsDefined() && !node_.IsNull() && !node_.IsMap())
     fail("", "expected a block of keys, got " + scalar_text(node_));
+  if (!node_.IsMap()) return;
+  // yaml-cpp keeps every pair of a map but node[key] finds only the first: look for repeats.
+  std::map<std::string, int> first_line;
+  for (auto it = node_.begin(); it != node_.end(); ++it) {
+    if (!it->first.IsScalar()) continue;
+    const std::string key = it->first.Scalar();
+    const int line = it->first.Mark().line + 1;
+    const auto [seen, inserted] = first_line.emplace(key, line);
+    if (!inserted)
+      throw InputError(ctx.file + ":" + std::to_string(std::max(line, 1)) + ": " + key_path(key) +
+                       ": duplicate key (first on line " +
+                       std::to_string(std::max(seen->second, 1)) + "); give each key once");
+  }
 }
 
 std::string Section::key_path(const std::string& key) const {
@@ -50,12 +125,22 @@ std::string Section::key_path(const std::string& key) const {
   return path_.empty() ? key : path_ + "." + key;
 }
 
+namespace {
+/// A `--set` argument as messages show it: at most 120 characters.
+std::string shown(const std::string& text) {
+  return text.size() > 120 ? text.substr(0, 120) + "..." : text;
+}
+} // namespace
+
 std::string Section::location(const std::string& key) const {
   const std::string full = key_path(key);
+  for (const auto& [path, text] : ctx_->created)
+    if (full == path || full.rfind(path + ".", 0) == 0 || full.rfind(path + "[", 0) == 0)
+      return ctx_->file + ": --set " + shown(text);
   for (const auto& [path, text] : ctx_->overrides)
     if (full == path || full.rfind(path + ".", 0) == 0 || full.rfind(path + "[", 0) == 0 ||
         path.rfind(full + ".", 0) == 0 || path.rfind(full + "[", 0) == 0)
-      return ctx_->file + ": --set " + path + "=" + text;
+      return ctx_->file + ": --set " + shown(path + "=" + text);
   int line = key_line_ > 0 ? key_line_ : 1;
   if (!key.empty() && node_.IsMap())
     for (auto it = node_.begin(); it != node_.end(); ++it)
@@ -101,6 +186,11 @@ void Section::missing(const std::string& key) const {
         hint = " (is '" + present + "' on line " + std::to_string(it->first.Mark().line + 1) +
                " a misspelling?)";
     }
+  const std::string full = key_path(key);
+  for (const auto& [path, text] : ctx_->created)
+    if (full.rfind(path + ".", 0) == 0 || full.rfind(path + "[", 0) == 0)
+      hint += " (block '" + path + "' is not in the scene file: --set " + shown(text) +
+              " created it, so give its required keys too)";
   fail(key, "required key missing" + hint);
 }
 

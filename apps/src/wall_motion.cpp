@@ -1,6 +1,10 @@
 #include "fsi_app/wall_motion.hpp"
 
+#include "fsi/core/error.hpp"
+#include "geometry_erp/csv_table.hpp"
+
 #include <algorithm>
+#include <sstream>
 
 namespace fsi::app {
 
@@ -15,6 +19,30 @@ std::shared_ptr<const erp::Motion> make_motion(const WallSpec& wall) {
   if (!rotation)
     return std::make_shared<erp::TableTranslation>(m.table.string(), m.table_scale * direction);
   return std::make_shared<erp::TableRotation>(m.table.string(), m.table_scale);
+}
+
+void check_motion_tables(const Scene& scene) {
+  for (std::size_t i = 0; i < scene.walls.size(); ++i) {
+    const WallSpec& w = scene.walls[i];
+    if (!w.motion || w.motion->kind != "table") continue;
+    const std::string key = "walls[" + std::to_string(i) + "].motion.table";
+    const std::string file = w.motion->table.string();
+    const int columns = 2; // time and one value (rotation, or translation along x or y)
+    erp::CsvTable table;
+    try {
+      table = erp::read_csv_table(file, columns);
+    } catch (const InputError& e) {
+      fail_at(scene, w.line, key, e.what());
+    }
+    const double first = table.columns[0].front(), last = table.columns[0].back();
+    const double end = scene.time.end;
+    if (!w.motion->hold && (first > 0.0 || last < end * (1.0 - 1e-12))) {
+      std::ostringstream what;
+      what << file << ": covers t = " << first << " .. " << last << " s, the run needs 0 .. " << end
+           << " s (extend it, lower time.end, or give hold: true to hold its end values)";
+      fail_at(scene, w.line, key, what.str());
+    }
+  }
 }
 
 const WallSpec& moving_wall(const Scene& scene, const std::string& name, int line,

@@ -4,7 +4,9 @@
 
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 
@@ -29,11 +31,27 @@ bool parse_number(const std::string& field, double& value) {
   return errno == 0 && end == s.c_str() + s.size() && std::isfinite(value);
 }
 
+/// At most 60 characters of `s` for a message, control and non-ASCII bytes as \xNN.
+std::string excerpt(const std::string& s) {
+  std::string out;
+  for (std::size_t i = 0; i < s.size() && out.size() < 60; ++i) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    if (c >= 0x20 && c < 0x7f) {
+      out += static_cast<char>(c);
+    } else {
+      char hex[8];
+      std::snprintf(hex, sizeof hex, "\\x%02x", c);
+      out += hex;
+    }
+  }
+  return out.size() < s.size() && out.size() >= 60 ? out + "..." : out;
+}
+
 } // namespace
 
 CsvTable read_csv_table(const std::string& path, int columns) {
   std::ifstream in(path);
-  if (!in) throw InputError(path + ":0: cannot open the motion table");
+  if (!in) throw InputError(path + ": cannot open the table (" + std::strerror(errno) + ")");
   CsvTable table;
   table.columns.assign(static_cast<std::size_t>(columns), {});
   std::string line;
@@ -56,7 +74,7 @@ CsvTable read_csv_table(const std::string& path, int columns) {
       continue;
     }
     header_allowed = false;
-    if (!numeric) throw InputError(where + "not a row of numbers: '" + content + "'");
+    if (!numeric) throw InputError(where + "not a row of numbers: '" + excerpt(content) + "'");
     if (fields.size() != static_cast<std::size_t>(columns))
       throw InputError(where + "expected " + std::to_string(columns) + " columns, found " +
                        std::to_string(fields.size()));
@@ -65,7 +83,8 @@ CsvTable read_csv_table(const std::string& path, int columns) {
     for (std::size_t c = 0; c < row.size(); ++c) table.columns[c].push_back(row[c]);
   }
   if (table.columns[0].size() < 2)
-    throw InputError(path + ":" + std::to_string(line_no) + ": fewer than two rows");
+    throw InputError(path + ": " + std::to_string(table.columns[0].size()) +
+                     " rows of numbers; a table needs at least two");
   return table;
 }
 

@@ -1,7 +1,11 @@
 #pragma once
 // SIGINT / SIGTERM during a run: the handler only records the signal; the driver finishes the
 // step in progress, writes a checkpoint, closes its output and returns (exit status 128 + signal:
-// 130 for SIGINT, 143 for SIGTERM). A second signal gets the default action (immediate end).
+// 130 for SIGINT, 143 for SIGTERM). A second signal ends the process at once with the same
+// status, after writing the run.json the driver left with set_last_words ("interrupted").
+#include <filesystem>
+#include <string>
+
 namespace fsi::app {
 
 class InterruptGuard {
@@ -14,6 +18,8 @@ public:
 
   /// The signal received since construction, or 0.
   int received() const;
+  /// What a second signal writes (to FILE.tmp, renamed to FILE) before it ends the process.
+  void set_last_words(const std::filesystem::path& file, const std::string& text);
 };
 
 } // namespace fsi::app

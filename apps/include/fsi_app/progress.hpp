@@ -3,6 +3,7 @@
 // otherwise.
 #include <chrono>
 #include <ostream>
+#include <string>
 
 namespace fsi::app {
 
@@ -13,9 +14,10 @@ public:
            double first_time = 0.0);
   void update(double time, long steps);
   void finish(double time, long steps);
+  /// The progress text: `t = T s  P %  R steps/s  ETA MmSSs`, P within [0, 100].
+  std::string line(double time, long steps) const;
 
 private:
-  std::string line(double time, long steps) const;
   double end_;
   long first_step_;
   double first_time_;

@@ -17,6 +17,10 @@ struct RunOptions {
   /// A checkpoint to continue from (empty: start at t = 0). The files in `out` are cut back to
   /// it and continued (docs/reliability.md).
   std::filesystem::path restart;
+  /// A fresh run into a folder that holds another run's files deletes exactly those files
+  /// (fields.h5, fields.xmf, probes.csv, run.json, coupling.csv, interface.h5,
+  /// checkpoint_*.h5, failed_state.h5); without it such a folder is refused (InputError).
+  bool overwrite = false;
 };
 
 /// How a run that did not throw ended.
@@ -31,11 +35,17 @@ struct RunResult {
 /// scene that names what this build cannot simulate, before any computation.
 std::vector<std::unique_ptr<Model>> build_models(const Scene& scene);
 
+/// The most steps a run may take (1e9): more is refused, see run_scene.
+double max_steps();
+
 /// Runs to scene.time.end, writing checkpoints as the scene asks. On SIGINT / SIGTERM it stops
 /// after the current step with a checkpoint. On fsi::RunError (a guard) it writes the failed
 /// state as a last frame and as DIR/failed_state.h5, records the failure in run.json, keeps
 /// everything written so far and rethrows for the caller's exit status. Throws InputError for a
-/// restart checkpoint that does not fit the scene or its output files.
+/// restart checkpoint that does not fit the scene or its output files, a fixed step that needs
+/// more than max_steps() steps, an output folder that another run holds (flock on DIR/.lock) or
+/// that holds another run's files (unless options.overwrite), or that cannot be written.
+/// A Courant step so small that more than max_steps() steps would remain is a RunError.
 RunResult run_scene(const Scene& scene, std::vector<std::unique_ptr<Model>>& models,
                     const RunOptions& options);
 

@@ -45,6 +45,7 @@ struct MotionSpec {
   double phase = 0.0;          ///< rad
   std::filesystem::path table; ///< CSV time,value (value in the unit of `unit`)
   double table_scale = 1.0;    ///< multiplies the table values into rad or m (unit and scale)
+  bool hold = false;           ///< a table shorter than the run holds its end values
 };
 
 struct WallSpec {

@@ -7,6 +7,7 @@
 #include "fsi/core/types.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <filesystem>
 #include <limits>
 #include <map>
@@ -31,17 +32,33 @@ struct KeyDoc {
 
 /// Shared state of one scene read: file name, overridden paths, documentation collector.
 struct ReadContext {
-  std::string file;                               ///< scene path as given, for messages
-  std::filesystem::path dir;                      ///< relative file paths resolve here
-  std::map<std::string, std::string> overrides;   ///< dotted path -> `--set` text
+  std::string file;                             ///< scene path as given, for messages
+  std::filesystem::path dir;                    ///< relative file paths resolve here
+  std::map<std::string, std::string> overrides; ///< dotted path -> `--set` text
+  /// Blocks an override created because the file has none: dotted path -> the whole `--set`
+  /// argument (a later "required key missing" inside says so).
+  std::map<std::string, std::string> created;
   std::unique_ptr<std::vector<KeyDoc>> collector; ///< non-null in documentation mode
 
   bool documenting() const { return collector != nullptr; }
 };
 
+/// Largest scene file read (a FIFO, a device or a huge file is refused before reading).
+constexpr std::uintmax_t kMaxSceneBytes = 16u << 20;
+
+/// The text of a scene file: a regular file of at most kMaxSceneBytes. InputError `FILE: what`
+/// for a missing file, a directory, a FIFO or device, an unreadable or oversized file.
+std::string read_scene_file(const std::filesystem::path& file);
+
+/// Parses a scene's text as exactly one YAML document. InputError `FILE:LINE: yaml: what` on a
+/// syntax error and on a second document (naming the lines of both).
+YAML::Node load_scene_yaml(const std::string& text, const std::string& file);
+
 class Section {
 public:
   /// `key_line` is the 1-based line of the key that opened this block (0 for the top level).
+  /// A key given twice in the block is an InputError naming both lines (yaml-cpp would keep
+  /// the first silently).
   Section(YAML::Node node, std::string path, ReadContext& ctx, int key_line = 0);
 
   double real(const std::string& key, Range range, const std::string& doc);

@@ -12,8 +12,8 @@ struct CsvTable {
 
 /// Reads `path`: comma-separated numbers, `columns` per line. Blank lines and lines starting with
 /// '#' are skipped; the first other line may be a header (text that is not a number). At least two
-/// rows. Throws fsi::InputError "PATH:LINE: what" on an unreadable file, a bad or short line, or a
-/// time that does not increase.
+/// rows. Throws fsi::InputError "PATH:LINE: what" on a bad or short line or a time that does not
+/// increase, "PATH: what" on an unreadable file or fewer than two rows (never line 0).
 CsvTable read_csv_table(const std::string& path, int columns);
 
 } // namespace fsi::erp

@@ -24,6 +24,14 @@ inline bool is_sequential() {
 inline int num_threads() {
   return is_sequential() ? 1 : omp_get_max_threads();
 }
+/// Processors this process may run on (its CPU affinity mask), the most threads worth asking for.
+inline int available_processors() {
+  return omp_get_num_procs();
+}
+/// Threads of the following parallel loops (n >= 1).
+inline void set_num_threads(int n) {
+  omp_set_num_threads(n);
+}
 
 /// f(i) for i in [0, n), static schedule (the same thread sees the same indices every call).
 template <class F> void parallel_for(std::size_t n, F&& f) {
