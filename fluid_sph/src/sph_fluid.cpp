@@ -54,6 +54,7 @@ void SphOptions::validate() const {
     fail("advection_cfl", advection_cfl, "(0, 1]");
   if (!(acoustic_cfl > 0.0 && acoustic_cfl <= 1.0)) fail("acoustic_cfl", acoustic_cfl, "(0, 1]");
   if (!(fixed_dt >= 0.0)) fail("fixed_dt", fixed_dt, ">= 0");
+  if (!(damping_time >= 0.0)) fail("damping_time", damping_time, ">= 0");
   if (!(rho_min_factor > 0.0 && rho_min_factor < 1.0))
     fail("rho_min_factor", rho_min_factor, "(0, 1)");
   if (!(rho_max_factor > 1.0)) fail("rho_max_factor", rho_max_factor, "> 1");
@@ -204,10 +205,13 @@ void SphFluid::fill_walls(const std::vector<WallPolyline>& walls) {
 }
 
 void SphFluid::set_velocities(const std::vector<Vec2>& v) {
-  if (v.size() != fluid_.size())
+  if (v.size() != fluid_.size() || removed_ > 0)
     throw InputError("fluid_sph: " + std::to_string(v.size()) + " initial velocities for " +
                      std::to_string(fluid_.size()) + " particles");
-  for (std::size_t i = 0; i < v.size(); ++i) fluid_.vx[i] = v[i].x(), fluid_.vy[i] = v[i].y();
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const Vec2& w = v[fluid_.id[i]];
+    fluid_.vx[i] = w.x(), fluid_.vy[i] = w.y();
+  }
   // The viscous force and Dt depend on the velocities: redo this advection step's start.
   prior_acceleration();
   compute_advection_dt();
@@ -238,6 +242,14 @@ void SphFluid::advance(double dt) {
   move_walls(dt);
   first_half(dt);
   second_half(dt);
+  if (options_.damping_time > 0.0 && t_ < options_.damping_time) {
+    const double T = options_.damping_time;
+    const double keep = std::max(0.0, 1.0 - dt * 20.0 / T * (1.0 - t_ / T));
+    parallel_for(fluid_.size(), [&](std::size_t i) {
+      fluid_.vx[i] *= keep;
+      fluid_.vy[i] *= keep;
+    });
+  }
   t_ += dt;
   ++step_;
   elapsed_ += dt;

@@ -34,6 +34,9 @@ struct SphOptions {
   /// leaving it is removed and counted.
   Vec2 domain_min = Vec2::Zero(), domain_max = Vec2::Zero();
   bool periodic_x = false, periodic_y = false;
+  /// Artificial damping for settling runs (hydrostatic): for t < damping_time the velocities are
+  /// damped at rate 20 / T_d (1 - t / T_d) after each acoustic step (0: off).
+  double damping_time = 0.0;
   /// Density guard: a RunError names the particle when rho leaves [lo, hi] rho0.
   double rho_min_factor = 0.5, rho_max_factor = 1.5;
 

@@ -81,7 +81,8 @@ public:
   SphFluid(const SphOptions& options, const std::vector<Vec2>& positions,
            const std::vector<WallPolyline>& walls = {});
 
-  /// Initial velocities (before the first advance), one per particle in the current order.
+  /// Initial velocities (before the first advance), one per particle in the order of the
+  /// constructor's positions (particle id; the particles themselves are sorted by cell).
   void set_velocities(const std::vector<Vec2>& v);
   /// Motion of a wall group from now on (its dummies follow it from the next acoustic step).
   void set_wall_motion(int group, WallMotion motion);
