@@ -1,0 +1,183 @@
+#pragma once
+// Weakly compressible Riemann-SPH fluid with reverse kernel gradient correction (RKGC paper,
+// eqs. 1-5, 15-24; ../shared/sph-method-notes.md gives the reference code's forms and signs).
+//
+// Dual-criteria time stepping (method notes, "Fluid step"). An advection step Dt holds several
+// acoustic steps dt; pair data (neighbours, e_ij, dW_ij), the correction matrices B_i, the prior
+// acceleration (gravity + viscous) and V_i are frozen over one Dt. Per acoustic step:
+//   first half:  rho += drho dt/2, p = c0^2 (rho - rho0), x += v dt/2, v += (F_p/m + a_prior) dt
+//   second half: x += v dt/2, drho = continuity (eq. 3), rho += drho dt/2.
+// When an acoustic step fills Dt: wrap periodic positions, remove escaped particles, sort by cell,
+// rebuild pairs, re-initialise density, B (eqs. 19, 21-22), viscous force, transport-velocity shift
+// (eq. 24) and the next Dt.
+//
+// Pair conventions: e_ij = (r_i - r_j) / r_ij, grad_i W_ij = dW_ij e_ij with dW <= 0.
+// Walls: polylines with the fluid on the LEFT of each directed segment a -> b, filled with 4 layers
+// of dummy particles at dp; one-sided Riemann wall (eqs. 15-17, method notes' dummy state).
+#include "fluid_sph/options.hpp"
+#include "particles/field_set.hpp"
+#include "particles/kernels.hpp"
+#include "particles/periodic_grid.hpp"
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace fsi {
+class StateArchive;
+}
+
+namespace fsi::sph {
+
+/// A rigid wall: points in order (fluid on the left of each segment), open or closed, and a
+/// motion group (walls of one group move together; group 0 without a motion is static).
+struct WallPolyline {
+  std::vector<Vec2> points;
+  bool closed = false;
+  int group = 0;
+};
+
+/// Rigid motion of a wall group at time t: a material point X (reference position) is at
+/// x = X_c + d + R(theta) (X - X_c), with velocity v_c + omega x r and acceleration
+/// a_c + alpha x r - omega^2 r, r = R(theta) (X - X_c).
+struct RigidMotion {
+  Vec2 centre = Vec2::Zero(); ///< X_c, reference
+  Vec2 d = Vec2::Zero(), v = Vec2::Zero(), a = Vec2::Zero();
+  double theta = 0.0, omega = 0.0, alpha = 0.0;
+};
+using WallMotion = std::function<RigidMotion(double t)>;
+
+/// The fluid's struct-of-arrays particles (registered in one FieldSet).
+struct FluidParticles {
+  particles::FieldSet fields;
+  std::vector<std::uint32_t>& id;
+  std::vector<double>&x, &y, &vx, &vy, &rho, &drho, &vol;
+  std::vector<double>&b00, &b01, &b11; ///< symmetric correction matrix B~ (eq. 21)
+  std::vector<double>&apx, &apy;       ///< prior acceleration: gravity + viscous, per Dt
+  std::vector<double>&ax, &ay;         ///< total acceleration of the last acoustic step
+  std::vector<double>&xb, &yb;         ///< positions at the last pair build
+  std::vector<double>&p, &det_a;       ///< scratch: pressure; |A_i| (WKGC indicator)
+  FluidParticles();
+  std::size_t size() const { return fields.size(); }
+};
+
+/// Dummy wall particles (4 layers at dp).
+struct WallParticles {
+  particles::FieldSet fields;
+  std::vector<std::uint32_t>& group;
+  std::vector<double>&x, &y, &x0, &y0;     ///< current, reference
+  std::vector<double>&nx, &ny, &nx0, &ny0; ///< unit normal into the fluid, current and reference
+  std::vector<double>&vx, &vy, &ax, &ay;   ///< velocity and acceleration averaged over the step
+  std::vector<double>&xb, &yb;             ///< positions at the last pair build
+  WallParticles();
+  std::size_t size() const { return fields.size(); }
+};
+
+class SphFluid {
+public:
+  /// Fluid particles start at rest at `positions`; walls are filled with dummy particles.
+  /// Throws fsi::InputError on invalid options or positions outside the domain.
+  SphFluid(const SphOptions& options, const std::vector<Vec2>& positions,
+           const std::vector<WallPolyline>& walls = {});
+
+  /// Initial velocities (before the first advance), one per particle in the order of the
+  /// constructor's positions (particle id; the particles themselves are sorted by cell).
+  void set_velocities(const std::vector<Vec2>& v);
+  /// Motion of a wall group from now on (its dummies follow it from the next acoustic step).
+  void set_wall_motion(int group, WallMotion motion);
+
+  /// The acoustic step allowed now: min(acoustic criterion, what is left of the current Dt), or
+  /// fixed_dt.
+  double next_dt() const;
+  /// One acoustic step of length dt (0 < dt <= what is left of Dt). When it fills the current Dt
+  /// the per-Dt work runs. Throws RunError (particle id, step, time) on NaN, a density out of
+  /// range or a particle behind a wall.
+  void advance(double dt);
+  /// Acoustic steps of next_dt() until time() reaches t_end (with a dual-criteria step the last
+  /// one is shortened to land on it; the advection step then goes on at the next advance).
+  void advance_to(double t_end);
+
+  double time() const { return t_; }
+  long steps() const { return step_; }
+  long advection_steps() const { return builds_; }
+  double advection_dt() const { return Dt_; }
+  std::size_t removed() const { return removed_; }
+  double mean_neighbours() const;
+  double sigma0() const { return sigma0_; }
+  const SphOptions& options() const { return options_; }
+  const FluidParticles& particles() const { return fluid_; }
+  const WallParticles& walls() const { return walls_; }
+
+  // Probes.
+  double kinetic_energy() const;
+  Vec2 momentum() const;
+  /// Kernel-weighted (Shepard) pressure at a point, from the fluid particles within 2h; 0 if none.
+  double pressure_at(const Vec2& point) const;
+  /// Largest x of the fluid particles (the surge front of a dam break).
+  double surge_front() const;
+  /// Pressure of the last step, p = c0^2 (rho - rho0), per particle.
+  double pressure(std::size_t i) const { return fluid_.p[i]; }
+
+  /// A copy of the whole fluid state for iterative coupling; restore() returns to it exactly.
+  struct State {
+    particles::FieldSet::Snapshot fluid, walls;
+    double t = 0, Dt = 0, elapsed = 0, dt_acoustic = 0;
+    long step = 0, builds = 0, sub = 0, subs = 0;
+    std::size_t removed = 0;
+  };
+  void save(State& into) const;
+  void restore(const State& from);
+
+  /// Checkpoint under prefix + name: a run continued from it is bitwise the uninterrupted one.
+  void write_state(StateArchive& archive, const std::string& prefix) const;
+  /// Throws InputError naming the key when the archive does not fit this fluid.
+  void read_state(const StateArchive& archive, const std::string& prefix);
+
+  // The operators, exposed for the consistency tests (eqs. 18-19): on the current pairs.
+  /// grad psi_i by the RKGC form sum_j (psi_i B_j + psi_j B_i) grad W_ij V_j (eq. 18).
+  Vec2 rkgc_gradient(std::size_t i, const std::vector<double>& psi) const;
+  /// B_i sum_j (psi_j - psi_i) grad W_ij V_j (first-order consistent for any B_i = A_i^-1).
+  Vec2 corrected_difference_gradient(std::size_t i, const std::vector<double>& psi) const;
+  /// sum_j (psi_j - psi_i) grad W_ij V_j (uncorrected).
+  Vec2 plain_difference_gradient(std::size_t i, const std::vector<double>& psi) const;
+
+private:
+  void fill_walls(const std::vector<WallPolyline>& walls);
+  void per_advection_step(); // wrap, remove, sort, pairs, density, B, viscous, transport, Dt
+  void build_pairs();        // from xb, yb (fluid) and xb, yb (walls)
+  void reinitialise_density();
+  void correction_matrices();
+  void prior_acceleration();
+  void transport_shift();
+  void compute_advection_dt();
+  void compute_acoustic_dt();
+  void move_walls(double dt);
+  void first_half(double dt);
+  void second_half(double dt);
+  void guard(long step, double t) const;
+  std::string where(std::size_t i, long step, double t) const;
+
+  SphOptions options_;
+  particles::WendlandC2 kernel_;
+  double h_, sigma0_, mass_;
+  FluidParticles fluid_;
+  WallParticles walls_;
+  std::vector<WallMotion> motions_; // by group, empty: static
+  particles::PeriodicGrid grid_, wall_grid_;
+  // Pairs, compressed rows: fluid i's fluid neighbours are pj_[pstart_[i] .. pstart_[i+1]).
+  std::vector<std::uint32_t> pstart_, pj_, wstart_, wj_;
+  std::vector<double> pex_, pey_, pdw_, pr_; // e_ij, dW_ij, r_ij
+  std::vector<double> wex_, wey_, wdw_, wr_;
+  std::vector<double> scratch_;
+  std::vector<std::uint32_t> count_;
+  std::vector<std::uint8_t> keep_;
+  double t_ = 0.0, Dt_ = 0.0, elapsed_ = 0.0, dt_acoustic_ = 0.0;
+  long step_ = 0, builds_ = 0, sub_ = 0, subs_ = 0; // fixed dt: subs_ acoustic steps per Dt
+  std::size_t removed_ = 0;
+};
+
+/// Lattice points (x0 + (i + 1/2) dp, y0 + (j + 1/2) dp) inside the rectangle [lo, hi].
+std::vector<Vec2> fill_rectangle(const Vec2& lo, const Vec2& hi, double dp);
+
+} // namespace fsi::sph
