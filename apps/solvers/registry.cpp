@@ -3,6 +3,7 @@
 // The first entry of each list is the default `type`.
 #include "emps/emps_plugin.hpp"
 #include "fem/fem_plugin.hpp"
+#include "tlsph/tlsph_plugin.hpp"
 
 #include <algorithm>
 
@@ -14,7 +15,7 @@ std::vector<FluidPlugin>& fluids() {
   return list;
 }
 std::vector<StructurePlugin>& structures() {
-  static std::vector<StructurePlugin> list{fem_plugin::plugin()};
+  static std::vector<StructurePlugin> list{fem_plugin::plugin(), tlsph_plugin::plugin()};
   return list;
 }
 } // namespace

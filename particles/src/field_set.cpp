@@ -3,6 +3,7 @@
 #include "fsi/core/parallel.hpp"
 #include "fsi/core/state_archive.hpp"
 
+#include <algorithm>
 #include <cassert>
 
 namespace fsi::particles {
@@ -38,13 +39,15 @@ template <class T> void restore_all(T& fields, const auto& from) {
 } // namespace
 
 std::vector<double>& FieldSet::add_real(const std::string& name, bool state) {
-  assert(names().end() == std::find(names().begin(), names().end(), name));
+  assert(!has(name) && "FieldSet: a field of this name is registered already");
   return reals_.push_back({name, state, std::vector<double>(size_, 0.0)}), reals_.back().values;
 }
 std::vector<std::uint8_t>& FieldSet::add_flag(const std::string& name, bool state) {
+  assert(!has(name) && "FieldSet: a field of this name is registered already");
   return flags_.push_back({name, state, std::vector<std::uint8_t>(size_, 0)}), flags_.back().values;
 }
 std::vector<std::uint32_t>& FieldSet::add_index(const std::string& name, bool state) {
+  assert(!has(name) && "FieldSet: a field of this name is registered already");
   return indices_.push_back({name, state, std::vector<std::uint32_t>(size_, 0)}),
          indices_.back().values;
 }
@@ -112,6 +115,11 @@ void FieldSet::read_state(const StateArchive& a, const std::string& prefix) {
 std::size_t FieldSet::bytes_per_particle() const {
   return reals_.size() * sizeof(double) + flags_.size() * sizeof(std::uint8_t) +
          indices_.size() * sizeof(std::uint32_t);
+}
+
+bool FieldSet::has(const std::string& name) const {
+  const auto all = names();
+  return std::find(all.begin(), all.end(), name) != all.end();
 }
 
 std::vector<std::string> FieldSet::names() const {

@@ -51,8 +51,9 @@ public:
 
   /// Bytes per entry over every registered array.
   std::size_t bytes_per_particle() const;
-  /// Names of the registered arrays, in registration order.
+  /// Names of the registered arrays (reals, then flags, then indices, each in registration order).
   std::vector<std::string> names() const;
+  bool has(const std::string& name) const;
 
 private:
   template <class T> struct Field {

@@ -1,0 +1,165 @@
+#include "tlsph/tlsph_model.hpp"
+
+#include "fsi/core/error.hpp"
+#include "fsi/core/state_archive.hpp"
+#include "fsi_app/wall_motion.hpp"
+#include "geometry_erp/motion.hpp"
+
+#include <algorithm>
+
+namespace fsi::app::tlsph_plugin {
+
+namespace {
+
+bool inside(const Box& b, const Vec2& X) {
+  return X.x() >= b.min.x() && X.x() <= b.max.x() && X.y() >= b.min.y() && X.y() <= b.max.y();
+}
+
+std::unique_ptr<tlsph::TlsphSolid> build_solid(const Scene& scene, const StructureBlock& block) {
+  const TlsphSpec& t = block.as<TlsphSpec>();
+  tlsph::TlsphOptions o;
+  o.material.youngs_modulus = t.youngs_modulus;
+  o.material.poisson_ratio = t.poisson_ratio;
+  o.material.density = t.density;
+  o.material.plane = t.plane == "stress" ? materials::PlaneModel::plane_stress
+                                         : materials::PlaneModel::plane_strain;
+  o.material.model = t.material_model == "neo_hookean"
+                         ? materials::MaterialModel::neo_hookean
+                         : materials::MaterialModel::saint_venant_kirchhoff;
+  o.dp = t.dp;
+  o.h_factor = t.h_factor;
+  o.gravity = scene.gravity;
+  o.pair_damping = t.pair_damping;
+  o.mass_damping = t.mass_damping;
+  o.interface_tags = t.interface;
+  std::shared_ptr<const erp::Motion> motion;
+  Vec2 pivot = Vec2::Zero();
+  if (!t.clamped_motion.empty()) {
+    const WallSpec& wall = moving_wall(scene, t.clamped_motion, block.line,
+                                       "structures." + block.name + ".clamped_motion");
+    motion = make_motion(wall);
+    pivot = wall.motion->pivot;
+  }
+  for (const Box& box : t.clamped) {
+    tlsph::Clamp c;
+    c.contains = [box](const Vec2& X) { return inside(box, X); };
+    if (motion) { // the wall's rigid motion at X0
+      c.position = [motion, pivot](const Vec2& X, double time) {
+        return erp::rigid_node_state(motion->at(time), pivot, X).x;
+      };
+      c.velocity = [motion, pivot](const Vec2& X, double time) {
+        return erp::rigid_node_state(motion->at(time), pivot, X).v;
+      };
+    }
+    o.clamps.push_back(std::move(c));
+  }
+  try {
+    return std::make_unique<tlsph::TlsphSolid>(
+        tlsph::fill_rectangle(t.region.min, t.region.max, t.dp), std::move(o));
+  } catch (const InputError& e) {
+    fail_at(scene, block.line, "structures." + block.name, e.what());
+  }
+}
+
+} // namespace
+
+// S (eq. 67 of the EMPS paper; eq. 12's a^{F:S} of the RKGC paper): nodal loads on the surface
+// particles in, their motion out; the solid sub-steps within the coupler's step.
+class TlsphModel::Adapter final : public coupling::StructureSolver {
+public:
+  explicit Adapter(TlsphModel& model) : model_(model) {}
+  void initialize() override {}
+  void set_interface_loads(const coupling::InterfaceLoads& loads) override {
+    model_.solid().set_interface_loads(loads.f);
+  }
+  void advance(double t, double dt) override { model_.advance(t, dt); }
+  coupling::InterfaceMotion interface_motion() const override {
+    const tlsph::TlsphSolid& s = *model_.solid_;
+    return {s.interface_positions(), s.interface_velocities(), s.interface_accelerations()};
+  }
+  void save_state() override { saved_ = model_.solid().save(); }
+  void restore_state() override { model_.solid().restore(saved_); }
+  void write_state(StateArchive& archive) const override { model_.write_state(archive); }
+  void read_state(const StateArchive& archive) override { model_.read_state(archive); }
+
+private:
+  TlsphModel& model_;
+  tlsph::TlsphState saved_;
+};
+
+TlsphModel::TlsphModel(const Scene& scene, const StructureBlock& block)
+    : name_(block.name), region_(block.as<TlsphSpec>().region),
+      solid_(build_solid(scene, block)), interface_(solid_->interface_mesh()),
+      adapter_(std::make_unique<Adapter>(*this)) {
+  for (const auto& p : scene.output.probes)
+    if (p.structure == block.name)
+      probe_particles_.emplace_back(p.name, solid_->nearest_particle(*p.point));
+}
+
+TlsphModel::~TlsphModel() = default;
+
+coupling::StructureSolver& TlsphModel::coupling_solver() {
+  return *adapter_;
+}
+
+std::vector<Polygon> TlsphModel::occupied_area() const {
+  const Vec2 lo = region_.min, hi = region_.max;
+  return {{lo, {hi.x(), lo.y()}, hi, {lo.x(), hi.y()}}};
+}
+
+void TlsphModel::advance(double time, double dt) {
+  substeps_ += solid_->advance(time, dt);
+  ++steps_;
+}
+
+void TlsphModel::write_frame(FieldsFile& file, const std::vector<std::string>& fields) const {
+  const std::size_t n = solid_->size();
+  xy_.resize(2 * n), u_.resize(2 * n), v_.resize(2 * n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2 x = solid_->position(i), u = solid_->displacement(i), v = solid_->velocity(i);
+    xy_[2 * i] = x.x(), xy_[2 * i + 1] = x.y();
+    u_[2 * i] = u.x(), u_[2 * i + 1] = u.y();
+    v_[2 * i] = v.x(), v_[2 * i + 1] = v.y();
+  }
+  const std::vector<double> von_mises = solid_->von_mises(), det_F = solid_->det_F();
+  auto wanted = [&](const char* f) {
+    return std::find(fields.begin(), fields.end(), f) != fields.end();
+  };
+  std::vector<GridField> out;
+  if (wanted("displacement")) out.push_back({"displacement", 2, u_.data()});
+  if (wanted("velocity")) out.push_back({"velocity", 2, v_.data()});
+  if (wanted("von_mises")) out.push_back({"von_mises", 1, von_mises.data()});
+  if (wanted("det_F")) out.push_back({"det_F", 1, det_F.data()});
+  file.write_grid(name_, xy_, out);
+}
+
+std::optional<double> TlsphModel::probe(const ProbeSpec& probe) const {
+  for (const auto& [name, i] : probe_particles_)
+    if (name == probe.name)
+      return solid_->displacement(i)[probe.quantity == "displacement_y" ? 1 : 0];
+  return std::nullopt;
+}
+
+void TlsphModel::report(JsonObject& run) const {
+  JsonObject s;
+  s.add("particles", static_cast<long long>(solid_->size()))
+      .add("interface_nodes", static_cast<long long>(interface_.node_count()))
+      .add("substeps_mean",
+           steps_ ? static_cast<double>(substeps_) / static_cast<double>(steps_) : 0.0);
+  run.add("structure_" + name_, s);
+}
+
+void TlsphModel::write_state(StateArchive& archive) const {
+  const std::string prefix = "structures/" + name_ + "/";
+  solid_->write_state(archive, prefix);
+  archive.put("run/" + prefix + "substeps", std::vector<std::int64_t>{steps_, substeps_});
+}
+
+void TlsphModel::read_state(const StateArchive& archive) {
+  const std::string prefix = "structures/" + name_ + "/";
+  solid_->read_state(archive, prefix);
+  const auto& c = archive.integers("run/" + prefix + "substeps", 2);
+  steps_ = c[0], substeps_ = c[1];
+}
+
+} // namespace fsi::app::tlsph_plugin

@@ -1,0 +1,47 @@
+#pragma once
+// The TL-SPH solid of one scene entry (structures[].type: tlsph): particles filling its region,
+// clamped boxes (fixed or following a wall's motion), gravity and, coupled, the interface loads
+// on its surface particles; also the coupler's S through the interface those particles describe.
+#include "fsi_app/solver_plugin.hpp"
+#include "solid_tlsph/solid.hpp"
+#include "tlsph/tlsph_spec.hpp"
+
+#include <memory>
+
+namespace fsi::app::tlsph_plugin {
+
+class TlsphModel final : public StructurePart {
+public:
+  /// Throws InputError (scene file and line) for options the solver refuses.
+  TlsphModel(const Scene& scene, const StructureBlock& block);
+  ~TlsphModel() override;
+  void advance(double time, double dt) override;
+  void declare(FieldsFile&) const override {}
+  /// The particles as a point grid named after the structure.
+  void write_frame(FieldsFile& file, const std::vector<std::string>& fields) const override;
+  /// displacement_x / displacement_y of the particle nearest the probe's point.
+  std::optional<double> probe(const ProbeSpec& probe) const override;
+  void report(JsonObject& run) const override;
+  /// The solid and its counters under "structures/<name>/".
+  void write_state(StateArchive& archive) const override;
+  void read_state(const StateArchive& archive) override;
+  const std::string& name() const override { return name_; }
+  const InterfaceMesh& interface_mesh() const override { return interface_; }
+  std::vector<Polygon> occupied_area() const override;
+  coupling::StructureSolver& coupling_solver() override;
+
+  tlsph::TlsphSolid& solid() { return *solid_; }
+
+private:
+  class Adapter;
+  std::string name_;
+  Box region_;
+  std::unique_ptr<tlsph::TlsphSolid> solid_;
+  InterfaceMesh interface_;
+  std::vector<std::pair<std::string, std::size_t>> probe_particles_; // probe name -> particle
+  std::unique_ptr<Adapter> adapter_;
+  long steps_ = 0, substeps_ = 0;
+  mutable std::vector<double> xy_, u_, v_; // output buffers
+};
+
+} // namespace fsi::app::tlsph_plugin

@@ -1,0 +1,64 @@
+// The TL-SPH solid's scene keys, each declared once where it is read.
+#include "tlsph/tlsph_spec.hpp"
+
+namespace fsi::app::tlsph_plugin {
+
+namespace {
+
+Box read_box(Section s, const std::string& what) {
+  Box b;
+  b.min = s.vec2("min", "lower-left corner of " + what + ", m");
+  b.max = s.vec2("max", "upper-right corner, m");
+  if (!s.context().documenting() && (b.max.x() <= b.min.x() || b.max.y() <= b.min.y()))
+    s.fail("max", "must lie above and right of min");
+  s.finish();
+  return b;
+}
+
+} // namespace
+
+std::shared_ptr<const SolverSpec> read_tlsph(Section& s) {
+  auto spec = std::make_shared<TlsphSpec>();
+  TlsphSpec& t = *spec;
+  const bool doc = s.context().documenting();
+  t.region = read_box(s.required_block("region", "the rectangle filled with solid particles at "
+                                                 "spacing dp from its lower-left corner; sides "
+                                                 "tagged bottom, right, top, left"),
+                      "the solid");
+  t.dp = s.real("dp", Range::positive(), "particle spacing dp_S, m");
+  t.h_factor = s.real("h_factor", 1.15, Range::closed(1.0, 2.0),
+                      "smoothing length h = h_factor dp (Wendland C2, support 2h)");
+  auto mat = s.required_block("material", "hyperelastic material (materials/)");
+  t.youngs_modulus = mat.real("youngs_modulus", Range::positive(), "E, Pa");
+  t.poisson_ratio = mat.real("poisson_ratio", Range::open(-1.0, 0.5), "nu");
+  t.density = mat.real("density", Range::positive(), "rho_s, kg/m^3");
+  t.plane = mat.choice("plane", {"strain", "stress"}, "strain", "2D idealisation");
+  t.material_model = mat.choice("model", {"saint_venant_kirchhoff", "neo_hookean"},
+                                "saint_venant_kirchhoff", "strain energy");
+  if (!doc && t.material_model == "neo_hookean" && t.plane != "strain")
+    mat.fail("model", "neo_hookean is implemented in plane strain only (plane: strain)");
+  mat.finish();
+  for (auto& box : s.list("clamped", "boxes: particles whose reference position lies inside are "
+                                     "held (or follow clamped_motion)"))
+    t.clamped.push_back(read_box(box, "a clamped box"));
+  t.clamped_motion = s.text("clamped_motion", "",
+                            "name of a wall with a motion: the clamped particles follow its rigid "
+                            "motion; empty: they stay fixed");
+  t.interface = s.names("interface", {}, "sides wetted by the fluid (bottom, right, top, left)");
+  t.pair_damping = s.real("pair_damping", 0.0, Range::non_negative(),
+                          "pairwise viscosity nu_d = pair_damping c_s h / 2 (0: off)");
+  t.mass_damping = s.real("mass_damping", 0.0, Range::non_negative(),
+                          "mass-proportional damping a -= mass_damping v, 1/s (0: off)");
+  if (!doc) {
+    const Vec2 size = t.region.max - t.region.min;
+    if (t.dp * 3.0 > size.minCoeff())
+      s.fail("dp", "fewer than 3 particles across the region (" + std::to_string(size.x()) +
+                       " x " + std::to_string(size.y()) + " m)");
+    for (const auto& tag : t.interface)
+      if (tag != "bottom" && tag != "right" && tag != "top" && tag != "left")
+        s.fail("interface", "unknown side '" + tag + "' (bottom, right, top, left)");
+  }
+  return spec;
+}
+
+} // namespace fsi::app::tlsph_plugin
