@@ -22,9 +22,10 @@ struct Result {
 
 constexpr double P = 1.0e4; // w / L ~ 2e-4: geometrically linear
 
-Result static_tip(int layers) {
+Result static_tip(int layers, GradientCorrection c = GradientCorrection::linear) {
   Beam b;
   b.layers = layers;
+  b.correction = c;
   auto o = beam_options(b);
   o.mass_damping = 2.0 * b.omega1();
   TlsphSolid s(beam_geometry(b), o);
@@ -83,4 +84,25 @@ TEST_CASE("tlsph: static cantilever within 2 % of Timoshenko and FEM at H/dp = 8
   INFO("H/dp = 8: TL-SPH " << r8.w << ", Timoshenko " << r8.ref << ", FEM " << w_fem);
   CHECK_THAT(r8.w, Catch::Matchers::WithinRel(r8.ref, 0.02));
   CHECK_THAT(r8.w, Catch::Matchers::WithinRel(w_fem, 0.02));
+}
+
+TEST_CASE("tlsph quadratic: static cantilever within 2 % of Timoshenko and FEM at H/dp = 8",
+          "[solid_tlsph][cantilever][quadratic][slow]") {
+  const Result r8 = static_tip(8, GradientCorrection::quadratic);
+  const double w_fem = fem_deflection(r8.x);
+  INFO("H/dp = 8, quadratic: TL-SPH " << r8.w << " (" << r8.error() << " vs Timoshenko " << r8.ref
+                                      << "), FEM " << w_fem);
+  CHECK_THAT(r8.w, Catch::Matchers::WithinRel(r8.ref, 0.02));
+  CHECK_THAT(r8.w, Catch::Matchers::WithinRel(w_fem, 0.02));
+}
+
+TEST_CASE("tlsph quadratic: static cantilever converges (H/dp = 4 8 16)",
+          "[solid_tlsph][cantilever][quadratic][slow]") {
+  const auto q = GradientCorrection::quadratic;
+  const Result r4 = static_tip(4, q), r8 = static_tip(8, q), r16 = static_tip(16, q);
+  INFO("quadratic, error vs Timoshenko: H/dp = 4 " << r4.error() << ", 8 " << r8.error() << ", 16 "
+                                                   << r16.error());
+  CHECK(std::abs(r16.error()) < std::abs(r8.error()));
+  CHECK(std::abs(r8.error()) < std::abs(r4.error()));
+  CHECK(std::abs(r16.error()) < 0.02);
 }
