@@ -51,6 +51,9 @@ void validate(const TlsphOptions& o) {
     const auto& c = o.clamps[k];
     if (!c.contains)
       throw InputError("tlsph: clamps[" + std::to_string(k) + "].contains is not set");
+    if (c.odd_image && (c.position || !(c.face_normal.norm() > 0.0)))
+      throw InputError("tlsph: clamps[" + std::to_string(k) +
+                       "]: odd_image needs a fixed clamp and a nonzero face_normal");
     if (static_cast<bool>(c.position) != static_cast<bool>(c.velocity))
       throw InputError("tlsph: clamps[" + std::to_string(k) +
                        "]: set both position and velocity of a moving clamp, or neither");
@@ -102,6 +105,7 @@ TlsphSolid::TlsphSolid(SolidGeometry geometry, TlsphOptions options)
   }
   build_reference();
   build_interface(geometry);
+  build_images();
   prescribe(0.0);
   compute_stress();
   compute_acceleration();
@@ -286,6 +290,24 @@ void TlsphSolid::build_interface(const SolidGeometry& geometry) {
     interface_mesh_.edges.push_back({k - 1, k - 1, 0});
 }
 
+void TlsphSolid::build_images() {
+  const std::size_t n = size();
+  image_partner_.assign(n, none), image_of_.assign(n, none);
+  for (std::size_t g = 0; g < n; ++g) {
+    if (!clamped_[g] || !options_.clamps[clamped_[g] - 1u].odd_image) continue;
+    const Clamp& c = options_.clamps[clamped_[g] - 1u];
+    const Vec2 nrm = c.face_normal.normalized(), X(X0_[g], Y0_[g]);
+    const Vec2 M = X - 2.0 * (X - c.face_point).dot(nrm) * nrm; // mirror position
+    const std::size_t p = nearest_particle(M);
+    if (clamped_[p] || (Vec2(X0_[p], Y0_[p]) - M).norm() > 1e-6 * options_.dp)
+      throw InputError("tlsph: clamped particle " + std::to_string(g) +
+                       " has no free particle at its mirror position (odd_image)");
+    image_partner_[g] = p, image_of_[p] = g;
+    images_ = true;
+  }
+  image_ax_.assign(n, 0.0), image_ay_.assign(n, 0.0);
+}
+
 InterfaceMesh TlsphSolid::interface_mesh() const {
   return interface_mesh_;
 }
@@ -294,7 +316,11 @@ void TlsphSolid::prescribe(double t) {
   parallel_for(size(), [&](std::size_t i) {
     if (!clamped_[i]) return;
     const Clamp& c = options_.clamps[clamped_[i] - 1u];
-    if (c.position) {
+    if (c.odd_image) { // u_g = -u_p, v_g = -v_p
+      const std::size_t p = image_partner_[i];
+      x_[i] = X0_[i] - (x_[p] - X0_[p]), y_[i] = Y0_[i] - (y_[p] - Y0_[p]);
+      vx_[i] = -vx_[p], vy_[i] = -vy_[p], ax_[i] = -ax_[p], ay_[i] = -ay_[p];
+    } else if (c.position) {
       const Vec2 X(X0_[i], Y0_[i]);
       const Vec2 x = c.position(X, t), v = c.velocity(X, t);
       // a by a central difference of the prescribed velocity (output only: clamped particles
@@ -355,6 +381,10 @@ void TlsphSolid::compute_stress() {
           PB00_[a] = PB01_[a] = PB10_[a] = PB11_[a] = 0.0;
           return a;
         }
+        if (image_partner_[a] != none) { // an odd image carries no strain energy
+          PB00_[a] = PB01_[a] = PB10_[a] = PB11_[a] = 0.0;
+          return none;
+        }
         const Mat2 E = 0.5 * (F.transpose() * F - Mat2::Identity()); // eq. 9
         // eq. 7, P B0 (quadratic: P itself, the correction is in g~_ab)
         const Mat2 P = F * law.stress(E);
@@ -380,7 +410,8 @@ void TlsphSolid::compute_acceleration() {
   const std::size_t bad = parallel_reduce(
       size(), none,
       [&](std::size_t a) {
-        if (clamped_[a]) return none;
+        const bool image = image_partner_[a] != none;
+        if (clamped_[a] && !image) return none;
         // eq. 12 per unit mass: (1 / rho0) sum_b (P_a B0_a + P_b B0_b) grad0 W_ab V_b
         double sx = 0.0, sy = 0.0, dx = 0.0, dy = 0.0;
         if (quadratic_) {
@@ -403,6 +434,10 @@ void TlsphSolid::compute_acceleration() {
             dx += (vx_[b] - vx_[a]) * pair_dwr_[p], dy += (vy_[b] - vy_[a]) * pair_dwr_[p];
           }
         }
+        if (image) { // the stress force on the image (its own P is zero), for its partner
+          image_ax_[a] = sx * inv_rho0, image_ay_[a] = sy * inv_rho0;
+          return none;
+        }
         const double inv_m = inv_rho0 / V0_[a];
         ax_[a] = sx * inv_rho0 + gx + fx_[a] * inv_m + 2.0 * nu_d * dx - gamma * vx_[a];
         ay_[a] = sy * inv_rho0 + gy + fy_[a] * inv_m + 2.0 * nu_d * dy - gamma * vy_[a];
@@ -415,6 +450,15 @@ void TlsphSolid::compute_acceleration() {
       << Y0_[bad] << ") in step " << step_ << " at t = " << time_;
     throw RunError(s.str());
   }
+  if (!images_) return;
+  // f_p = -dPi/dx_p with x_g = X_g - (x_p - X_p): minus the force on the image g, per unit
+  // mass of p.
+  parallel_for(size(), [&](std::size_t p) {
+    const std::size_t g = image_of_[p];
+    if (g == none) return;
+    const double r = V0_[g] / V0_[p];
+    ax_[p] -= r * image_ax_[g], ay_[p] -= r * image_ay_[g];
+  });
 }
 
 double TlsphSolid::stable_dt() const {
@@ -542,6 +586,7 @@ void TlsphSolid::set_positions(const std::vector<Vec2>& x) {
   if (x.size() != size()) throw InputError("tlsph: set_positions needs size() entries");
   for (std::size_t i = 0; i < size(); ++i)
     if (!clamped_[i]) x_[i] = x[i].x(), y_[i] = x[i].y();
+  if (images_) prescribe(time_); // the odd images follow their partners
   compute_stress();
   compute_acceleration();
 }
@@ -550,6 +595,7 @@ void TlsphSolid::set_velocities(const std::vector<Vec2>& v) {
   if (v.size() != size()) throw InputError("tlsph: set_velocities needs size() entries");
   for (std::size_t i = 0; i < size(); ++i)
     if (!clamped_[i]) vx_[i] = v[i].x(), vy_[i] = v[i].y();
+  if (images_) prescribe(time_);
   compute_acceleration();
 }
 
@@ -610,7 +656,8 @@ TlsphEnergies TlsphSolid::energies() const {
         const Mat2 F = deformation_gradient(i);
         const Mat2 E = 0.5 * (F.transpose() * F - Mat2::Identity());
         const double m = rho0_ * V0_[i];
-        if (clamped_[i]) return Sum{0.0, V0_[i] * law.energy(E), 0.0};
+        if (clamped_[i])
+          return Sum{0.0, image_partner_[i] != none ? 0.0 : V0_[i] * law.energy(E), 0.0};
         return Sum{0.5 * m * (vx_[i] * vx_[i] + vy_[i] * vy_[i]), V0_[i] * law.energy(E),
                    m * (g.x() * (x_[i] - X0_[i]) + g.y() * (y_[i] - Y0_[i]))};
       },

@@ -350,3 +350,51 @@ TEST_CASE("tlsph quadratic: forces conserve momentum and angular momentum, are -
   INFO("corner particle: f = " << f.transpose() << ", -dPi/dx = " << -grad.transpose());
   CHECK((f + grad).norm() < 1e-5 * f.norm());
 }
+
+TEST_CASE("tlsph odd-image clamp: images mirror their partners, forces are -dPi/dx",
+          "[solid_tlsph][image]") {
+  for (const auto c : {GradientCorrection::linear, GradientCorrection::quadratic}) {
+    TlsphOptions o;
+    o.dp = 0.01;
+    o.gradient_correction = c;
+    Clamp clamp;
+    clamp.contains = [](const Vec2& X) { return X.x() < 0.0; };
+    clamp.odd_image = true;
+    o.clamps.push_back(clamp);
+    TlsphSolid s(fill_rectangle({-0.04, 0.0}, {0.2, 0.08}, o.dp), o);
+    std::vector<Vec2> x(s.size());
+    for (std::size_t i = 0; i < s.size(); ++i) {
+      const Vec2 X = s.reference_position(i);
+      x[i] = X + Vec2(0.002 * X.x() * X.y() + 0.001 * std::sin(30.0 * X.y()),
+                      0.003 * X.x() * X.x() + 0.001 * std::cos(20.0 * X.x()));
+    }
+    s.set_positions(x);
+    // u of a clamped particle = -u of the free particle at its mirror position.
+    double err = 0.0;
+    for (std::size_t i = 0; i < s.size(); ++i) {
+      if (!s.clamped(i)) continue;
+      const Vec2 X = s.reference_position(i);
+      const std::size_t p = s.nearest_particle({-X.x(), X.y()});
+      err = std::max(err, (s.displacement(i) + s.displacement(p)).norm());
+    }
+    CHECK(err == 0.0);
+    // The force on a particle next to the clamp is minus the gradient of the strain energy of
+    // the free particles, images moving with it (central difference).
+    const std::size_t k = s.nearest_particle({0.005, 0.075});
+    const double rho = o.material.density;
+    const Vec2 f = rho * s.volume(k) * s.acceleration(k);
+    const double d = 1e-7;
+    Vec2 grad;
+    for (int q = 0; q < 2; ++q) {
+      auto xp = x, xm = x;
+      xp[k][q] += d, xm[k][q] -= d;
+      s.set_positions(xp);
+      const double ep = s.energies().strain;
+      s.set_positions(xm);
+      grad[q] = (ep - s.energies().strain) / (2.0 * d);
+    }
+    INFO("correction " << static_cast<int>(c) << ": f = " << f.transpose()
+                       << ", -dPi/dx = " << -grad.transpose());
+    CHECK((f + grad).norm() < 1e-5 * f.norm());
+  }
+}

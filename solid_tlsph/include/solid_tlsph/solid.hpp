@@ -31,6 +31,15 @@ struct Clamp {
   std::function<bool(const Vec2& X0)> contains;
   std::function<Vec2(const Vec2& X0, double t)> position;
   std::function<Vec2(const Vec2& X0, double t)> velocity;
+  /// Fixed clamps only: impose u = 0 on the clamp's face, the plane through `face_point` with
+  /// normal `face_normal`, instead of at the clamped particles: each clamped particle moves as
+  /// the odd image of the free particle at its mirror position, u_g = -u_p (so u = 0 on the
+  /// plane), carries no strain energy, and the force on p gains minus the force on its image
+  /// (f_p = -dPi/dx_p with x_g(x_p)). A clamped particle whose mirror position holds no free
+  /// particle (to 1e-6 dp) is an InputError.
+  bool odd_image = false;
+  Vec2 face_point{0.0, 0.0};
+  Vec2 face_normal{1.0, 0.0};
 };
 
 /// How the reference kernel gradient is corrected (eq. 14 or its second-order extension).
@@ -181,6 +190,8 @@ private:
   /// g~_ab and the reverse pair index of GradientCorrection::quadratic.
   void build_quadratic();
   void build_interface(const SolidGeometry& geometry);
+  /// Partners of the Clamp::odd_image particles.
+  void build_images();
   /// F (eq. 13) and P B0 per particle; throws RunError on det F <= 0 or NaN.
   void compute_stress();
   /// a = eq. 12 + gravity + external + damping (needs compute_stress()).
@@ -212,6 +223,11 @@ private:
   std::vector<double> pair_qx_, pair_qy_;
   std::vector<std::uint32_t> pair_rev_;
   bool quadratic_ = false;
+  // Clamp::odd_image: the free partner of each image particle (none = not an image), and the
+  // image of each free particle; scratch force per unit mass of the images.
+  std::vector<std::size_t> image_partner_, image_of_;
+  std::vector<double> image_ax_, image_ay_;
+  bool images_ = false;
   double dt_scale_ = 1.0; // stable-step factor of the quadratic correction (build_quadratic)
 
   std::vector<std::uint32_t> loaded_;    // free particles with a nonzero external force
