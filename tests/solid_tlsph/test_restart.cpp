@@ -22,8 +22,9 @@ bool same_bits(const TlsphSolid& a, const TlsphSolid& b) {
 }
 
 /// The plate at H/dp = 4 with a tip load on the interface, damping on (every term active).
-std::unique_ptr<TlsphSolid> loaded_plate(GradientCorrection c = GradientCorrection::linear) {
-  const Beam b = plate(4, c);
+std::unique_ptr<TlsphSolid> loaded_plate(GradientCorrection c = GradientCorrection::linear,
+                                         bool odd_image = false) {
+  const Beam b = plate(4, c, odd_image);
   auto o = beam_options(b);
   o.pair_damping = 0.1, o.mass_damping = 0.5, o.gravity = {0.0, -9.81};
   auto s = plate_solid(b, 0.01, o);
@@ -107,6 +108,28 @@ TEST_CASE("tlsph quadratic: checkpoint continues bitwise, two threads give the s
   REQUIRE(fsi::num_threads() >= 2);
   fsi::set_sequential(true);
   auto c = loaded_plate(q);
+  c->advance(0.0, 0.01);
+  c->advance(c->time(), 0.01);
+  fsi::set_sequential(false);
+  CHECK(same_bits(*a, *c));
+}
+
+TEST_CASE("tlsph quadratic + odd-image clamp: checkpoint continues bitwise, two threads give the "
+          "sequential run",
+          "[solid_tlsph][threads][restart][quadratic][image]") {
+  const auto q = GradientCorrection::quadratic;
+  auto a = loaded_plate(q, true);
+  a->advance(0.0, 0.01);
+  fsi::StateArchive archive;
+  a->write_state(archive, "solid/");
+  a->advance(a->time(), 0.01);
+  auto b = loaded_plate(q, true);
+  b->read_state(archive, "solid/");
+  b->advance(b->time(), 0.01);
+  CHECK(same_bits(*a, *b));
+  REQUIRE(fsi::num_threads() >= 2);
+  fsi::set_sequential(true);
+  auto c = loaded_plate(q, true);
   c->advance(0.0, 0.01);
   c->advance(c->time(), 0.01);
   fsi::set_sequential(false);
