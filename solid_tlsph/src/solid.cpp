@@ -1,5 +1,6 @@
 #include "solid_tlsph/solid.hpp"
 
+#include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -43,11 +44,16 @@ void validate(const TlsphOptions& o) {
   require(o.pair_damping >= 0.0, "pair_damping", o.pair_damping, ">= 0");
   require(o.mass_damping >= 0.0, "mass_damping", o.mass_damping, ">= 0");
   require(o.max_neighbors >= 8, "max_neighbors", o.max_neighbors, ">= 8");
+  if (o.gradient_correction == GradientCorrection::quadratic && !o.kernel_correction)
+    throw InputError("tlsph: gradient_correction = quadratic needs kernel_correction = true");
   require(o.gravity.allFinite(), "gravity", o.gravity.transpose(), "finite");
   for (std::size_t k = 0; k < o.clamps.size(); ++k) {
     const auto& c = o.clamps[k];
     if (!c.contains)
       throw InputError("tlsph: clamps[" + std::to_string(k) + "].contains is not set");
+    if (c.odd_image && (c.position || !(c.face_normal.norm() > 0.0)))
+      throw InputError("tlsph: clamps[" + std::to_string(k) +
+                       "]: odd_image needs a fixed clamp and a nonzero face_normal");
     if (static_cast<bool>(c.position) != static_cast<bool>(c.velocity))
       throw InputError("tlsph: clamps[" + std::to_string(k) +
                        "]: set both position and velocity of a moving clamp, or neither");
@@ -99,6 +105,7 @@ TlsphSolid::TlsphSolid(SolidGeometry geometry, TlsphOptions options)
   }
   build_reference();
   build_interface(geometry);
+  build_images();
   prescribe(0.0);
   compute_stress();
   compute_acceleration();
@@ -154,6 +161,72 @@ void TlsphSolid::build_reference() {
   if (bad != none)
     throw InputError("tlsph: particle " + std::to_string(bad) +
                      " has a singular moment matrix (eq. 14): too few neighbours in 2h");
+  quadratic_ = options_.gradient_correction == GradientCorrection::quadratic;
+  if (quadratic_) build_quadratic();
+}
+
+void TlsphSolid::build_quadratic() {
+  // Weighted least squares of u_b - u_a by c . p(d), d = (X_b - X_a) / h, with the monomials
+  // p = (d_x, d_y, d_x^2 / 2, d_x d_y, d_y^2 / 2) and the weights of eq. 14, w_ab = |dW_ab| /
+  // r_ab V_b (with p = (d_x, d_y) alone this is exactly B0: g~_ab = B0_a grad0 W_ab V_b). The
+  // gradient is (c_0, c_1) / h, so g~_ab = w_ab [A_a^-1 p_ab]_(0,1) / h, A_a = sum w p p^T.
+  using Vec5 = Eigen::Matrix<double, 5, 1>;
+  using Mat5 = Eigen::Matrix<double, 5, 5>;
+  const std::size_t n = size(), pairs = pair_b_.size();
+  pair_qx_.resize(pairs), pair_qy_.resize(pairs), pair_rev_.resize(pairs);
+  auto monomials = [&](std::size_t a, std::size_t b) {
+    const double dx = (X0_[b] - X0_[a]) / h_, dy = (Y0_[b] - Y0_[a]) / h_;
+    Vec5 p;
+    p << dx, dy, 0.5 * dx * dx, dx * dy, 0.5 * dy * dy;
+    return p;
+  };
+  std::size_t bad = none;
+  for (std::size_t a = 0; a < n; ++a) {
+    Mat5 A = Mat5::Zero();
+    for (std::uint32_t q = pair_start_[a]; q < pair_start_[a + 1]; ++q) {
+      const Vec5 p = monomials(a, pair_b_[q]);
+      A += pair_dwr_[q] * h_ * h_ * p * p.transpose(); // w scaled by h^2: A ~ 1
+    }
+    const Eigen::PartialPivLU<Mat5> lu(A);
+    if (!(lu.rcond() > 1e-10)) {
+      if (bad == none) bad = a;
+      continue;
+    }
+    for (std::uint32_t q = pair_start_[a]; q < pair_start_[a + 1]; ++q) {
+      const Vec5 c = lu.solve(monomials(a, pair_b_[q]));
+      pair_qx_[q] = pair_dwr_[q] * h_ * c(0), pair_qy_[q] = pair_dwr_[q] * h_ * c(1);
+    }
+  }
+  if (bad != none)
+    throw InputError("tlsph: particle " + std::to_string(bad) +
+                     " has a singular quadratic moment matrix: too few neighbours in 2h for "
+                     "gradient_correction = quadratic");
+  // The one-sided quadratic stencils of surface and corner particles have larger weights than
+  // B0's, and the highest frequency grows with them: the stable step is divided by the ratio
+  // of the largest sum_b |g~_ab| to the largest sum_b |B0_a grad0 W_ab V_b|.
+  double sum_q = 0.0, sum_l = 0.0;
+  for (std::size_t a = 0; a < n; ++a) {
+    double sq = 0.0, sl = 0.0;
+    for (std::uint32_t q = pair_start_[a]; q < pair_start_[a + 1]; ++q) {
+      sq += std::hypot(pair_qx_[q], pair_qy_[q]);
+      sl += std::hypot(B00_[a] * pair_gx_[q] + B01_[a] * pair_gy_[q],
+                       B10_[a] * pair_gx_[q] + B11_[a] * pair_gy_[q]);
+    }
+    sum_q = std::max(sum_q, sq), sum_l = std::max(sum_l, sl);
+  }
+  dt_scale_ = std::min(1.0, sum_l / sum_q);
+  // The reverse pair (b, a) in b's row (rows are sorted by neighbour, the list is symmetric).
+  for (std::size_t a = 0; a < n; ++a)
+    for (std::uint32_t q = pair_start_[a]; q < pair_start_[a + 1]; ++q) {
+      const std::uint32_t b = pair_b_[q];
+      const auto first = pair_b_.begin() + pair_start_[b],
+                 last = pair_b_.begin() + pair_start_[b + 1];
+      const auto it = std::lower_bound(first, last, static_cast<std::uint32_t>(a));
+      if (it == last || *it != a)
+        throw InputError("tlsph: the reference neighbour list is not symmetric at particle " +
+                         std::to_string(a)); // cannot happen with one radius
+      pair_rev_[q] = static_cast<std::uint32_t>(it - pair_b_.begin());
+    }
 }
 
 void TlsphSolid::build_interface(const SolidGeometry& geometry) {
@@ -217,6 +290,24 @@ void TlsphSolid::build_interface(const SolidGeometry& geometry) {
     interface_mesh_.edges.push_back({k - 1, k - 1, 0});
 }
 
+void TlsphSolid::build_images() {
+  const std::size_t n = size();
+  image_partner_.assign(n, none), image_of_.assign(n, none);
+  for (std::size_t g = 0; g < n; ++g) {
+    if (!clamped_[g] || !options_.clamps[clamped_[g] - 1u].odd_image) continue;
+    const Clamp& c = options_.clamps[clamped_[g] - 1u];
+    const Vec2 nrm = c.face_normal.normalized(), X(X0_[g], Y0_[g]);
+    const Vec2 M = X - 2.0 * (X - c.face_point).dot(nrm) * nrm; // mirror position
+    const std::size_t p = nearest_particle(M);
+    if (clamped_[p] || (Vec2(X0_[p], Y0_[p]) - M).norm() > 1e-6 * options_.dp)
+      throw InputError("tlsph: clamped particle " + std::to_string(g) +
+                       " has no free particle at its mirror position (odd_image)");
+    image_partner_[g] = p, image_of_[p] = g;
+    images_ = true;
+  }
+  image_ax_.assign(n, 0.0), image_ay_.assign(n, 0.0);
+}
+
 InterfaceMesh TlsphSolid::interface_mesh() const {
   return interface_mesh_;
 }
@@ -225,7 +316,11 @@ void TlsphSolid::prescribe(double t) {
   parallel_for(size(), [&](std::size_t i) {
     if (!clamped_[i]) return;
     const Clamp& c = options_.clamps[clamped_[i] - 1u];
-    if (c.position) {
+    if (c.odd_image) { // u_g = -u_p, v_g = -v_p
+      const std::size_t p = image_partner_[i];
+      x_[i] = X0_[i] - (x_[p] - X0_[p]), y_[i] = Y0_[i] - (y_[p] - Y0_[p]);
+      vx_[i] = -vx_[p], vy_[i] = -vy_[p], ax_[i] = -ax_[p], ay_[i] = -ay_[p];
+    } else if (c.position) {
       const Vec2 X(X0_[i], Y0_[i]);
       const Vec2 x = c.position(X, t), v = c.velocity(X, t);
       // a by a central difference of the prescribed velocity (output only: clamped particles
@@ -243,6 +338,17 @@ Mat2 TlsphSolid::deformation_gradient(std::size_t a) const {
   // eq. 13: F_a = (sum_b (u_b - u_a) (x) grad0 W_ab V_b) B0_a + I
   const double ux_a = x_[a] - X0_[a], uy_a = y_[a] - Y0_[a];
   double G00 = 0.0, G01 = 0.0, G10 = 0.0, G11 = 0.0;
+  if (quadratic_) { // F_a = I + sum_b (u_b - u_a) (x) g~_ab
+    for (std::uint32_t p = pair_start_[a]; p < pair_start_[a + 1]; ++p) {
+      const std::uint32_t b = pair_b_[p];
+      const double dux = x_[b] - X0_[b] - ux_a, duy = y_[b] - Y0_[b] - uy_a;
+      G00 += dux * pair_qx_[p], G01 += dux * pair_qy_[p];
+      G10 += duy * pair_qx_[p], G11 += duy * pair_qy_[p];
+    }
+    Mat2 F;
+    F << 1.0 + G00, G01, G10, 1.0 + G11;
+    return F;
+  }
   for (std::uint32_t p = pair_start_[a]; p < pair_start_[a + 1]; ++p) {
     const std::uint32_t b = pair_b_[p];
     const double dux = x_[b] - X0_[b] - ux_a, duy = y_[b] - Y0_[b] - uy_a;
@@ -275,8 +381,14 @@ void TlsphSolid::compute_stress() {
           PB00_[a] = PB01_[a] = PB10_[a] = PB11_[a] = 0.0;
           return a;
         }
+        if (image_partner_[a] != none) { // an odd image carries no strain energy
+          PB00_[a] = PB01_[a] = PB10_[a] = PB11_[a] = 0.0;
+          return none;
+        }
         const Mat2 E = 0.5 * (F.transpose() * F - Mat2::Identity()); // eq. 9
-        const Mat2 PB = F * law.stress(E) * correction_matrix(a);    // eq. 7, P B0
+        // eq. 7, P B0 (quadratic: P itself, the correction is in g~_ab)
+        const Mat2 P = F * law.stress(E);
+        const Mat2 PB = quadratic_ ? P : Mat2(P * correction_matrix(a));
         PB00_[a] = PB(0, 0), PB01_[a] = PB(0, 1), PB10_[a] = PB(1, 0), PB11_[a] = PB(1, 1);
         return none;
       },
@@ -298,15 +410,33 @@ void TlsphSolid::compute_acceleration() {
   const std::size_t bad = parallel_reduce(
       size(), none,
       [&](std::size_t a) {
-        if (clamped_[a]) return none;
+        const bool image = image_partner_[a] != none;
+        if (clamped_[a] && !image) return none;
         // eq. 12 per unit mass: (1 / rho0) sum_b (P_a B0_a + P_b B0_b) grad0 W_ab V_b
         double sx = 0.0, sy = 0.0, dx = 0.0, dy = 0.0;
-        for (std::uint32_t p = pair_start_[a]; p < pair_start_[a + 1]; ++p) {
-          const std::uint32_t b = pair_b_[p];
-          const double g0 = pair_gx_[p], g1 = pair_gy_[p];
-          sx += (PB00_[a] + PB00_[b]) * g0 + (PB01_[a] + PB01_[b]) * g1;
-          sy += (PB10_[a] + PB10_[b]) * g0 + (PB11_[a] + PB11_[b]) * g1;
-          dx += (vx_[b] - vx_[a]) * pair_dwr_[p], dy += (vy_[b] - vy_[a]) * pair_dwr_[p];
+        if (quadratic_) {
+          // f_a / (rho0 V_a) = (1 / rho0) sum_b (P_a g~_ab - (V_b / V_a) P_b g~_ba)
+          const double inv_Va = 1.0 / V0_[a];
+          for (std::uint32_t p = pair_start_[a]; p < pair_start_[a + 1]; ++p) {
+            const std::uint32_t b = pair_b_[p], r = pair_rev_[p];
+            const double ga0 = pair_qx_[p], ga1 = pair_qy_[p];
+            const double s_b = V0_[b] * inv_Va, gb0 = s_b * pair_qx_[r], gb1 = s_b * pair_qy_[r];
+            sx += PB00_[a] * ga0 + PB01_[a] * ga1 - PB00_[b] * gb0 - PB01_[b] * gb1;
+            sy += PB10_[a] * ga0 + PB11_[a] * ga1 - PB10_[b] * gb0 - PB11_[b] * gb1;
+            dx += (vx_[b] - vx_[a]) * pair_dwr_[p], dy += (vy_[b] - vy_[a]) * pair_dwr_[p];
+          }
+        } else {
+          for (std::uint32_t p = pair_start_[a]; p < pair_start_[a + 1]; ++p) {
+            const std::uint32_t b = pair_b_[p];
+            const double g0 = pair_gx_[p], g1 = pair_gy_[p];
+            sx += (PB00_[a] + PB00_[b]) * g0 + (PB01_[a] + PB01_[b]) * g1;
+            sy += (PB10_[a] + PB10_[b]) * g0 + (PB11_[a] + PB11_[b]) * g1;
+            dx += (vx_[b] - vx_[a]) * pair_dwr_[p], dy += (vy_[b] - vy_[a]) * pair_dwr_[p];
+          }
+        }
+        if (image) { // the stress force on the image (its own P is zero), for its partner
+          image_ax_[a] = sx * inv_rho0, image_ay_[a] = sy * inv_rho0;
+          return none;
         }
         const double inv_m = inv_rho0 / V0_[a];
         ax_[a] = sx * inv_rho0 + gx + fx_[a] * inv_m + 2.0 * nu_d * dx - gamma * vx_[a];
@@ -320,6 +450,15 @@ void TlsphSolid::compute_acceleration() {
       << Y0_[bad] << ") in step " << step_ << " at t = " << time_;
     throw RunError(s.str());
   }
+  if (!images_) return;
+  // f_p = -dPi/dx_p with x_g = X_g - (x_p - X_p): minus the force on the image g, per unit
+  // mass of p.
+  parallel_for(size(), [&](std::size_t p) {
+    const std::size_t g = image_of_[p];
+    if (g == none) return;
+    const double r = V0_[g] / V0_[p];
+    ax_[p] -= r * image_ax_[g], ay_[p] -= r * image_ay_[g];
+  });
 }
 
 double TlsphSolid::stable_dt() const {
@@ -338,7 +477,7 @@ double TlsphSolid::stable_dt() const {
   const double a = std::sqrt(m.a2), v = std::sqrt(m.v2);
   double dt = h_ / (c_s_ + v);
   if (a > 0.0) dt = std::min(dt, std::sqrt(h_ / a));
-  return options_.cfl * dt;
+  return options_.cfl * dt_scale_ * dt;
 }
 
 void TlsphSolid::substep(double dt) {
@@ -447,6 +586,7 @@ void TlsphSolid::set_positions(const std::vector<Vec2>& x) {
   if (x.size() != size()) throw InputError("tlsph: set_positions needs size() entries");
   for (std::size_t i = 0; i < size(); ++i)
     if (!clamped_[i]) x_[i] = x[i].x(), y_[i] = x[i].y();
+  if (images_) prescribe(time_); // the odd images follow their partners
   compute_stress();
   compute_acceleration();
 }
@@ -455,6 +595,7 @@ void TlsphSolid::set_velocities(const std::vector<Vec2>& v) {
   if (v.size() != size()) throw InputError("tlsph: set_velocities needs size() entries");
   for (std::size_t i = 0; i < size(); ++i)
     if (!clamped_[i]) vx_[i] = v[i].x(), vy_[i] = v[i].y();
+  if (images_) prescribe(time_);
   compute_acceleration();
 }
 
@@ -515,7 +656,8 @@ TlsphEnergies TlsphSolid::energies() const {
         const Mat2 F = deformation_gradient(i);
         const Mat2 E = 0.5 * (F.transpose() * F - Mat2::Identity());
         const double m = rho0_ * V0_[i];
-        if (clamped_[i]) return Sum{0.0, V0_[i] * law.energy(E), 0.0};
+        if (clamped_[i])
+          return Sum{0.0, image_partner_[i] != none ? 0.0 : V0_[i] * law.energy(E), 0.0};
         return Sum{0.5 * m * (vx_[i] * vx_[i] + vy_[i] * vy_[i]), V0_[i] * law.energy(E),
                    m * (g.x() * (x_[i] - X0_[i]) + g.y() * (y_[i] - Y0_[i]))};
       },

@@ -21,6 +21,8 @@ struct Beam {
   int layers = 8;            ///< particles through the thickness
   int clamp_layers = 4;      ///< clamped columns at x < 0
   double clamp_length = 0.0; ///< > 0: the clamped length instead of clamp_layers dp
+  GradientCorrection correction = GradientCorrection::linear;
+  bool odd_image = false; ///< the clamp imposes u = 0 on its face x = 0 (Clamp::odd_image)
   double dp() const { return H / layers; }
   double E_bending() const {
     return plane == fsi::materials::PlaneModel::plane_strain ? E / (1.0 - nu * nu) : E;
@@ -40,7 +42,11 @@ inline TlsphOptions beam_options(const Beam& b) {
   o.material.density = b.rho;
   o.material.plane = b.plane;
   o.dp = b.dp();
-  o.clamps.push_back({[](const Vec2& X) { return X.x() < 0.0; }, {}, {}});
+  o.gradient_correction = b.correction;
+  Clamp clamp;
+  clamp.contains = [](const Vec2& X) { return X.x() < 0.0; };
+  clamp.odd_image = b.odd_image; // face x = 0, normal (1, 0)
+  o.clamps.push_back(clamp);
   o.interface_tags = {"right"};
   return o;
 }

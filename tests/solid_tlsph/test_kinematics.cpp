@@ -21,6 +21,7 @@ TlsphSolid free_block(bool correction) {
 
 struct PatchErrors {
   double interior = 0.0, surface = 0.0;
+  double energy_ratio = 0.0; ///< bending only: sum V W(F) / the exact strain energy
 };
 
 /// Max |F - (I + A)| over interior and surface particles for u = A X + c.
@@ -209,9 +210,10 @@ TEST_CASE("tlsph: polygon fill and a moving clamp", "[solid_tlsph][geometry]") {
 namespace {
 /// Max |F_xx - 1 - exact| over the interior (2h from the surface) and over the top and bottom
 /// surface layers, for the pure-bending field u = (-k x y, k x^2 / 2) on [0, 0.4] x [-0.04, 0.04].
-PatchErrors bending(double dp) {
+PatchErrors bending(double dp, GradientCorrection c = GradientCorrection::linear) {
   TlsphOptions o;
   o.dp = dp;
+  o.gradient_correction = c;
   TlsphSolid s(fill_rectangle({0.0, -0.04}, {0.4, 0.04}, dp), o);
   const double k = 1e-3;
   std::vector<Vec2> x(s.size());
@@ -228,6 +230,12 @@ PatchErrors bending(double dp) {
     if (0.04 - std::abs(X.y()) > 2.0 * s.h()) e.interior = std::max(e.interior, err);
     if (0.04 - std::abs(X.y()) < dp) e.surface = std::max(e.surface, err);
   }
+  // Exact energy of the field (plane strain St. Venant–Kirchhoff, E_xx = -k y to 1e-5
+  // relative): (lambda / 2 + mu) k^2 L H^3 / 12 with L = 0.4, H = 0.08.
+  const double Y = o.material.youngs_modulus, nu = o.material.poisson_ratio;
+  const double lambda = Y * nu / ((1.0 + nu) * (1.0 - 2.0 * nu)), mu = Y / (2.0 * (1.0 + nu));
+  const double exact = (0.5 * lambda + mu) * k * k * 0.4 * std::pow(0.08, 3) / 12.0;
+  e.energy_ratio = s.energies().strain / exact;
   return e;
 }
 } // namespace
@@ -240,9 +248,153 @@ TEST_CASE("tlsph: a bending field is exact inside, first-order wrong at the surf
   // stiffness (docs/solid_tlsph.md: the cantilever and plate are too soft by O(dp^2)).
   const PatchErrors c = bending(0.01), f = bending(0.005);
   INFO("interior " << c.interior << ", " << f.interior << "; surface " << c.surface << ", "
-                   << f.surface << " (k = 1e-3, |strain| at the surface 3.5e-5)");
+                   << f.surface << " (k = 1e-3, |strain| at the surface 3.5e-5); energy / exact "
+                   << c.energy_ratio << " (H/dp = 8), " << f.energy_ratio << " (16)");
+  // The nodal-integrated bending energy is below even the lattice midpoint rule's
+  // 1 - (dp/H)^2 (the quadratic correction reaches that, test below).
+  CHECK(c.energy_ratio < 1.0 - 1.0 / 64.0 - 0.02);
   CHECK(c.interior < 1e-12); // round-off on F ~ 1, as in the patch test
   CHECK(f.interior < 1e-12);
   CHECK_THAT(c.surface / f.surface, Catch::Matchers::WithinRel(2.0, 1e-6));
   CHECK(c.surface > 0.05 * 3.5e-5); // the surface fibre strain is > 5 % low at dp = H / 8
+}
+
+// --- GradientCorrection::quadratic ---
+
+namespace {
+TlsphSolid quadratic_block() {
+  TlsphOptions o;
+  o.dp = 0.01;
+  o.gradient_correction = GradientCorrection::quadratic;
+  return TlsphSolid(fill_rectangle({0.0, 0.0}, {0.3, 0.12}, o.dp), o);
+}
+} // namespace
+
+TEST_CASE("tlsph quadratic: linear and quadratic fields give the exact F everywhere",
+          "[solid_tlsph][patch][quadratic]") {
+  TlsphSolid s = quadratic_block();
+  const PatchErrors e = patch(s);
+  INFO("linear field: interior " << e.interior << ", surface " << e.surface);
+  CHECK(e.interior < 1e-12);
+  CHECK(e.surface < 1e-12);
+  // A full quadratic field u = A X + Q(X): F = I + A + dQ/dX at every particle, corners too.
+  std::vector<Vec2> x(s.size());
+  auto u = [](const Vec2& X) {
+    return Vec2(0.01 * X.x() + 0.3 * X.x() * X.x() - 0.2 * X.x() * X.y() + 0.1 * X.y() * X.y(),
+                -0.02 * X.y() + 0.15 * X.x() * X.x() + 0.25 * X.x() * X.y() - 0.4 * X.y() * X.y());
+  };
+  auto grad = [](const Vec2& X) {
+    fsi::Mat2 G;
+    G << 0.01 + 0.6 * X.x() - 0.2 * X.y(), -0.2 * X.x() + 0.2 * X.y(), 0.3 * X.x() + 0.25 * X.y(),
+        -0.02 + 0.25 * X.x() - 0.8 * X.y();
+    return G;
+  };
+  for (std::size_t i = 0; i < s.size(); ++i)
+    x[i] = s.reference_position(i) + u(s.reference_position(i));
+  s.set_positions(x);
+  double err = 0.0;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const Vec2 X = s.reference_position(i);
+    err = std::max(
+        err, (s.deformation_gradient(i) - fsi::Mat2::Identity() - grad(X)).cwiseAbs().maxCoeff());
+  }
+  INFO("quadratic field: max |F - I - grad u| over all particles " << err);
+  CHECK(err < 1e-12);
+  // The pure-bending field of the linear correction's test: exact at the surface as well.
+  const PatchErrors b = bending(0.01, GradientCorrection::quadratic);
+  INFO("bending: interior " << b.interior << ", surface " << b.surface << "; energy / exact "
+                            << b.energy_ratio << " (lattice midpoint rule " << 1.0 - 1.0 / 64.0
+                            << ")");
+  CHECK(b.interior < 1e-12);
+  CHECK(b.surface < 1e-12);
+  // Exact F at every particle: the energy is the lattice midpoint rule's, 1 - (dp/H)^2.
+  CHECK_THAT(b.energy_ratio, Catch::Matchers::WithinRel(1.0 - 1.0 / 64.0, 1e-4));
+}
+
+TEST_CASE("tlsph quadratic: forces conserve momentum and angular momentum, are -dPi/dx",
+          "[solid_tlsph][quadratic]") {
+  TlsphSolid s = quadratic_block();
+  // A smooth non-affine deformation (strains ~ 1e-2) with a rotation.
+  std::vector<Vec2> x(s.size());
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const Vec2 X = s.reference_position(i);
+    x[i] = X + Vec2(0.003 * std::sin(20.0 * X.y()) + 0.01 * X.x() * X.y(),
+                    0.002 * std::cos(15.0 * X.x()) - 0.004 * X.x());
+  }
+  s.set_positions(x);
+  const double rho = s.options().material.density;
+  Vec2 force = Vec2::Zero();
+  double torque = 0.0, scale = 0.0;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const Vec2 f = rho * s.volume(i) * s.acceleration(i);
+    force += f;
+    torque += s.position(i).x() * f.y() - s.position(i).y() * f.x();
+    scale += f.norm();
+  }
+  INFO("sum |f| " << scale << ", |sum f| " << force.norm() << ", sum x x f " << torque);
+  CHECK(force.norm() < 1e-12 * scale);
+  CHECK(std::abs(torque) < 1e-12 * scale * 0.3);
+  // The force on one particle is minus the gradient of the strain energy (central difference).
+  const std::size_t k = s.nearest_particle({0.005, 0.115}); // a corner particle
+  const Vec2 f = rho * s.volume(k) * s.acceleration(k);
+  const double d = 1e-7;
+  Vec2 grad;
+  for (int c = 0; c < 2; ++c) {
+    auto xp = x, xm = x;
+    xp[k][c] += d, xm[k][c] -= d;
+    s.set_positions(xp);
+    const double ep = s.energies().strain;
+    s.set_positions(xm);
+    grad[c] = (ep - s.energies().strain) / (2.0 * d);
+  }
+  INFO("corner particle: f = " << f.transpose() << ", -dPi/dx = " << -grad.transpose());
+  CHECK((f + grad).norm() < 1e-5 * f.norm());
+}
+
+TEST_CASE("tlsph odd-image clamp: images mirror their partners, forces are -dPi/dx",
+          "[solid_tlsph][image]") {
+  for (const auto c : {GradientCorrection::linear, GradientCorrection::quadratic}) {
+    TlsphOptions o;
+    o.dp = 0.01;
+    o.gradient_correction = c;
+    Clamp clamp;
+    clamp.contains = [](const Vec2& X) { return X.x() < 0.0; };
+    clamp.odd_image = true;
+    o.clamps.push_back(clamp);
+    TlsphSolid s(fill_rectangle({-0.04, 0.0}, {0.2, 0.08}, o.dp), o);
+    std::vector<Vec2> x(s.size());
+    for (std::size_t i = 0; i < s.size(); ++i) {
+      const Vec2 X = s.reference_position(i);
+      x[i] = X + Vec2(0.002 * X.x() * X.y() + 0.001 * std::sin(30.0 * X.y()),
+                      0.003 * X.x() * X.x() + 0.001 * std::cos(20.0 * X.x()));
+    }
+    s.set_positions(x);
+    // u of a clamped particle = -u of the free particle at its mirror position.
+    double err = 0.0;
+    for (std::size_t i = 0; i < s.size(); ++i) {
+      if (!s.clamped(i)) continue;
+      const Vec2 X = s.reference_position(i);
+      const std::size_t p = s.nearest_particle({-X.x(), X.y()});
+      err = std::max(err, (s.displacement(i) + s.displacement(p)).norm());
+    }
+    CHECK(err == 0.0);
+    // The force on a particle next to the clamp is minus the gradient of the strain energy of
+    // the free particles, images moving with it (central difference).
+    const std::size_t k = s.nearest_particle({0.005, 0.075});
+    const double rho = o.material.density;
+    const Vec2 f = rho * s.volume(k) * s.acceleration(k);
+    const double d = 1e-7;
+    Vec2 grad;
+    for (int q = 0; q < 2; ++q) {
+      auto xp = x, xm = x;
+      xp[k][q] += d, xm[k][q] -= d;
+      s.set_positions(xp);
+      const double ep = s.energies().strain;
+      s.set_positions(xm);
+      grad[q] = (ep - s.energies().strain) / (2.0 * d);
+    }
+    INFO("correction " << static_cast<int>(c) << ": f = " << f.transpose()
+                       << ", -dPi/dx = " << -grad.transpose());
+    CHECK((f + grad).norm() < 1e-5 * f.norm());
+  }
 }

@@ -31,6 +31,30 @@ struct Clamp {
   std::function<bool(const Vec2& X0)> contains;
   std::function<Vec2(const Vec2& X0, double t)> position;
   std::function<Vec2(const Vec2& X0, double t)> velocity;
+  /// Fixed clamps only: impose u = 0 on the clamp's face, the plane through `face_point` with
+  /// normal `face_normal`, instead of at the clamped particles: each clamped particle moves as
+  /// the odd image of the free particle at its mirror position, u_g = -u_p (so u = 0 on the
+  /// plane), carries no strain energy, and the force on p gains minus the force on its image
+  /// (f_p = -dPi/dx_p with x_g(x_p)). A clamped particle whose mirror position holds no free
+  /// particle (to 1e-6 dp) is an InputError.
+  bool odd_image = false;
+  Vec2 face_point{0.0, 0.0};
+  Vec2 face_normal{1.0, 0.0};
+};
+
+/// How the reference kernel gradient is corrected (eq. 14 or its second-order extension).
+enum class GradientCorrection {
+  /// The paper's B0 (eq. 14): F exact for linear displacement fields. At a surface particle the
+  /// one-sided support makes F of a bending (quadratic) field first-order wrong: the beams are
+  /// too soft (docs/solid_tlsph.md, "Accuracy").
+  linear,
+  /// Second order: per pair a corrected gradient g~_ab = w_ab [A_a^-1 p_ab]_(0,1) from the
+  /// weighted least-squares fit of u_b - u_a by a quadratic in X_b - X_a (p_ab its 5
+  /// monomials, w_ab = |dW_ab| / r_ab V_b, A_a = sum_b w_ab p_ab p_ab^T), so F is exact for
+  /// quadratic fields at every particle, the surface included. The force is the variational
+  /// one, f_a = sum_b (V_a P_a g~_ab - V_b P_b g~_ba) = -dPi/dx_a of Pi = sum_a V_a W(F_a):
+  /// pairwise antisymmetric, conservative. Reduces to `linear` where the support is symmetric.
+  quadratic,
 };
 
 struct TlsphOptions {
@@ -40,6 +64,8 @@ struct TlsphOptions {
   Vec2 gravity{0.0, 0.0};        ///< g [m/s^2]
   double cfl = 0.6;              ///< dt_s = cfl min(sqrt(h/|a|), h/(c_s + |v|)), in (0, 1]
   bool kernel_correction = true; ///< B0 of eq. 14; false: B0 = I (standard SPH, for tests)
+  /// Order of the gradient correction (needs kernel_correction); `linear` is the paper's.
+  GradientCorrection gradient_correction = GradientCorrection::linear;
   /// Pairwise artificial viscosity, a_a += sum_b 2 nu_d (v_b - v_a) |dW_ab| / r_ab V_b with
   /// nu_d = pair_damping * c_s h / 2 (Morris form in the reference configuration; conserves
   /// momentum, dissipates the relative motion of neighbours). >= 0; 0 = off (default).
@@ -97,8 +123,12 @@ public:
   /// InputError otherwise, RunError (what, particle, step, time) on NaN or det F <= 0; the state is
   /// then that of the failed sub-step (restore() a saved one). Returns the sub-steps taken.
   int advance(double t, double dt);
-  /// The stable step dt_s of the current state.
+  /// The stable step dt_s of the current state (GradientCorrection::quadratic: times
+  /// dt_scale() <= 1).
   double stable_dt() const;
+  /// 1 for the linear correction; for the quadratic one max_a sum_b |B0_a grad0 W_ab V_b| /
+  /// max_a sum_b |g~_ab| (its one-sided surface stencils raise the highest frequency).
+  double dt_scale() const { return dt_scale_; }
 
   // --- coupling interface ---
   /// Surface particles of the tagged edges, ordered along the outline (counter-clockwise:
@@ -157,7 +187,11 @@ public:
 
 private:
   void build_reference();
+  /// g~_ab and the reverse pair index of GradientCorrection::quadratic.
+  void build_quadratic();
   void build_interface(const SolidGeometry& geometry);
+  /// Partners of the Clamp::odd_image particles.
+  void build_images();
   /// F (eq. 13) and P B0 per particle; throws RunError on det F <= 0 or NaN.
   void compute_stress();
   /// a = eq. 12 + gravity + external + damping (needs compute_stress()).
@@ -184,6 +218,17 @@ private:
   // Reference neighbour pairs, CSR by particle: neighbour b and grad0 W_ab V_b (eq. 14).
   std::vector<std::uint32_t> pair_start_, pair_b_;
   std::vector<double> pair_gx_, pair_gy_, pair_dwr_; // grad0 W_ab V_b, |dW_ab| / r_ab V_b
+  // GradientCorrection::quadratic only: the corrected gradient g~_ab and the index of the
+  // reverse pair (b, a) in b's row.
+  std::vector<double> pair_qx_, pair_qy_;
+  std::vector<std::uint32_t> pair_rev_;
+  bool quadratic_ = false;
+  // Clamp::odd_image: the free partner of each image particle (none = not an image), and the
+  // image of each free particle; scratch force per unit mass of the images.
+  std::vector<std::size_t> image_partner_, image_of_;
+  std::vector<double> image_ax_, image_ay_;
+  bool images_ = false;
+  double dt_scale_ = 1.0; // stable-step factor of the quadratic correction (build_quadratic)
 
   std::vector<std::uint32_t> loaded_;    // free particles with a nonzero external force
   std::vector<std::uint32_t> interface_; // particle of each interface node
