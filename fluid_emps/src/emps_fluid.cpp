@@ -57,6 +57,8 @@ void validate(const FluidOptions& o) {
   if (!(o.domain_max.x() > o.domain_min.x() && o.domain_max.y() > o.domain_min.y()))
     fail("the domain box is empty");
   if (!(o.skin > 0 && o.skin < 1)) fail("skin must be in (0, 1)");
+  if (!(o.wall_damping >= 0)) fail("wall_damping must be >= 0");
+  if (!(o.wall_viscosity >= 0)) fail("wall_viscosity must be >= 0");
 }
 
 } // namespace
@@ -164,12 +166,17 @@ void EmpsFluid::viscosity() {
   const double c_lap = 2.0 * d / (lambda0_ * n0_);
   const double nu = options_.viscosity, mu_V = options_.density * nu * options_.volume();
   const double nu_art = options_.artificial_viscosity * options_.sound_speed * options_.l0;
+  const double nu_wall = options_.wall_contact == WallContact::viscous
+                             ? options_.wall_viscosity * options_.sound_speed * options_.l0
+                             : 0.0;
   scratch_.resize(2 * n);
   // The closing-pair sum only when alpha > 0: it costs as much as the rest of the loop.
-  const auto sweep = [&](auto artificial) {
+  // near_wall: its part on pairs with a particle within r_e of a wall (WallContact::viscous).
+  const auto sweep = [&](auto artificial, auto near_wall) {
     parallel_for_balanced(n, [&](std::size_t i) {
       const double xi = p.x[i], yi = p.y[i], vxi = p.vx[i], vyi = p.vy[i];
-      double sx = 0, sy = 0, ax = 0, ay = 0;
+      double sx = 0, sy = 0, ax = 0, ay = 0, bx = 0, by = 0;
+      const bool wall_i = hits_.segment[i] >= 0;
       const std::uint32_t* row = neighbours_.row(i);
       for (std::uint32_t k = 0, c = neighbours_.count(i); k < c; ++k) {
         const std::uint32_t j = row[k];
@@ -185,6 +192,9 @@ void EmpsFluid::viscosity() {
             const double s = approach * w / r2; // ((v_j - v_i) . e) e w / r
             ax += s * dx;
             ay += s * dy;
+            if constexpr (decltype(near_wall)::value) {
+              if (wall_i || hits_.segment[j] >= 0) bx += s * dx, by += s * dy;
+            }
           }
         }
       }
@@ -199,14 +209,20 @@ void EmpsFluid::viscosity() {
         scratch_[2 * i] += nu_art * c_lap * ax;
         scratch_[2 * i + 1] += nu_art * c_lap * ay;
       }
+      if constexpr (decltype(near_wall)::value) {
+        scratch_[2 * i] += nu_wall * c_lap * bx;
+        scratch_[2 * i + 1] += nu_wall * c_lap * by;
+      }
       visc_wall_[i] = mu_V * m1; // V_i mu R <lap v>_i' (eq. 52, viscous wall part)
       visc_wall2_[i] = mu_V * m2;
     });
   };
-  if (nu_art > 0)
-    sweep(std::true_type{});
+  if (nu_wall > 0)
+    sweep(std::true_type{}, std::true_type{});
+  else if (nu_art > 0)
+    sweep(std::true_type{}, std::false_type{});
   else
-    sweep(std::false_type{});
+    sweep(std::false_type{}, std::false_type{});
 }
 
 // n*_i = sum_j w_ij + z(r_wall,i) (eqs. 9, 20; or scaled, see WallDensity); p_i = c^2 rho/n0 (n*_i
@@ -327,6 +343,36 @@ Vec2 EmpsFluid::repulsion(double r, const Vec2& n_wall) const {
   return -options_.alpha_rep * (half_l0 / std::max(r, 1e-3 * half_l0) - 1.0) * n_wall;
 }
 
+// WallContact::damped: the wall-normal approach velocity u_n = (v*_i - v_wall).n < 0 within l0
+// of a wall loses the fraction 1 - exp(-gamma dt) in this step, gamma = wall_damping c/l0 (1 -
+// r/l0): rho/dt (1 - exp(-gamma dt)) u_n n in the units of grad p (added to it, as f_rep).
+// Separation is not resisted; the restitution of a particle stopped within l0 is that of f_rep.
+Vec2 EmpsFluid::normal_damping(std::size_t i, double r, const Vec2& n_wall, const Vec2& v_wall,
+                               double dt) const {
+  const double l0 = options_.l0;
+  if (r >= l0) return Vec2::Zero();
+  const double u_n = (Vec2(particles_.vx[i], particles_.vy[i]) - v_wall).dot(n_wall);
+  if (u_n >= 0.0) return Vec2::Zero();
+  const double gamma = options_.wall_damping * options_.sound_speed / l0 * (1.0 - r / l0);
+  return options_.density / dt * (1.0 - std::exp(-gamma * dt)) * u_n * n_wall;
+}
+
+WallForceParts EmpsFluid::wall_force_parts(int first, int last) const {
+  const WallForces& w = wall_forces_;
+  WallForceParts out;
+  auto add = [&](int s, const Vec2& f, const Vec2& f_contact, const Vec2& f_viscous) {
+    if (s < first || s >= last) return;
+    out.pressure -= f - f_contact - f_viscous;
+    out.repulsive -= f_contact;
+    out.viscous -= f_viscous;
+  };
+  for (std::size_t i = 0; i < w.segment.size(); ++i) {
+    add(w.segment[i], w.f[i], w.f_contact[i], w.f_viscous[i]);
+    add(w.segment2[i], w.f2[i], w.f_contact2[i], w.f_viscous2[i]);
+  }
+  return out;
+}
+
 // v^{n+1} = v* - dt/rho <grad p>^ERP, x^{n+1} = x* + dt (v^{n+1} - v*) (eqs. 10, 14, 25-27),
 // and the wall force of eq. 52 on each face.
 void EmpsFluid::pressure_gradient(double dt) {
@@ -338,6 +384,7 @@ void EmpsFluid::pressure_gradient(double dt) {
   const double c_grad = d / n0_;
   const double inv_rho = 1.0 / options_.density, V = options_.volume();
   const bool convex = options_.convex_corners;
+  const bool damped = options_.wall_contact == WallContact::damped;
   scratch_.resize(2 * n);
   parallel_for_balanced(n, [&](std::size_t i) {
     const double xi = p.x[i], yi = p.y[i], pi = p.p[i];
@@ -352,7 +399,7 @@ void EmpsFluid::pressure_gradient(double dt) {
       gy += s * dy;
     }
     // Wall parts R_ref <grad p>_i' + f_rep of each face (eqs. 25-27).
-    Vec2 w1 = Vec2::Zero(), w2 = Vec2::Zero();
+    Vec2 w1 = Vec2::Zero(), w2 = Vec2::Zero(), c1 = Vec2::Zero(), c2 = Vec2::Zero();
     const int s1 = hits_.segment[i], s2 = hits_.segment2[i];
     if (s1 >= 0) {
       Vec2 mirror = mirror_gradient(i, hits_.x_wall[i], hits_.n_wall[i]);
@@ -360,11 +407,15 @@ void EmpsFluid::pressure_gradient(double dt) {
         const ConvexPart part = convex_part(i);
         mirror = (1.0 - part.share) * mirror + part.share * 2.0 * pi * part.g;
       }
-      w1 = c_grad * mirror + repulsion(hits_.r[i], hits_.n_wall[i]);
+      c1 = repulsion(hits_.r[i], hits_.n_wall[i]);
+      if (damped) c1 += normal_damping(i, hits_.r[i], hits_.n_wall[i], hits_.v_wall[i], dt);
+      w1 = c_grad * mirror + c1;
     }
-    if (s2 >= 0)
-      w2 = c_grad * mirror_gradient(i, hits_.x_wall2[i], hits_.n_wall2[i]) +
-           repulsion(hits_.r2[i], hits_.n_wall2[i]);
+    if (s2 >= 0) {
+      c2 = repulsion(hits_.r2[i], hits_.n_wall2[i]);
+      if (damped) c2 += normal_damping(i, hits_.r2[i], hits_.n_wall2[i], hits_.v_wall2[i], dt);
+      w2 = c_grad * mirror_gradient(i, hits_.x_wall2[i], hits_.n_wall2[i]) + c2;
+    }
     const Vec2 grad = c_grad * Vec2(gx, gy) + w1 + w2;
     const Vec2 dv = -dt * inv_rho * grad;
     p.vx[i] += dv.x();
@@ -380,6 +431,10 @@ void EmpsFluid::pressure_gradient(double dt) {
     wall_forces_.t2[i] = s2 >= 0 ? hits_.t2[i] : 0.0;
     wall_forces_.x_wall2[i] = s2 >= 0 ? hits_.x_wall2[i] : Vec2::Zero();
     wall_forces_.f2[i] = s2 >= 0 ? Vec2(-V * w2 + visc_wall2_[i]) : Vec2::Zero();
+    wall_forces_.f_contact[i] = -V * c1;
+    wall_forces_.f_contact2[i] = -V * c2;
+    wall_forces_.f_viscous[i] = s1 >= 0 ? visc_wall_[i] : Vec2::Zero();
+    wall_forces_.f_viscous2[i] = s2 >= 0 ? visc_wall2_[i] : Vec2::Zero();
   });
   parallel_for(n, [&](std::size_t i) {
     p.x[i] += scratch_[2 * i];
@@ -397,7 +452,9 @@ void EmpsFluid::advance(double t, double dt) {
   refresh_neighbours(true, step_ + 1, t);
   const std::size_t n = p.size();
   // The viscous loop writes every particle's viscous wall forces; without it they are zero.
-  const bool viscous = options_.viscosity > 0 || options_.artificial_viscosity > 0;
+  const bool viscous =
+      options_.viscosity > 0 || options_.artificial_viscosity > 0 ||
+      (options_.wall_contact == WallContact::viscous && options_.wall_viscosity > 0);
   if (viscous) {
     visc_wall_.resize(n);
     visc_wall2_.resize(n);
@@ -407,7 +464,9 @@ void EmpsFluid::advance(double t, double dt) {
   }
   for (auto* a : {&wall_forces_.segment, &wall_forces_.segment2}) a->resize(n);
   for (auto* a : {&wall_forces_.t, &wall_forces_.t2}) a->resize(n);
-  for (auto* a : {&wall_forces_.x_wall, &wall_forces_.f, &wall_forces_.x_wall2, &wall_forces_.f2})
+  for (auto* a : {&wall_forces_.x_wall, &wall_forces_.f, &wall_forces_.x_wall2, &wall_forces_.f2,
+                  &wall_forces_.f_contact, &wall_forces_.f_contact2, &wall_forces_.f_viscous,
+                  &wall_forces_.f_viscous2})
     a->resize(n);
   if (viscous) {
     // The wall hits of the last step's x* serve x^n (which differs by dt^2 |grad p| / rho, and
@@ -499,8 +558,10 @@ void EmpsFluid::set_velocities(const std::vector<Vec2>& v) {
 
 double EmpsFluid::stable_dt(double courant) const {
   double dt = courant * options_.l0 / (options_.sound_speed + max_speed());
-  const double nu =
-      options_.viscosity + options_.artificial_viscosity * options_.sound_speed * options_.l0;
+  const double alpha =
+      options_.artificial_viscosity +
+      (options_.wall_contact == WallContact::viscous ? options_.wall_viscosity : 0.0);
+  const double nu = options_.viscosity + alpha * options_.sound_speed * options_.l0;
   if (nu > 0) dt = std::min(dt, 0.25 * options_.l0 * options_.l0 / nu);
   return dt;
 }

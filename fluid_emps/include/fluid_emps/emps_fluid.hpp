@@ -31,10 +31,23 @@ namespace fsi::emps {
 /// Per-particle wall force of the last step (eq. 52, wall parts only: the two mirror terms and
 /// the repulsive term, times V_i). The structure receives -f at x_wall on `segment`; a particle
 /// near a concave corner may also push on a second face (segment2, t2, x_wall2, f2).
+/// f = f_pressure + f_contact + f_viscous on each face: f_contact is V times the repulsive
+/// term (eq. 27, with the wall-normal damping of WallContact::damped), f_viscous the viscous
+/// mirror term; the rest is the pressure mirror term (eqs. 25-26).
 struct WallForces {
   std::vector<int> segment, segment2; ///< -1 where there is no such wall within r_e
   std::vector<double> t, t2;          ///< local coordinate of x_wall on the segment
   std::vector<Vec2> x_wall, f, x_wall2, f2;
+  std::vector<Vec2> f_contact, f_contact2, f_viscous, f_viscous2; ///< parts of f, f2
+};
+
+/// The force of the fluid on a set of wall segments (what the walls receive, -sum f), N per m
+/// of depth, split by the wall term that carries it (eq. 52).
+struct WallForceParts {
+  Vec2 pressure = Vec2::Zero();  ///< mirror pressure terms (eqs. 25-26, convex corners incl.)
+  Vec2 repulsive = Vec2::Zero(); ///< repulsive term (eq. 27) and wall-normal damping
+  Vec2 viscous = Vec2::Zero();   ///< viscous mirror term (eq. 24)
+  Vec2 total() const { return pressure + repulsive + viscous; }
 };
 
 /// Work counters of the last step, for benchmarks and run.json.
@@ -59,6 +72,9 @@ public:
 
   const Particles& particles() const { return particles_; }
   const WallForces& wall_forces() const { return wall_forces_; }
+  /// The last step's force on segments [first, last) of the WallSet, by part (sequential sum:
+  /// the same for every thread count).
+  WallForceParts wall_force_parts(int first, int last) const;
   const FluidOptions& options() const { return options_; }
   double n0() const { return n0_; }
   double lambda0() const { return lambda0_; }
@@ -99,6 +115,8 @@ private:
   Vec2 mirror_laplacian(std::size_t i, const Vec2& x_wall, const Vec2& n_wall,
                         const Vec2& v_wall) const;
   Vec2 repulsion(double r, const Vec2& n_wall) const;
+  Vec2 normal_damping(std::size_t i, double r, const Vec2& n_wall, const Vec2& v_wall,
+                      double dt) const;
   double corner_overlap(std::size_t i) const;
   /// A convex corner's part of particle i's wall terms: pnd correction dz, and the solid's
   /// lattice sum g of eq. 10 that replaces the mirror's in proportion `share`.
