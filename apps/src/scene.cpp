@@ -39,8 +39,10 @@ TimeSpec read_time(Section s) {
 const std::vector<std::string> kFieldNames = {"velocity",     "pressure",     "pnd",
                                               "free_surface", "displacement", "von_mises"};
 const std::vector<std::string> kProbeQuantities = {
-    "displacement_x", "displacement_y", "displacement_x_tank", "displacement_y_tank", "surge_front",
-    "pressure",       "mean_pressure",  "mean_speed",          "kinetic_energy"};
+    "displacement_x", "displacement_y", "displacement_x_tank", "displacement_y_tank",
+    "surge_front",    "pressure",       "mean_pressure",       "mean_speed",
+    "kinetic_energy", "wall_force_x",   "wall_force_y"};
+const std::vector<std::string> kForceParts = {"total", "pressure", "repulsive", "viscous"};
 
 ProbeSpec read_probe(Section s) {
   ProbeSpec p;
@@ -53,12 +55,17 @@ ProbeSpec read_probe(Section s) {
                         "(largest x of particles with pnd >= n0/2, i.e. not spray); the pressure "
                         "at a point (MPS-weighted mean within r_e); mean_pressure, the plain mean "
                         "over the particles inside the box min..max; mean_speed and "
-                        "kinetic_energy (J per m of depth) of all particles");
+                        "kinetic_energy (J per m of depth) of all particles; wall_force_x|y, "
+                        "the fluid's force on the coupled structure (on all walls without one), "
+                        "N/m, of the last step");
   p.structure = s.text("structure", "", "structure name, for displacement probes");
   p.node = s.optional_integer("node", Range::non_negative(), "FE node index (or give point)");
   p.point = s.optional_vec2("point", "reference position of the FE node, or the fluid point, m");
   p.box_min = s.optional_vec2("min", "mean_pressure: lower-left corner of the box, m");
   p.box_max = s.optional_vec2("max", "mean_pressure: upper-right corner of the box, m");
+  p.part = s.choice("part", kForceParts, "total",
+                    "wall_force: the wall term carried: pressure (mirror, eqs. 25-26), repulsive "
+                    "(eq. 27 and wall damping), viscous (eq. 24) or their total");
   if (!s.context().documenting()) {
     const bool ok_name = !p.name.empty() && std::all_of(p.name.begin(), p.name.end(), [](char c) {
       return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
@@ -182,6 +189,16 @@ FluidSpec read_fluid(Section s) {
       "artificial_viscosity", 0.0, Range::non_negative(),
       "alpha: closing particle pairs feel a viscosity alpha c l0 along their line of centres "
       "(damps acoustic noise; not in the paper, 0 = off)");
+  f.wall_contact = s.choice(
+      "wall_contact", {"paper", "damped", "viscous"}, "paper",
+      "particle-wall contact: paper, the repulsive term of eq. 27 alone; damped, eq. 27 plus a "
+      "damper on the wall-normal approach velocity within l0 of a wall (rate wall_damping c/l0 "
+      "(1 - r/l0), a wall force); viscous, eq. 27 plus the closing-pair viscosity "
+      "wall_viscosity c l0 on pairs with a particle within r_e of a wall");
+  f.wall_damping = s.real("wall_damping", 1.0, Range::non_negative(),
+                          "wall_contact damped: damping rate in units of c / l0");
+  f.wall_viscosity = s.real("wall_viscosity", 0.05, Range::non_negative(),
+                            "wall_contact viscous: alpha of the near-wall closing-pair viscosity");
   f.wall_density = s.choice(
       "wall_density", {"added", "scaled"}, "added",
       "wall part of pnd: added, n_i + z(r) as eq. 20; scaled, n_i + z max(1, n_i / (n0 - z)): "

@@ -24,6 +24,7 @@ struct ProbeSpec {
   std::optional<int> node;   ///< FE node index, or
   std::optional<Vec2> point; ///< reference position of a node / a fluid point
   std::optional<Vec2> box_min, box_max; ///< mean_pressure: the box averaged over
+  std::string part = "total";           ///< wall_force: total|pressure|repulsive|viscous
   int line = 0;                         ///< scene line, for late messages
 };
 
@@ -63,6 +64,9 @@ struct FluidSpec {
   double alpha_rep = 0.0;                 ///< repulsive coefficient of eq. 27, N/m^3
   std::string wall_condition;             ///< no_slip | slip
   std::string wall_density;               ///< added | scaled
+  std::string wall_contact = "paper";     ///< paper | damped | viscous
+  double wall_damping = 1.0;              ///< damped: rate in units of c / l0
+  double wall_viscosity = 0.05;           ///< viscous: alpha of the near-wall pair viscosity
   double artificial_viscosity = 0.0;      ///< alpha of the closing-pair viscosity alpha c l0
   bool corner_faces = true;               ///< a concave corner's second face (z, mirrors)
   bool convex_corners = true;             ///< the solid's wedge in pnd and wall pressure
