@@ -128,15 +128,25 @@ void CoupledModel::open_logs(const std::filesystem::path& out, bool resume) {
   if (!*step_log_) throw RunError("output: " + file.string() + ": cannot create");
   if (!resume)
     *step_log_ << "step,time,dt,iterations,residual_initial,residual_final,omega,converged,"
-                  "seconds_fluid,seconds_structure,seconds_coupler\n";
-  scheme_->set_step_callback([log = step_log_.get()](const coupling::StepStats& s) {
-    *log << s.step << ',' << s.t << ',' << s.dt << ',' << s.iterations << ',' << s.residual_initial
-         << ',' << s.residual_final << ',';
-    if (s.omega) *log << *s.omega;
-    *log << ',' << (s.converged ? 1 : 0) << ',' << s.time_fluid << ',' << s.time_structure << ','
-         << s.time_coupler << '\n';
-    if (s.step % 1000 == 999) log->flush();
-  });
+                  "seconds_fluid,seconds_structure,seconds_coupler,fx_pressure,fy_pressure,"
+                  "fx_repulsive,fy_repulsive,fx_viscous,fy_viscous\n";
+  // The fluid's force on the structure (N/m) of the step's last iteration, by wall term (eq. 52).
+  const emps::EmpsFluid* fluid = &fluid_->fluid();
+  const int first = fluid_->fe_interface()->first_segment();
+  const int last = first + fluid_->fe_interface()->segment_count();
+  scheme_->set_step_callback(
+      [log = step_log_.get(), fluid, first, last](const coupling::StepStats& s) {
+        *log << s.step << ',' << s.t << ',' << s.dt << ',' << s.iterations << ','
+             << s.residual_initial << ',' << s.residual_final << ',';
+        if (s.omega) *log << *s.omega;
+        *log << ',' << (s.converged ? 1 : 0) << ',' << s.time_fluid << ',' << s.time_structure
+             << ',' << s.time_coupler;
+        const emps::WallForceParts f = fluid->wall_force_parts(first, last);
+        for (const Vec2& v : {f.pressure, f.repulsive, f.viscous})
+          *log << ',' << v.x() << ',' << v.y();
+        *log << '\n';
+        if (s.step % 1000 == 999) log->flush();
+      });
 }
 
 void CoupledModel::flush_logs() {
