@@ -24,6 +24,10 @@ inline bool is_sequential() {
 inline int num_threads() {
   return is_sequential() ? 1 : omp_get_max_threads();
 }
+/// Wall-clock seconds since an arbitrary origin, for step timers (the OpenMP clock).
+inline double wall_time() {
+  return omp_get_wtime();
+}
 
 /// f(i) for i in [0, n), static schedule (the same thread sees the same indices every call).
 template <class F> void parallel_for(std::size_t n, F&& f) {
