@@ -12,6 +12,7 @@
 // state at t + dt before calling advance(); the fluid refits its wall index each step.
 #include "fluid_emps/options.hpp"
 #include "fluid_emps/particles.hpp"
+#include "geometry_erp/convex_corner.hpp"
 #include "geometry_erp/wall_locator.hpp"
 #include "geometry_erp/wall_set.hpp"
 #include "geometry_erp/wall_weight.hpp"
@@ -110,6 +111,14 @@ private:
   void viscosity();
   void density_and_pressure();
   void pressure_gradient(double dt);
+  /// The pressure gradient's kernels on particle i: fluid-fluid pairs (eq. 10), and the wall
+  /// terms of each face (eqs. 25-27) with their contact part.
+  Vec2 fluid_gradient(std::size_t i) const;
+  struct WallGradient {
+    Vec2 wall1 = Vec2::Zero(), wall2 = Vec2::Zero(), contact1 = Vec2::Zero(),
+         contact2 = Vec2::Zero();
+  };
+  WallGradient wall_gradient(std::size_t i, double dt) const;
   void check_finite(long step, double t) const;
   Vec2 mirror_gradient(std::size_t i, const Vec2& x_wall, const Vec2& n_wall) const;
   Vec2 mirror_laplacian(std::size_t i, const Vec2& x_wall, const Vec2& n_wall,
@@ -118,13 +127,7 @@ private:
   Vec2 normal_damping(std::size_t i, double r, const Vec2& n_wall, const Vec2& v_wall,
                       double dt) const;
   double corner_overlap(std::size_t i) const;
-  /// A convex corner's part of particle i's wall terms: pnd correction dz, and the solid's
-  /// lattice sum g of eq. 10 that replaces the mirror's in proportion `share`.
-  struct ConvexPart {
-    double dz = 0.0, share = 0.0;
-    Vec2 g = Vec2::Zero();
-  };
-  ConvexPart convex_part(std::size_t i) const;
+  erp::ConvexPart convex_part(std::size_t i) const;
   void remove_outside();
   void damp(double t, double dt);
 
