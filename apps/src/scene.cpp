@@ -73,6 +73,7 @@ std::vector<std::string> probe_quantities() {
   add_unique(out, structure_plugins(), &StructurePlugin::probe_quantities);
   return out;
 }
+const std::vector<std::string> kForceParts = {"total", "pressure", "repulsive", "viscous"};
 
 ProbeSpec read_probe(Section s) {
   ProbeSpec p;
@@ -85,12 +86,17 @@ ProbeSpec read_probe(Section s) {
                         "(largest x of particles with pnd >= n0/2, i.e. not spray); the pressure "
                         "at a point (MPS-weighted mean within r_e); mean_pressure, the plain mean "
                         "over the particles inside the box min..max; mean_speed and "
-                        "kinetic_energy (J per m of depth) of all particles");
+                        "kinetic_energy (J per m of depth) of all particles; wall_force_x|y, "
+                        "the fluid's force on the coupled structure (on all walls without one), "
+                        "N/m, of the last step");
   p.structure = s.text("structure", "", "structure name, for displacement probes");
   p.node = s.optional_integer("node", Range::non_negative(), "FE node index (or give point)");
   p.point = s.optional_vec2("point", "reference position of the FE node, or the fluid point, m");
   p.box_min = s.optional_vec2("min", "mean_pressure: lower-left corner of the box, m");
   p.box_max = s.optional_vec2("max", "mean_pressure: upper-right corner of the box, m");
+  p.part = s.choice("part", kForceParts, "total",
+                    "wall_force: the wall term carried: pressure (mirror, eqs. 25-26), repulsive "
+                    "(eq. 27 and wall damping), viscous (eq. 24) or their total");
   if (!s.context().documenting()) {
     const bool ok_name = !p.name.empty() && std::all_of(p.name.begin(), p.name.end(), [](char c) {
       return std::isalnum(static_cast<unsigned char>(c)) || c == '_';

@@ -3,6 +3,7 @@
 #include "fsi/core/error.hpp"
 #include "fsi/core/parallel.hpp"
 #include "fsi/core/state_archive.hpp"
+#include "geometry_erp/convex_corner.hpp"
 #include "geometry_erp/mirror.hpp"
 #include "particles/kernels.hpp"
 
@@ -10,8 +11,6 @@
 #include <array>
 #include <cmath>
 #include <limits>
-#include <numbers>
-#include <omp.h>
 #include <sstream>
 #include <type_traits>
 
@@ -19,7 +18,7 @@ namespace fsi::emps {
 
 namespace {
 
-constexpr double d = 2.0; // number of dimensions
+constexpr double dim = 2.0; // d of eqs. 10-11, the number of dimensions
 constexpr std::size_t none = std::numeric_limits<std::size_t>::max();
 
 std::size_t first_index(std::size_t n, const auto& bad) {
@@ -37,8 +36,8 @@ std::string where(const Particles& p, std::size_t i, long step, double t) {
 
 class Timer {
 public:
-  explicit Timer(double& sink) : sink_(sink), start_(omp_get_wtime()) {}
-  ~Timer() { sink_ += omp_get_wtime() - start_; }
+  explicit Timer(double& sink) : sink_(sink), start_(wall_time()) {}
+  ~Timer() { sink_ += wall_time() - start_; }
   Timer(const Timer&) = delete;
   Timer& operator=(const Timer&) = delete;
 
@@ -57,6 +56,8 @@ void validate(const FluidOptions& o) {
   if (!(o.domain_max.x() > o.domain_min.x() && o.domain_max.y() > o.domain_min.y()))
     fail("the domain box is empty");
   if (!(o.skin > 0 && o.skin < 1)) fail("skin must be in (0, 1)");
+  if (!(o.wall_damping >= 0)) fail("wall_damping must be >= 0");
+  if (!(o.wall_viscosity >= 0)) fail("wall_viscosity must be >= 0");
 }
 
 } // namespace
@@ -161,15 +162,20 @@ void EmpsFluid::viscosity() {
   const std::size_t n = p.size();
   const particles::MpsWeight w_e(r_e_);
   const double re2 = r_e_ * r_e_;
-  const double c_lap = 2.0 * d / (lambda0_ * n0_);
+  const double c_lap = 2.0 * dim / (lambda0_ * n0_);
   const double nu = options_.viscosity, mu_V = options_.density * nu * options_.volume();
   const double nu_art = options_.artificial_viscosity * options_.sound_speed * options_.l0;
+  const double nu_wall = options_.wall_contact == WallContact::viscous
+                             ? options_.wall_viscosity * options_.sound_speed * options_.l0
+                             : 0.0;
   scratch_.resize(2 * n);
   // The closing-pair sum only when alpha > 0: it costs as much as the rest of the loop.
-  const auto sweep = [&](auto artificial) {
+  // near_wall: its part on pairs with a particle within r_e of a wall (WallContact::viscous).
+  const auto sweep = [&](auto artificial, auto near_wall) {
     parallel_for_balanced(n, [&](std::size_t i) {
       const double xi = p.x[i], yi = p.y[i], vxi = p.vx[i], vyi = p.vy[i];
-      double sx = 0, sy = 0, ax = 0, ay = 0;
+      double sx = 0, sy = 0, ax = 0, ay = 0, bx = 0, by = 0;
+      const bool wall_i = hits_.segment[i] >= 0;
       const std::uint32_t* row = neighbours_.row(i);
       for (std::uint32_t k = 0, c = neighbours_.count(i); k < c; ++k) {
         const std::uint32_t j = row[k];
@@ -185,6 +191,9 @@ void EmpsFluid::viscosity() {
             const double s = approach * w / r2; // ((v_j - v_i) . e) e w / r
             ax += s * dx;
             ay += s * dy;
+            if constexpr (decltype(near_wall)::value) {
+              if (wall_i || hits_.segment[j] >= 0) bx += s * dx, by += s * dy;
+            }
           }
         }
       }
@@ -199,14 +208,20 @@ void EmpsFluid::viscosity() {
         scratch_[2 * i] += nu_art * c_lap * ax;
         scratch_[2 * i + 1] += nu_art * c_lap * ay;
       }
+      if constexpr (decltype(near_wall)::value) {
+        scratch_[2 * i] += nu_wall * c_lap * bx;
+        scratch_[2 * i + 1] += nu_wall * c_lap * by;
+      }
       visc_wall_[i] = mu_V * m1; // V_i mu R <lap v>_i' (eq. 52, viscous wall part)
       visc_wall2_[i] = mu_V * m2;
     });
   };
-  if (nu_art > 0)
-    sweep(std::true_type{});
+  if (nu_wall > 0)
+    sweep(std::true_type{}, std::true_type{});
+  else if (nu_art > 0)
+    sweep(std::true_type{}, std::false_type{});
   else
-    sweep(std::false_type{});
+    sweep(std::false_type{}, std::false_type{});
 }
 
 // n*_i = sum_j w_ij + z(r_wall,i) (eqs. 9, 20; or scaled, see WallDensity); p_i = c^2 rho/n0 (n*_i
@@ -250,56 +265,17 @@ void EmpsFluid::density_and_pressure() {
   mean_neighbours_ = n ? static_cast<double>(pairs) / static_cast<double>(n) : 0.0;
 }
 
-// The virtual lattice both faces count at a corner, counted once: exact for a right angle
-// (geometry_erp corner_weight_sum), scaled by the angle between the normals otherwise.
+// A concave corner's doubly counted lattice (geometry_erp concave_overlap).
 double EmpsFluid::corner_overlap(std::size_t i) const {
-  const double cos_turn = std::clamp(hits_.n_wall[i].dot(hits_.n_wall2[i]), -1.0, 1.0);
-  const double share = std::acos(cos_turn) / (0.5 * std::numbers::pi);
-  return share * erp::corner_weight_sum(hits_.r[i], hits_.r2[i], options_.l0, r_e_,
-                                        particles::MpsWeight(r_e_));
+  return erp::concave_overlap(hits_.n_wall[i], hits_.n_wall2[i], hits_.r[i], hits_.r2[i],
+                              options_.l0, r_e_, particles::MpsWeight(r_e_));
 }
 
-// The solid at a convex corner is a wedge, not the half-plane that z(r) and the mirror of the
-// nearest face or vertex assume (eqs. 20, 25). For each convex end of the nearest segment within
-// r_e: next to the vertex (the vertex nearest) the solid is the wedge's lattice, at distances
-// d_in, d_out from the two face lines; next to a face it is the half-plane less the quadrant
-// beyond each convex end's other face (depth h behind it). pnd counts that lattice (q instead of
-// z), and the wall's pressure term is that lattice's eq. 10 sum with p_i' = p_i (eq. 26), in
-// place of the mirror. Exact on the lattice at a right angle; a turn below 90 degrees mixes
-// with the half-plane in proportion turn / 90 degrees, as corner_overlap.
-EmpsFluid::ConvexPart EmpsFluid::convex_part(std::size_t i) const {
-  const erp::WallSet& walls = locator_->walls();
-  const int s = hits_.segment[i];
-  const auto& ends = walls.segments().node[static_cast<std::size_t>(s)];
-  const Vec2 x(particles_.x[i], particles_.y[i]);
-  const double r = hits_.r[i], l0 = options_.l0;
-  const particles::MpsWeight w(r_e_);
-  ConvexPart part;
-  for (int end = 0; end < 2; ++end) {
-    const int L = ends[static_cast<std::size_t>(end)];
-    const Vec2 d = x - walls.nodes().x[static_cast<std::size_t>(L)];
-    if (d.squaredNorm() >= r_e_ * r_e_) continue;
-    const auto joint = walls.convex_joint(L);
-    if (!joint) continue;
-    const double share = std::min(joint->turn / (0.5 * std::numbers::pi), 1.0);
-    if (hits_.t[i] == static_cast<double>(end)) { // the vertex is the nearest point
-      const double a = std::max(d.dot(joint->n_in), 0.0), b = std::max(d.dot(joint->n_out), 0.0);
-      const Vec2 g = erp::corner_gradient_sum(a, b, l0, r_e_, w);
-      return {share * (erp::corner_weight_sum(a, b, l0, r_e_, w) - z_(r)), share,
-              -(g.x() * joint->n_in + g.y() * joint->n_out)};
-    }
-    if (hits_.t[i] == 0.0 || hits_.t[i] == 1.0) continue; // the other end is nearest
-    const Vec2& n_other = s == joint->in_segment ? joint->n_out : joint->n_in;
-    const double h = -d.dot(n_other);
-    if (h <= 0.0) continue;
-    const Vec2& n_face = hits_.n_wall[i];
-    if (part.share == 0.0) part.g = -erp::wall_gradient_sum(r, l0, r_e_, w) * n_face;
-    const Vec2 g = erp::corner_gradient_sum(r, h, l0, r_e_, w); // points at -n_face, +n_other
-    part.dz -= share * erp::corner_weight_sum(r, h, l0, r_e_, w);
-    part.g -= share * (g.y() * n_other - g.x() * n_face);
-    part.share = std::max(part.share, share);
-  }
-  return part;
+// The convex corners of particle i's nearest segment (geometry_erp convex_part).
+erp::ConvexPart EmpsFluid::convex_part(std::size_t i) const {
+  return erp::convex_part(locator_->walls(), hits_.segment[i], hits_.t[i],
+                          Vec2(particles_.x[i], particles_.y[i]), hits_.r[i], hits_.n_wall[i], z_,
+                          options_.l0, r_e_, particles::MpsWeight(r_e_));
 }
 
 // R_ref <grad p>_i' (eqs. 25-26) without the d/n0 factor: the gradient sum at the mirror point
@@ -307,13 +283,13 @@ EmpsFluid::ConvexPart EmpsFluid::convex_part(std::size_t i) const {
 Vec2 EmpsFluid::mirror_gradient(std::size_t i, const Vec2& x_wall, const Vec2& n_wall) const {
   const Particles& p = particles_;
   const particles::MpsWeight w_e(r_e_);
-  const double re2 = r_e_ * r_e_, pi = p.p[i];
+  const double re2 = r_e_ * r_e_, p_i = p.p[i];
   const double mpx = 2.0 * x_wall.x() - p.x[i], mpy = 2.0 * x_wall.y() - p.y[i];
   double ux = 0, uy = 0;
   grid_.for_each_near(mpx, mpy, [&](std::uint32_t j) {
     const double dx = p.x[j] - mpx, dy = p.y[j] - mpy, r2 = dx * dx + dy * dy;
     if (r2 >= re2 || r2 == 0.0) return;
-    const double s = (p.p[j] + pi) * w_e.inside(std::sqrt(r2)) / r2;
+    const double s = (p.p[j] + p_i) * w_e.inside(std::sqrt(r2)) / r2;
     ux += s * dx;
     uy += s * dy;
   });
@@ -327,59 +303,114 @@ Vec2 EmpsFluid::repulsion(double r, const Vec2& n_wall) const {
   return -options_.alpha_rep * (half_l0 / std::max(r, 1e-3 * half_l0) - 1.0) * n_wall;
 }
 
+// WallContact::damped: the wall-normal approach velocity u_n = (v*_i - v_wall).n < 0 within l0
+// of a wall loses the fraction 1 - exp(-gamma dt) in this step, gamma = wall_damping c/l0 (1 -
+// r/l0): rho/dt (1 - exp(-gamma dt)) u_n n in the units of grad p (added to it, as f_rep).
+// Separation is not resisted; the restitution of a particle stopped within l0 is that of f_rep.
+Vec2 EmpsFluid::normal_damping(std::size_t i, double r, const Vec2& n_wall, const Vec2& v_wall,
+                               double dt) const {
+  const double l0 = options_.l0;
+  if (r >= l0) return Vec2::Zero();
+  const double u_n = (Vec2(particles_.vx[i], particles_.vy[i]) - v_wall).dot(n_wall);
+  if (u_n >= 0.0) return Vec2::Zero();
+  const double gamma = options_.wall_damping * options_.sound_speed / l0 * (1.0 - r / l0);
+  return options_.density / dt * (1.0 - std::exp(-gamma * dt)) * u_n * n_wall;
+}
+
+WallForceParts EmpsFluid::wall_force_parts(int first, int last) const {
+  const WallForces& w = wall_forces_;
+  WallForceParts out;
+  auto add = [&](int s, const Vec2& f, const Vec2& f_contact, const Vec2& f_viscous) {
+    if (s < first || s >= last) return;
+    out.pressure -= f - f_contact - f_viscous;
+    out.repulsive -= f_contact;
+    out.viscous -= f_viscous;
+  };
+  for (std::size_t i = 0; i < w.segment.size(); ++i) {
+    add(w.segment[i], w.f[i], w.f_contact[i], w.f_viscous[i]);
+    add(w.segment2[i], w.f2[i], w.f_contact2[i], w.f_viscous2[i]);
+  }
+  return out;
+}
+
+// Fluid-fluid part of <grad p>_i (eq. 10) without the d/n0 factor: sum over the neighbours of
+// (p_j + p_i) (x_j - x_i) / r_ij^2 w_ij.
+Vec2 EmpsFluid::fluid_gradient(std::size_t i) const {
+  const Particles& p = particles_;
+  const particles::MpsWeight w_e(r_e_);
+  const double re2 = r_e_ * r_e_;
+  const double xi = p.x[i], yi = p.y[i], p_i = p.p[i];
+  double gx = 0, gy = 0;
+  const std::uint32_t* row = neighbours_.row(i);
+  for (std::uint32_t k = 0, c = neighbours_.count(i); k < c; ++k) {
+    const std::uint32_t j = row[k];
+    const double dx = p.x[j] - xi, dy = p.y[j] - yi, r2 = dx * dx + dy * dy;
+    if (r2 >= re2 || r2 == 0.0) continue;
+    const double s = (p.p[j] + p_i) * w_e.inside(std::sqrt(r2)) / r2;
+    gx += s * dx;
+    gy += s * dy;
+  }
+  return Vec2(gx, gy);
+}
+
+// Wall parts of <grad p>_i on each face: (d/n0) R_ref <grad p>_i' + f_rep (eqs. 25-27), the
+// convex corners' wedge in place of the mirror in proportion to its share, and the contact
+// part alone (f_rep, with the damping of WallContact::damped).
+EmpsFluid::WallGradient EmpsFluid::wall_gradient(std::size_t i, double dt) const {
+  const double c_grad = dim / n0_;
+  const bool damped = options_.wall_contact == WallContact::damped;
+  WallGradient out;
+  if (hits_.segment[i] >= 0) {
+    Vec2 mirror = mirror_gradient(i, hits_.x_wall[i], hits_.n_wall[i]);
+    if (options_.convex_corners) {
+      const erp::ConvexPart part = convex_part(i);
+      mirror = (1.0 - part.share) * mirror + part.share * 2.0 * particles_.p[i] * part.g;
+    }
+    out.contact1 = repulsion(hits_.r[i], hits_.n_wall[i]);
+    if (damped) out.contact1 += normal_damping(i, hits_.r[i], hits_.n_wall[i], hits_.v_wall[i], dt);
+    out.wall1 = c_grad * mirror + out.contact1;
+  }
+  if (hits_.segment2[i] >= 0) {
+    out.contact2 = repulsion(hits_.r2[i], hits_.n_wall2[i]);
+    if (damped)
+      out.contact2 += normal_damping(i, hits_.r2[i], hits_.n_wall2[i], hits_.v_wall2[i], dt);
+    out.wall2 = c_grad * mirror_gradient(i, hits_.x_wall2[i], hits_.n_wall2[i]) + out.contact2;
+  }
+  return out;
+}
+
 // v^{n+1} = v* - dt/rho <grad p>^ERP, x^{n+1} = x* + dt (v^{n+1} - v*) (eqs. 10, 14, 25-27),
 // and the wall force of eq. 52 on each face.
 void EmpsFluid::pressure_gradient(double dt) {
   Timer timer(times_.pressure_gradient);
   Particles& p = particles_;
   const std::size_t n = p.size();
-  const particles::MpsWeight w_e(r_e_);
-  const double re2 = r_e_ * r_e_;
-  const double c_grad = d / n0_;
+  const double c_grad = dim / n0_;
   const double inv_rho = 1.0 / options_.density, V = options_.volume();
-  const bool convex = options_.convex_corners;
   scratch_.resize(2 * n);
   parallel_for_balanced(n, [&](std::size_t i) {
-    const double xi = p.x[i], yi = p.y[i], pi = p.p[i];
-    double gx = 0, gy = 0;
-    const std::uint32_t* row = neighbours_.row(i);
-    for (std::uint32_t k = 0, c = neighbours_.count(i); k < c; ++k) {
-      const std::uint32_t j = row[k];
-      const double dx = p.x[j] - xi, dy = p.y[j] - yi, r2 = dx * dx + dy * dy;
-      if (r2 >= re2 || r2 == 0.0) continue;
-      const double s = (p.p[j] + pi) * w_e.inside(std::sqrt(r2)) / r2;
-      gx += s * dx;
-      gy += s * dy;
-    }
-    // Wall parts R_ref <grad p>_i' + f_rep of each face (eqs. 25-27).
-    Vec2 w1 = Vec2::Zero(), w2 = Vec2::Zero();
-    const int s1 = hits_.segment[i], s2 = hits_.segment2[i];
-    if (s1 >= 0) {
-      Vec2 mirror = mirror_gradient(i, hits_.x_wall[i], hits_.n_wall[i]);
-      if (convex) {
-        const ConvexPart part = convex_part(i);
-        mirror = (1.0 - part.share) * mirror + part.share * 2.0 * pi * part.g;
-      }
-      w1 = c_grad * mirror + repulsion(hits_.r[i], hits_.n_wall[i]);
-    }
-    if (s2 >= 0)
-      w2 = c_grad * mirror_gradient(i, hits_.x_wall2[i], hits_.n_wall2[i]) +
-           repulsion(hits_.r2[i], hits_.n_wall2[i]);
-    const Vec2 grad = c_grad * Vec2(gx, gy) + w1 + w2;
+    const WallGradient wall = wall_gradient(i, dt);
+    const Vec2 grad = c_grad * fluid_gradient(i) + wall.wall1 + wall.wall2;
     const Vec2 dv = -dt * inv_rho * grad;
     p.vx[i] += dv.x();
     p.vy[i] += dv.y();
     scratch_[2 * i] = dt * dv.x();
     scratch_[2 * i + 1] = dt * dv.y();
     // eq. 52: f_wall = V (-(R_ref <grad p>_i' + f_rep) + mu R <lap v>_i'), per face
-    wall_forces_.segment[i] = s1;
-    wall_forces_.t[i] = s1 >= 0 ? hits_.t[i] : 0.0;
-    wall_forces_.x_wall[i] = s1 >= 0 ? hits_.x_wall[i] : Vec2::Zero();
-    wall_forces_.f[i] = s1 >= 0 ? Vec2(-V * w1 + visc_wall_[i]) : Vec2::Zero();
-    wall_forces_.segment2[i] = s2;
-    wall_forces_.t2[i] = s2 >= 0 ? hits_.t2[i] : 0.0;
-    wall_forces_.x_wall2[i] = s2 >= 0 ? hits_.x_wall2[i] : Vec2::Zero();
-    wall_forces_.f2[i] = s2 >= 0 ? Vec2(-V * w2 + visc_wall2_[i]) : Vec2::Zero();
+    const int s1 = hits_.segment[i], s2 = hits_.segment2[i];
+    WallForces& f = wall_forces_;
+    f.segment[i] = s1;
+    f.t[i] = s1 >= 0 ? hits_.t[i] : 0.0;
+    f.x_wall[i] = s1 >= 0 ? hits_.x_wall[i] : Vec2::Zero();
+    f.f[i] = s1 >= 0 ? Vec2(-V * wall.wall1 + visc_wall_[i]) : Vec2::Zero();
+    f.segment2[i] = s2;
+    f.t2[i] = s2 >= 0 ? hits_.t2[i] : 0.0;
+    f.x_wall2[i] = s2 >= 0 ? hits_.x_wall2[i] : Vec2::Zero();
+    f.f2[i] = s2 >= 0 ? Vec2(-V * wall.wall2 + visc_wall2_[i]) : Vec2::Zero();
+    f.f_contact[i] = -V * wall.contact1;
+    f.f_contact2[i] = -V * wall.contact2;
+    f.f_viscous[i] = s1 >= 0 ? visc_wall_[i] : Vec2::Zero();
+    f.f_viscous2[i] = s2 >= 0 ? visc_wall2_[i] : Vec2::Zero();
   });
   parallel_for(n, [&](std::size_t i) {
     p.x[i] += scratch_[2 * i];
@@ -397,7 +428,9 @@ void EmpsFluid::advance(double t, double dt) {
   refresh_neighbours(true, step_ + 1, t);
   const std::size_t n = p.size();
   // The viscous loop writes every particle's viscous wall forces; without it they are zero.
-  const bool viscous = options_.viscosity > 0 || options_.artificial_viscosity > 0;
+  const bool viscous =
+      options_.viscosity > 0 || options_.artificial_viscosity > 0 ||
+      (options_.wall_contact == WallContact::viscous && options_.wall_viscosity > 0);
   if (viscous) {
     visc_wall_.resize(n);
     visc_wall2_.resize(n);
@@ -407,7 +440,9 @@ void EmpsFluid::advance(double t, double dt) {
   }
   for (auto* a : {&wall_forces_.segment, &wall_forces_.segment2}) a->resize(n);
   for (auto* a : {&wall_forces_.t, &wall_forces_.t2}) a->resize(n);
-  for (auto* a : {&wall_forces_.x_wall, &wall_forces_.f, &wall_forces_.x_wall2, &wall_forces_.f2})
+  for (auto* a : {&wall_forces_.x_wall, &wall_forces_.f, &wall_forces_.x_wall2, &wall_forces_.f2,
+                  &wall_forces_.f_contact, &wall_forces_.f_contact2, &wall_forces_.f_viscous,
+                  &wall_forces_.f_viscous2})
     a->resize(n);
   if (viscous) {
     // The wall hits of the last step's x* serve x^n (which differs by dt^2 |grad p| / rho, and
@@ -499,8 +534,10 @@ void EmpsFluid::set_velocities(const std::vector<Vec2>& v) {
 
 double EmpsFluid::stable_dt(double courant) const {
   double dt = courant * options_.l0 / (options_.sound_speed + max_speed());
-  const double nu =
-      options_.viscosity + options_.artificial_viscosity * options_.sound_speed * options_.l0;
+  const double alpha =
+      options_.artificial_viscosity +
+      (options_.wall_contact == WallContact::viscous ? options_.wall_viscosity : 0.0);
+  const double nu = options_.viscosity + alpha * options_.sound_speed * options_.l0;
   if (nu > 0) dt = std::min(dt, 0.25 * options_.l0 * options_.l0 / nu);
   return dt;
 }

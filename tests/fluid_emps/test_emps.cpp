@@ -185,6 +185,56 @@ TEST_CASE("emps: without gravity and walls, linear momentum is conserved to 1e-1
   CHECK(worst < 1e-10);
 }
 
+TEST_CASE("emps: what the fluid's momentum loses to the walls, the walls receive (eq. 52)",
+          "[emps]") {
+  // A blob thrown at a tank's floor and side wall with gravity and viscosity: in every step and for
+  // every wall contact, sum_i m (v_i^{n+1} - v_i^n) = dt (M g + sum_i f_wall,i), the fluid-fluid
+  // terms being antisymmetric in pairs; and the force split of wall_force_parts adds up to
+  // -sum_i f_wall,i, with the repulsive part non-zero (the blob hits the walls).
+  const double l0 = 0.01, dt = 2e-5;
+  const auto contact =
+      GENERATE(emps::WallContact::paper, emps::WallContact::damped, emps::WallContact::viscous);
+  erp::WallSet walls;
+  const std::vector<Vec2> tank{{0.0, 0.4}, {0.0, 0.0}, {0.4, 0.0}, {0.4, 0.4}};
+  walls.add_polyline(tank, false, 0);
+  auto positions =
+      erp::fill_lattice({0.2, 0.0}, l0, {{{0.2, 0.0}, {0.35, 0.0}, {0.35, 0.15}, {0.2, 0.15}}});
+  auto options = water(l0);
+  options.viscosity = 1e-6;
+  options.alpha_rep = 1e7;
+  options.gravity = {0.0, -9.81};
+  options.wall_contact = contact;
+  options.wall_damping = 2.0;
+  options.wall_viscosity = 0.1;
+  emps::EmpsFluid fluid(options, positions, walls);
+  std::vector<Vec2> v(positions.size(), Vec2(2.5, -1.5));
+  fluid.set_velocities(v);
+  const double m = options.density * options.volume();
+  const int segments = static_cast<int>(walls.segments().size());
+  double worst = 0.0, worst_split = 0.0, repulsive = 0.0;
+  const double weight = static_cast<double>(positions.size()) * m * options.gravity.norm();
+  for (int k = 0; k < 400; ++k) {
+    const Vec2 before = m * momentum(fluid.particles());
+    fluid.advance(k * dt, dt);
+    const Vec2 after = m * momentum(fluid.particles());
+    const emps::WallForces& w = fluid.wall_forces();
+    Vec2 f = Vec2::Zero();
+    for (std::size_t i = 0; i < w.f.size(); ++i) f += w.f[i] + w.f2[i];
+    const Vec2 expected =
+        dt * (static_cast<double>(fluid.particles().size()) * m * options.gravity + f);
+    // round-off of the momentum sums, and of the impulses
+    const double scale = before.norm() + dt * (f.norm() + weight);
+    worst = std::max(worst, (after - before - expected).norm() / scale);
+    const emps::WallForceParts parts = fluid.wall_force_parts(0, segments);
+    worst_split = std::max(worst_split, (parts.total() + f).norm() / (f.norm() + 1.0));
+    repulsive = std::max(repulsive, parts.repulsive.norm());
+  }
+  CHECK(fluid.removed() == 0);
+  CHECK(repulsive > 1.0); // N/m: the contact term took part
+  CHECK(worst < 1e-13);
+  CHECK(worst_split < 1e-12);
+}
+
 TEST_CASE("emps: a tank rolling +-4 degrees, half full, keeps every particle for 5 periods",
           "[emps]") {
   const double l0 = 0.01, L = 0.6, H = 0.4;

@@ -27,6 +27,7 @@ struct ProbeSpec {
   std::optional<int> node;   ///< FE node index, or
   std::optional<Vec2> point; ///< reference position of a node / a fluid point
   std::optional<Vec2> box_min, box_max; ///< mean_pressure: the box averaged over
+  std::string part = "total";           ///< wall_force: total|pressure|repulsive|viscous
   int line = 0;                         ///< scene line, for late messages
 };
 

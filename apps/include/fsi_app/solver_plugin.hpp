@@ -26,6 +26,10 @@ public:
   /// F against the interfaces the part was built with, their nodes concatenated in the order
   /// given (coupling/interface.hpp).
   virtual coupling::FluidSolver& coupling_solver() = 0;
+  /// The fluid's force on the coupled structures (all of them; on every wall without one) of the
+  /// last step, N/m, split into the terms that carry it (e.g. pressure, repulsive, viscous), so
+  /// that coupling.csv shows what carries the load. Names are fixed for the part's lifetime.
+  virtual std::vector<std::pair<std::string, Vec2>> force_parts() const { return {}; }
 };
 
 /// A structure in a run: stand-alone, or the coupler's S through the interface it describes.

@@ -24,6 +24,11 @@ emps::FluidOptions fluid_options(const Scene& scene) {
   o.wall_condition =
       f.wall_condition == "slip" ? emps::WallCondition::slip : emps::WallCondition::no_slip;
   o.artificial_viscosity = f.artificial_viscosity;
+  o.wall_contact = f.wall_contact == "damped"    ? emps::WallContact::damped
+                   : f.wall_contact == "viscous" ? emps::WallContact::viscous
+                                                 : emps::WallContact::paper;
+  o.wall_damping = f.wall_damping;
+  o.wall_viscosity = f.wall_viscosity;
   o.wall_density =
       f.wall_density == "scaled" ? emps::WallDensity::scaled : emps::WallDensity::added;
   o.corner_faces = f.corner_faces;
@@ -157,7 +162,28 @@ std::optional<double> EmpsModel::probe(const ProbeSpec& probe) const {
       return p.size() ? speeds / static_cast<double>(p.size()) : 0.0;
     return 0.5 * fluid_->options().density * fluid_->options().volume() * v2; // per m of depth
   }
+  if (probe.quantity == "wall_force_x" || probe.quantity == "wall_force_y") {
+    const auto [first, last] = interface_segments();
+    const emps::WallForceParts f = fluid_->wall_force_parts(first, last);
+    const Vec2 v = probe.part == "pressure"    ? f.pressure
+                   : probe.part == "repulsive" ? f.repulsive
+                   : probe.part == "viscous"   ? f.viscous
+                                               : f.total();
+    return probe.quantity == "wall_force_x" ? v.x() : v.y();
+  }
   return std::nullopt;
+}
+
+std::pair<int, int> EmpsModel::interface_segments() const {
+  if (interface_walls_.empty()) return {0, static_cast<int>(walls_->segments().size())};
+  const auto& last = interface_walls_.back(); // the interfaces' segments are contiguous
+  return {interface_walls_.front().first_segment(), last.first_segment() + last.segment_count()};
+}
+
+std::vector<std::pair<std::string, Vec2>> EmpsModel::force_parts() const {
+  const auto [first, last] = interface_segments();
+  const emps::WallForceParts f = fluid_->wall_force_parts(first, last);
+  return {{"pressure", f.pressure}, {"repulsive", f.repulsive}, {"viscous", f.viscous}};
 }
 
 void EmpsModel::write_state(StateArchive& archive) const {

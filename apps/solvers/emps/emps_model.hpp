@@ -36,6 +36,9 @@ public:
   void write_state(StateArchive& archive) const override;
   void read_state(const StateArchive& archive) override;
   coupling::FluidSolver& coupling_solver() override { return *adapter_; }
+  /// Pressure (mirror, eqs. 25-26), repulsive (eq. 27 and the wall damper) and viscous (eq. 24)
+  /// parts of the wall force on the interfaces' segments (eq. 52, with the sign on the structure).
+  std::vector<std::pair<std::string, Vec2>> force_parts() const override;
 
   emps::EmpsFluid& fluid() { return *fluid_; }
   erp::WallSet& walls() { return *walls_; }
@@ -44,6 +47,9 @@ public:
   const FluidAdapter& adapter() const { return *adapter_; }
 
 private:
+  /// [first, last) wall segments of the interfaces (every wall without one).
+  std::pair<int, int> interface_segments() const;
+
   std::unique_ptr<erp::WallSet> walls_;
   std::vector<erp::InterfaceWalls> interface_walls_;
   std::unique_ptr<emps::EmpsFluid> fluid_;

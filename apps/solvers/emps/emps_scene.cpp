@@ -39,6 +39,16 @@ std::shared_ptr<const SolverSpec> read_fluid(Section& s) {
       s.real("alpha_rep", 0.0, Range::non_negative(), "repulsive coefficient of eq. 27, N/m^3");
   f.wall_condition =
       s.choice("wall_condition", {"no_slip", "slip"}, "no_slip", "viscous wall condition (eq. 24)");
+  f.wall_contact = s.choice(
+      "wall_contact", {"paper", "damped", "viscous"}, "paper",
+      "particle-wall contact: paper, the repulsive term of eq. 27 alone; damped, eq. 27 plus a "
+      "damper on the wall-normal approach velocity within l0 of a wall (rate wall_damping c/l0 "
+      "(1 - r/l0), a wall force); viscous, eq. 27 plus the closing-pair viscosity "
+      "wall_viscosity c l0 on pairs with a particle within r_e of a wall");
+  f.wall_damping = s.real("wall_damping", 1.0, Range::non_negative(),
+                          "wall_contact damped: damping rate in units of c / l0");
+  f.wall_viscosity = s.real("wall_viscosity", 0.05, Range::non_negative(),
+                            "wall_contact viscous: alpha of the near-wall closing-pair viscosity");
   f.artificial_viscosity = s.real(
       "artificial_viscosity", 0.0, Range::non_negative(),
       "alpha: closing particle pairs feel a viscosity alpha c l0 along their line of centres "

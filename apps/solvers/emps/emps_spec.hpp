@@ -18,6 +18,9 @@ struct FluidSpec final : SolverSpec {
   double alpha_rep = 0.0;                 ///< repulsive coefficient of eq. 27, N/m^3
   std::string wall_condition;             ///< no_slip | slip
   std::string wall_density;               ///< added | scaled
+  std::string wall_contact = "paper";     ///< paper | damped | viscous
+  double wall_damping = 1.0;              ///< damped: rate in units of c / l0
+  double wall_viscosity = 0.05;           ///< viscous: alpha of the near-wall pair viscosity
   double artificial_viscosity = 0.0;      ///< alpha of the closing-pair viscosity alpha c l0
   bool corner_faces = true;               ///< a concave corner's second face (z, mirrors)
   bool convex_corners = true;             ///< the solid's wedge in pnd and wall pressure

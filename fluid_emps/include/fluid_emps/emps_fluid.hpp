@@ -12,6 +12,7 @@
 // state at t + dt before calling advance(); the fluid refits its wall index each step.
 #include "fluid_emps/options.hpp"
 #include "fluid_emps/particles.hpp"
+#include "geometry_erp/convex_corner.hpp"
 #include "geometry_erp/wall_locator.hpp"
 #include "geometry_erp/wall_set.hpp"
 #include "geometry_erp/wall_weight.hpp"
@@ -31,10 +32,23 @@ namespace fsi::emps {
 /// Per-particle wall force of the last step (eq. 52, wall parts only: the two mirror terms and
 /// the repulsive term, times V_i). The structure receives -f at x_wall on `segment`; a particle
 /// near a concave corner may also push on a second face (segment2, t2, x_wall2, f2).
+/// f = f_pressure + f_contact + f_viscous on each face: f_contact is V times the repulsive
+/// term (eq. 27, with the wall-normal damping of WallContact::damped), f_viscous the viscous
+/// mirror term; the rest is the pressure mirror term (eqs. 25-26).
 struct WallForces {
   std::vector<int> segment, segment2; ///< -1 where there is no such wall within r_e
   std::vector<double> t, t2;          ///< local coordinate of x_wall on the segment
   std::vector<Vec2> x_wall, f, x_wall2, f2;
+  std::vector<Vec2> f_contact, f_contact2, f_viscous, f_viscous2; ///< parts of f, f2
+};
+
+/// The force of the fluid on a set of wall segments (what the walls receive, -sum f), N per m
+/// of depth, split by the wall term that carries it (eq. 52).
+struct WallForceParts {
+  Vec2 pressure = Vec2::Zero();  ///< mirror pressure terms (eqs. 25-26, convex corners incl.)
+  Vec2 repulsive = Vec2::Zero(); ///< repulsive term (eq. 27) and wall-normal damping
+  Vec2 viscous = Vec2::Zero();   ///< viscous mirror term (eq. 24)
+  Vec2 total() const { return pressure + repulsive + viscous; }
 };
 
 /// Work counters of the last step, for benchmarks and run.json.
@@ -59,6 +73,9 @@ public:
 
   const Particles& particles() const { return particles_; }
   const WallForces& wall_forces() const { return wall_forces_; }
+  /// The last step's force on segments [first, last) of the WallSet, by part (sequential sum:
+  /// the same for every thread count).
+  WallForceParts wall_force_parts(int first, int last) const;
   const FluidOptions& options() const { return options_; }
   double n0() const { return n0_; }
   double lambda0() const { return lambda0_; }
@@ -94,19 +111,23 @@ private:
   void viscosity();
   void density_and_pressure();
   void pressure_gradient(double dt);
+  /// The pressure gradient's kernels on particle i: fluid-fluid pairs (eq. 10), and the wall
+  /// terms of each face (eqs. 25-27) with their contact part.
+  Vec2 fluid_gradient(std::size_t i) const;
+  struct WallGradient {
+    Vec2 wall1 = Vec2::Zero(), wall2 = Vec2::Zero(), contact1 = Vec2::Zero(),
+         contact2 = Vec2::Zero();
+  };
+  WallGradient wall_gradient(std::size_t i, double dt) const;
   void check_finite(long step, double t) const;
   Vec2 mirror_gradient(std::size_t i, const Vec2& x_wall, const Vec2& n_wall) const;
   Vec2 mirror_laplacian(std::size_t i, const Vec2& x_wall, const Vec2& n_wall,
                         const Vec2& v_wall) const;
   Vec2 repulsion(double r, const Vec2& n_wall) const;
+  Vec2 normal_damping(std::size_t i, double r, const Vec2& n_wall, const Vec2& v_wall,
+                      double dt) const;
   double corner_overlap(std::size_t i) const;
-  /// A convex corner's part of particle i's wall terms: pnd correction dz, and the solid's
-  /// lattice sum g of eq. 10 that replaces the mirror's in proportion `share`.
-  struct ConvexPart {
-    double dz = 0.0, share = 0.0;
-    Vec2 g = Vec2::Zero();
-  };
-  ConvexPart convex_part(std::size_t i) const;
+  erp::ConvexPart convex_part(std::size_t i) const;
   void remove_outside();
   void damp(double t, double dt);
 

@@ -12,6 +12,15 @@ enum class WallCondition { no_slip, slip };
 /// compression the fluid part extrapolated over the whole support.
 enum class WallDensity { added, scaled };
 
+/// Contact of particles with walls (issue 16).
+/// paper: the repulsive term of eq. 27 alone.
+/// damped: eq. 27 plus a damper on the wall-normal velocity relative to the wall within l0,
+///   rho/dt (1 - exp(-gamma dt)) (u_i - v_wall).n n in the units of grad p, gamma =
+///   wall_damping (c / l0) (1 - r / l0); a wall force (sent to the structure with f_rep).
+/// viscous: eq. 27 plus the closing-pair viscosity alpha c l0 (alpha = wall_viscosity) on
+///   pairs with a particle within r_e of a wall only (fluid-fluid, momentum kept).
+enum class WallContact { paper, damped, viscous };
+
 struct FluidOptions {
   double density = 1000.0;  ///< rho, kg/m^3
   double viscosity = 0.0;   ///< kinematic nu, m^2/s; 0 skips the viscous loop entirely
@@ -22,6 +31,9 @@ struct FluidOptions {
   double alpha_rep = 0.0;   ///< repulsive coefficient of eq. 27, N/m^3
   /// alpha of an artificial viscosity alpha c l0 on closing pairs (not in the paper; 0: off).
   double artificial_viscosity = 0.0;
+  WallContact wall_contact = WallContact::paper;
+  double wall_damping = 1.0;    ///< damped: gamma in units of c / l0
+  double wall_viscosity = 0.05; ///< viscous: alpha of the near-wall closing-pair viscosity
   WallCondition wall_condition = WallCondition::no_slip;
   WallDensity wall_density = WallDensity::added;
   /// At concave corners also apply the second wall face (z, mirror terms and repulsion of the

@@ -32,6 +32,10 @@ inline int available_processors() {
 inline void set_num_threads(int n) {
   omp_set_num_threads(n);
 }
+/// Wall-clock seconds since an arbitrary origin, for step timers (the OpenMP clock).
+inline double wall_time() {
+  return omp_get_wtime();
+}
 
 /// f(i) for i in [0, n), static schedule (the same thread sees the same indices every call).
 template <class F> void parallel_for(std::size_t n, F&& f) {
