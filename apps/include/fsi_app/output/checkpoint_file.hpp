@@ -20,8 +20,9 @@ std::uint64_t checkpoint_checksum(const std::vector<std::int64_t>& values);
 void write_checkpoint(const std::filesystem::path& file, const StateArchive& archive);
 
 /// Throws InputError (`FILE: what`) when the file cannot be opened or read, when a dataset does
-/// not match its checksum or holds a NaN (both naming the dataset; a NaN is accepted in the state
-/// of a failed step, `driver/failed` = 1, which the driver refuses itself).
+/// not match its checksum or holds a NaN (both naming the dataset; a NaN is accepted in the
+/// wall-hit cache `*/hits/*` and in the state of a failed step, `driver/failed` = 1, which the
+/// driver refuses itself).
 StateArchive read_checkpoint(const std::filesystem::path& file);
 
 } // namespace fsi::app
