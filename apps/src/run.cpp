@@ -5,6 +5,7 @@
 #include "fsi_app/interrupt.hpp"
 #include "fsi_app/output/checkpoint_file.hpp"
 #include "fsi_app/output/probes_csv.hpp"
+#include "fsi_app/output/text_file.hpp"
 #include "fsi_app/progress.hpp"
 #include "fsi_app/version.hpp"
 
@@ -17,6 +18,7 @@
 #include <ctime>
 #include <fcntl.h>
 #include <fstream>
+#include <iomanip>
 #include <limits>
 #include <sstream>
 #include <sys/file.h>
@@ -176,6 +178,25 @@ StateArchive make_archive(const Scene& scene, const std::vector<std::unique_ptr<
   return a;
 }
 
+/// Why a checkpoint's step does not fit the scene's: dt = 0 is a Courant-stepped run. Six
+/// digits, or 17 when six would print the two steps alike.
+std::string step_mismatch(double written, double scene) {
+  auto print = [](double v, int digits) {
+    std::ostringstream o;
+    o << std::setprecision(digits) << v;
+    return o.str();
+  };
+  const int digits = print(written, 6) == print(scene, 6) ? 17 : 6;
+  if (written == 0.0)
+    return "written by a Courant-stepped run (time.courant); the scene has a fixed time.dt = " +
+           print(scene, digits) + " s";
+  if (scene == 0.0)
+    return "written with a fixed time.dt = " + print(written, digits) +
+           " s; the scene is Courant-stepped (time.courant)";
+  return "written with time.dt = " + print(written, digits) +
+         " s; the scene has time.dt = " + print(scene, digits) + " s";
+}
+
 /// Reads the driver's state and the models' from a restart checkpoint.
 Clock read_archive(const Scene& scene, std::vector<std::unique_ptr<Model>>& models,
                    const std::filesystem::path& file, std::ostream& log) {
@@ -185,14 +206,8 @@ Clock read_archive(const Scene& scene, std::vector<std::unique_ptr<Model>>& mode
     if (a.integer("driver/failed") != 0)
       throw InputError("the state of a failed step, kept for inspection; restart from a "
                        "checkpoint_*.h5 written before it");
-    const double written_dt = a.real("driver/dt"), dt = scene.time.dt.value_or(0.0);
-    auto step_name = [](double v) {
-      return v == 0.0 ? std::string("an adaptive step (time.courant)")
-                      : "time.dt = " + format_g(v) + " s";
-    };
-    if (written_dt != dt)
-      throw InputError("written with " + step_name(written_dt) + "; the scene has " +
-                       step_name(dt));
+    if (a.real("driver/dt") != scene.time.dt.value_or(0.0))
+      throw InputError(step_mismatch(a.real("driver/dt"), scene.time.dt.value_or(0.0)));
     c.step = a.integer("driver/step");
     c.time = a.real("driver/time");
     c.next_frame = a.real("driver/next_frame");
@@ -309,24 +324,6 @@ public:
 private:
   int fd_ = -1;
 };
-
-/// Writes `text` to FILE.tmp and renames it: run.json is whole or absent, never cut.
-void write_atomically(const std::filesystem::path& file, const std::string& text) {
-  const std::filesystem::path tmp = file.string() + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    out << text;
-    out.flush();
-    if (!out) {
-      std::error_code ec;
-      std::filesystem::remove(tmp, ec);
-      throw RunError(file.string() + ": cannot write");
-    }
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, file, ec);
-  if (ec) throw RunError(file.string() + ": cannot write (" + ec.message() + ")");
-}
 
 } // namespace
 
@@ -517,7 +514,15 @@ RunResult run_scene(const Scene& scene, std::vector<std::unique_ptr<Model>>& mod
       for (const auto& m : models) m->flush_logs();
     }
   }
-  write_atomically(options.out / "run.json", run_json(status, message, true));
+  // run.json whole or absent (a full disk): written to run.json.tmp, then renamed.
+  try {
+    write_file_atomically(options.out / "run.json", run_json(status, message, true));
+  } catch (const RunError& e) {
+    std::error_code ignored;
+    std::filesystem::remove(options.out / "run.json", ignored); // not an earlier state's
+    message = status == "failed" ? message + "; " + e.what() : std::string(e.what());
+    status = "failed";
+  }
   if (status == "failed") throw RunError(message);
   result.step = c.step;
   result.time = c.time;

@@ -60,7 +60,7 @@ TEST_CASE("apps: HDF5 frames round-trip and the XDMF references exist", "[apps][
     CHECK_NOTHROW(read_dataset(h5, (*it)[1].str()));
     ++references;
   }
-  CHECK(references == 3 * 4 + 3); // per frame: 2 positions + 2 fields; t6 once per frame
+  CHECK(references == 3 * 5 + 3); // per frame: 2 positions + 2 fields + vertices; t6 once
   CHECK(text.find("Triangle_6") != std::string::npos);
   CHECK(text.find("<Time Value=\"0.2\"/>") != std::string::npos);
 }

@@ -1,6 +1,12 @@
-// Gmsh .msh 4.1 reader: a valid fixture and one fixture per class of malformed input.
+// Gmsh .msh reader: a valid fixture and one fixture per class of malformed input; the formats
+// Gmsh writes (ASCII 4.1, binary 4.1, ASCII 2.2); messages with the fix and without line 0.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <fstream>
+#include <functional>
+#include <iterator>
+#include <sstream>
 #include <string>
 
 #include "fsi/core/error.hpp"
@@ -50,4 +56,109 @@ TEST_CASE("fem: Gmsh reader: malformed files throw InputError naming the problem
   CHECK_THROWS_WITH(read_gmsh(fixture("truncated.msh")),
                     Contains("truncated.msh:") && Contains("unexpected end of file"));
   CHECK_THROWS_WITH(read_gmsh(fixture("no_such_file.msh")), Contains("cannot open"));
+}
+
+namespace {
+std::string gmsh_fixture(const std::string& name) {
+  return fixture("gmsh/" + name);
+}
+
+/// Sum of the straight-sided areas of the triangles (corners 0, 1, 2).
+double mesh_area(const Mesh& mesh) {
+  double area = 0.0;
+  for (const auto& el : mesh.elements) {
+    const auto a = mesh.X[static_cast<std::size_t>(el[0])];
+    const auto b = mesh.X[static_cast<std::size_t>(el[1])];
+    const auto c = mesh.X[static_cast<std::size_t>(el[2])];
+    area += 0.5 * ((b - a).x() * (c - a).y() - (b - a).y() * (c - a).x());
+  }
+  return area;
+}
+
+std::string message_of(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const fsi::InputError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+} // namespace
+
+// data/gmsh/plate.geo meshed by Gmsh 4.8.4 (Debian) with `gmsh plate.geo -2 -order 2` and
+// `-format msh41`, `-format msh41 -bin`, `-format msh22`: the same mesh three times.
+TEST_CASE("fem: Gmsh reader: ASCII 4.1, binary 4.1 and ASCII 2.2 from Gmsh give the same mesh",
+          "[structure_fem][gmsh]") {
+  const std::vector<std::string> groups = {"clamped", "interface", "solid"};
+  const Mesh ascii = read_gmsh(gmsh_fixture("plate_41.msh"), groups);
+  const Mesh binary = read_gmsh(gmsh_fixture("plate_41_bin.msh"), groups);
+  const Mesh msh22 = read_gmsh(gmsh_fixture("plate_22.msh"), groups);
+  CHECK(ascii.num_nodes() == 57);
+  CHECK(ascii.num_elements() == 22);
+  CHECK(mesh_area(ascii) == Approx(2.0).epsilon(1e-12)); // the 2 m x 1 m plate
+  // Curve 4 (clamped) and curves 2, 3 (interface) of plate.geo, 0.5 m elements.
+  CHECK(ascii.edges_with_tag("clamped").size() == 2);
+  CHECK(ascii.edges_with_tag("interface").size() == 6);
+  for (const Mesh* other : {&binary, &msh22}) {
+    REQUIRE(other->num_nodes() == ascii.num_nodes());
+    REQUIRE(other->num_elements() == ascii.num_elements());
+    CHECK(other->elements == ascii.elements);
+    CHECK(other->element_label == ascii.element_label);
+    CHECK(other->node_label == ascii.node_label);
+    double largest = 0.0; // ASCII prints 16 digits, binary holds every bit
+    for (std::size_t i = 0; i < ascii.X.size(); ++i)
+      largest = std::max(largest, (other->X[i] - ascii.X[i]).norm());
+    CHECK(largest <= 1e-15);
+    REQUIRE(other->edges.size() == ascii.edges.size());
+    for (std::size_t i = 0; i < ascii.edges.size(); ++i) {
+      CHECK(other->edges[i].nodes == ascii.edges[i].nodes);
+      CHECK(other->edges[i].tag == ascii.edges[i].tag);
+    }
+  }
+  CHECK(mesh_area(binary) == Approx(2.0).epsilon(1e-12));
+}
+
+TEST_CASE("fem: Gmsh reader: first-order, quadrangle and off-plane meshes say how to fix them",
+          "[structure_fem][gmsh]") {
+  const std::string order1 = message_of([] { read_gmsh(gmsh_fixture("plate_order1.msh")); });
+  CHECK_THAT(order1, Contains("plate_order1.msh:") && Contains("wrong element order") &&
+                         Contains("gmsh -2 -order 2"));
+  const std::string quad = message_of([] { read_gmsh(gmsh_fixture("plate_quad.msh")); });
+  CHECK_THAT(quad, Contains("quadrangle") && Contains("remove Recombine") &&
+                       Contains("gmsh -2 -order 2"));
+  const std::string z = message_of([] { read_gmsh(gmsh_fixture("plate_z.msh")); });
+  CHECK_THAT(z, Contains("plate_z.msh:") && Contains("z = 0.5") && Contains("plane z = 0"));
+  const std::string bin22 = message_of([] { read_gmsh(gmsh_fixture("plate_22_bin.msh")); });
+  CHECK_THAT(bin22, Contains("binary .msh 2.2") && Contains("-format msh41"));
+}
+
+TEST_CASE("fem: Gmsh reader: messages never say line 0 and show binary bytes capped and escaped",
+          "[structure_fem][gmsh]") {
+  std::istringstream empty("");
+  CHECK(message_of([&] { read_gmsh(empty, "empty.msh"); }) ==
+        "empty.msh: empty file (need a Gmsh .msh file)");
+  std::istringstream blank("\n\n  \n");
+  CHECK(message_of([&] { read_gmsh(blank, "blank.msh"); }) ==
+        "blank.msh: empty file (need a Gmsh .msh file)");
+  std::istringstream header("$MeshFormat\n");
+  CHECK(message_of([&] { read_gmsh(header, "header.msh"); }) ==
+        "header.msh:1: unexpected end of file while reading the format version (truncated file?)");
+
+  // 2,000 bytes of binary garbage where a node count belongs.
+  std::string garbage = "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n";
+  for (int i = 0; i < 2000; ++i) garbage += static_cast<char>(0x80 + (i * 37) % 120);
+  std::istringstream bad(garbage);
+  const std::string m = message_of([&] { read_gmsh(bad, "garbage.msh"); });
+  CHECK_THAT(m, Contains("garbage.msh:5: expected an integer for the number of node blocks") &&
+                    Contains("\\x80") && Contains("..."));
+  CHECK(m.size() < 300);
+  CHECK(std::none_of(m.begin(), m.end(),
+                     [](char c) { return static_cast<unsigned char>(c) >= 0x80 || c == '\n'; }));
+
+  // A binary file cut inside its nodes.
+  std::ifstream in(gmsh_fixture("plate_41_bin.msh"), std::ios::binary);
+  std::string whole{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  std::istringstream cut(whole.substr(0, whole.find("$EndNodes") - 100));
+  CHECK(message_of([&] { read_gmsh(cut, "cut.msh"); }) ==
+        "cut.msh: unexpected end of file while reading a node coordinate (truncated file?)");
 }

@@ -1,10 +1,18 @@
 #include "fsi_app/output/fields_file.hpp"
 
 #include "fsi/core/error.hpp"
+#include "fsi_app/output/text_file.hpp"
 
-#include <fstream>
+#include <cerrno>
+#include <cstring>
+#include <fcntl.h>
 #include <hdf5.h>
+#include <limits>
 #include <sstream>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <sys/statvfs.h>
+#include <unistd.h>
 
 namespace fsi::app {
 
@@ -82,15 +90,72 @@ double read_frame_time(const std::filesystem::path& h5, std::int64_t file, int f
   return time;
 }
 
+namespace {
+
+/// HDF5 1.10 crashes in its exit handler (H5_term_library, SIGSEGV) on a file whose close failed,
+/// as the close of a broken fields.h5 does (below). Closing is this code's job, file by file, so
+/// the handler is not installed: H5dont_atexit must come before any other HDF5 call, hence a
+/// static initializer.
+[[maybe_unused]] const bool kNoHdf5ExitHandler = [] { return H5dont_atexit() >= 0; }();
+
+/// Bytes fields.h5 may still grow by: the free space of its file system, and the room below
+/// RLIMIT_FSIZE (a write past it fails with EFBIG).
+std::uintmax_t room_for(const std::filesystem::path& h5) {
+  std::uintmax_t room = std::numeric_limits<std::uintmax_t>::max();
+  struct statvfs fs {};
+  if (::statvfs(h5.parent_path().empty() ? "." : h5.parent_path().c_str(), &fs) == 0)
+    room = static_cast<std::uintmax_t>(fs.f_bavail) * fs.f_frsize;
+  struct rlimit limit {};
+  struct stat st {};
+  if (::getrlimit(RLIMIT_FSIZE, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY &&
+      ::stat(h5.c_str(), &st) == 0) {
+    const auto size = static_cast<std::uintmax_t>(st.st_size);
+    room = std::min(room, limit.rlim_cur > size ? limit.rlim_cur - size : 0);
+  }
+  return room;
+}
+
+std::uintmax_t size_of(const std::filesystem::path& file) {
+  std::error_code ec;
+  const auto size = std::filesystem::file_size(file, ec);
+  return ec ? 0 : size;
+}
+
+} // namespace
+
+template <class F> void FieldsFile::opened(F&& body) {
+  try {
+    guarded(body);
+  } catch (...) {
+    close(); // a constructor that throws runs no destructor
+    throw;
+  }
+}
+
+template <class F> void FieldsFile::guarded(F&& body) {
+  if (broken_)
+    h5_fail(h5_path_, "not written after an earlier error (every frame of " +
+                          xmf_path_.filename().string() + " is complete)");
+  try {
+    body();
+  } catch (...) {
+    broken_ = true;
+    poisoned_ = !refused_; // a refused frame wrote nothing
+    throw;
+  }
+}
+
 FieldsFile::FieldsFile(const std::filesystem::path& h5, const std::filesystem::path& xmf)
     : h5_path_(h5), xmf_path_(xmf) {
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
   file_ = H5Fcreate(h5.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
   if (file_ < 0) h5_fail(h5, "cannot create file");
-  H5Gclose(make_group(file_, "meshes", h5));
-  H5Gclose(make_group(file_, "frames", h5));
-  check(H5Fflush(file_, H5F_SCOPE_GLOBAL), h5, "flush failed");
-  write_xdmf();
+  opened([&] {
+    check(H5Gclose(make_group(file_, "meshes", h5)), h5, "cannot create group meshes");
+    check(H5Gclose(make_group(file_, "frames", h5)), h5, "cannot create group frames");
+    check(H5Fflush(file_, H5F_SCOPE_GLOBAL), h5, "flush failed");
+    write_xdmf();
+  });
 }
 
 FieldsFile::FieldsFile(const std::filesystem::path& h5, const std::filesystem::path& xmf,
@@ -100,78 +165,182 @@ FieldsFile::FieldsFile(const std::filesystem::path& h5, const std::filesystem::p
   file_ = H5Fopen(h5.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
   if (file_ < 0)
     throw InputError(h5.string() + ": cannot open (a restart continues the files of its run)");
-  for (const auto& grid : children(file_, "meshes", h5))
-    meshes_.push_back({grid, dims_of(file_, "meshes/" + grid + "/t6", h5).front()});
-  const auto count = static_cast<int>(children(file_, "frames", h5).size());
-  if (count < keep_frames)
-    throw InputError(h5.string() + ": has " + std::to_string(count) +
-                     " frames, the checkpoint needs " + std::to_string(keep_frames));
-  for (int k = keep_frames; k < count; ++k) // frames after the checkpoint
-    check(H5Ldelete(file_, ("frames/" + std::to_string(k)).c_str(), H5P_DEFAULT), h5,
-          "cannot delete frame " + std::to_string(k));
-  for (int k = 0; k < keep_frames; ++k) {
-    const std::string frame = "frames/" + std::to_string(k);
-    FrameRecord record{read_frame_time(h5, file_, k), {}};
-    for (const auto& grid : children(file_, frame, h5)) {
-      GridRecord g{grid, dims_of(file_, frame + "/" + grid + "/position", h5).front(), {}};
-      for (const auto& field : children(file_, frame + "/" + grid, h5)) {
-        if (field == "position") continue;
-        const auto dims = dims_of(file_, frame + "/" + grid + "/" + field, h5);
-        g.fields.emplace_back(field, dims.size() > 1 ? static_cast<int>(dims[1]) : 1);
+  opened([&] {
+    for (const auto& grid : children(file_, "meshes", h5))
+      if (grid != "vertices")
+        meshes_.push_back({grid, dims_of(file_, "meshes/" + grid + "/t6", h5).front()});
+    if (H5Lexists(file_, "meshes/vertices", H5P_DEFAULT) > 0)
+      vertices_ = dims_of(file_, "meshes/vertices", h5).front();
+    const auto count = static_cast<int>(children(file_, "frames", h5).size());
+    if (count < keep_frames)
+      throw InputError(h5.string() + ": has " + std::to_string(count) +
+                       " frames, the checkpoint needs " + std::to_string(keep_frames));
+    for (int k = keep_frames; k < count; ++k) // frames after the checkpoint
+      check(H5Ldelete(file_, ("frames/" + std::to_string(k)).c_str(), H5P_DEFAULT), h5,
+            "cannot delete frame " + std::to_string(k));
+    for (int k = 0; k < keep_frames; ++k) {
+      const std::string frame = "frames/" + std::to_string(k);
+      FrameRecord record{read_frame_time(h5, file_, k), {}};
+      for (const auto& grid : children(file_, frame, h5)) {
+        GridRecord g{grid, dims_of(file_, frame + "/" + grid + "/position", h5).front(), {}};
+        for (const auto& field : children(file_, frame + "/" + grid, h5)) {
+          if (field == "position") continue;
+          const auto dims = dims_of(file_, frame + "/" + grid + "/" + field, h5);
+          g.fields.emplace_back(field, dims.size() > 1 ? static_cast<int>(dims[1]) : 1);
+        }
+        record.grids.push_back(std::move(g));
       }
-      record.grids.push_back(std::move(g));
+      frames_.push_back(std::move(record));
     }
-    frames_.push_back(std::move(record));
-  }
-  check(H5Fflush(file_, H5F_SCOPE_GLOBAL), h5, "flush failed");
-  write_xdmf();
+    check(H5Fflush(file_, H5F_SCOPE_GLOBAL), h5, "flush failed");
+    write_xdmf();
+    restarted_ = true;
+  });
 }
 
 FieldsFile::~FieldsFile() {
+  close();
+}
+
+void FieldsFile::close() noexcept {
+  if (poisoned_ && file_ >= 0) {
+    // A write failed inside HDF5: its cache holds metadata that the file on disk lacks, and
+    // writing what still fits (the superblock with the new end of file, say) makes the file
+    // unreadable. HDF5's descriptor is pointed at /dev/null, so the close writes nothing into
+    // fields.h5, which stays as its last flush left it (every frame the XDMF names). The close
+    // then fails (it cannot truncate /dev/null) and leaves its id half-closed: harmless, since
+    // no exit handler goes back to it (kNoHdf5ExitHandler).
+    void* handle = nullptr;
+    if (H5Fget_vfd_handle(file_, H5P_DEFAULT, &handle) >= 0 && handle != nullptr) {
+      const int sink = ::open("/dev/null", O_RDWR | O_CLOEXEC);
+      if (sink >= 0) {
+        ::dup2(sink, *static_cast<int*>(handle));
+        ::close(sink);
+      }
+    }
+  }
   if (frame_group_ >= 0) H5Gclose(frame_group_);
   if (file_ >= 0) H5Fclose(file_);
+  frame_group_ = -1;
+  file_ = -1;
 }
 
 void FieldsFile::add_mesh(const std::string& grid, const std::vector<std::int64_t>& t6) {
-  const hid_t g = make_group(file_, "meshes/" + grid, h5_path_);
-  write_array(g, "t6", H5T_NATIVE_INT64, t6.data(), {t6.size() / 6, 6}, h5_path_);
-  H5Gclose(g);
-  meshes_.push_back({grid, t6.size() / 6});
+  guarded([&] {
+    const hid_t g = make_group(file_, "meshes/" + grid, h5_path_);
+    try {
+      write_array(g, "t6", H5T_NATIVE_INT64, t6.data(), {t6.size() / 6, 6}, h5_path_);
+    } catch (...) {
+      H5Gclose(g);
+      throw;
+    }
+    check(H5Gclose(g), h5_path_, "cannot close group " + grid);
+    meshes_.push_back({grid, t6.size() / 6});
+  });
 }
 
 void FieldsFile::begin_frame(double time) {
-  const std::string name = "frames/" + std::to_string(frames_.size());
-  frame_group_ = make_group(file_, name, h5_path_);
-  const hid_t space = H5Screate(H5S_SCALAR);
-  const hid_t attr =
-      H5Acreate2(frame_group_, "time", H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT);
-  check(H5Awrite(attr, H5T_NATIVE_DOUBLE, &time), h5_path_, "cannot write frame time");
-  H5Aclose(attr);
-  H5Sclose(space);
-  frames_.push_back({time, {}});
+  guarded([&] {
+    // Room for a frame: twice the largest frame so far and 64 KiB (index, metadata), checked
+    // before anything of it is written, so a full disk stops between frames.
+    const std::uintmax_t need = 2 * frame_bytes_ + (64U << 10);
+    const std::uintmax_t room = room_for(h5_path_);
+    if (room < need) {
+      refused_ = true;
+      h5_fail(h5_path_,
+              "no room for frame " + std::to_string(frames_.size()) + ": " + std::to_string(room) +
+                  " bytes left (free space, or room below the file size limit), a frame " +
+                  "needs about " + std::to_string(need) + " (disk full; every frame " + "of " +
+                  xmf_path_.filename().string() + " is complete)");
+    }
+    frame_start_size_ = size_of(h5_path_);
+    const std::string name = "frames/" + std::to_string(frames_.size());
+    frame_group_ = make_group(file_, name, h5_path_);
+    const hid_t space = H5Screate(H5S_SCALAR);
+    const hid_t attr =
+        H5Acreate2(frame_group_, "time", H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT);
+    const herr_t status = attr < 0 ? -1 : H5Awrite(attr, H5T_NATIVE_DOUBLE, &time);
+    if (attr >= 0) H5Aclose(attr);
+    H5Sclose(space);
+    check(status, h5_path_, "cannot write frame time");
+    frames_.push_back({time, {}});
+  });
+}
+
+void FieldsFile::ensure_vertices(std::size_t n) {
+  if (n <= vertices_) return;
+  // /meshes/vertices = 0, 1, ..., n - 1 (int64, extendible): each particle grid's vertex cells,
+  // named by a hyperslab of its first `points` entries.
+  hid_t set = -1;
+  if (vertices_ == 0 && H5Lexists(file_, "meshes/vertices", H5P_DEFAULT) <= 0) {
+    const hsize_t dims = n, max = H5S_UNLIMITED, chunk = 4096;
+    const hid_t space = H5Screate_simple(1, &dims, &max);
+    const hid_t dcpl = H5Pcreate(H5P_DATASET_CREATE);
+    H5Pset_chunk(dcpl, 1, &chunk);
+    set =
+        H5Dcreate2(file_, "meshes/vertices", H5T_STD_I64LE, space, H5P_DEFAULT, dcpl, H5P_DEFAULT);
+    H5Pclose(dcpl);
+    H5Sclose(space);
+  } else {
+    set = H5Dopen2(file_, "meshes/vertices", H5P_DEFAULT);
+    const hsize_t dims = n;
+    if (set >= 0 && H5Dset_extent(set, &dims) < 0) H5Dclose(set), set = -1;
+  }
+  if (set < 0) h5_fail(h5_path_, "cannot write dataset meshes/vertices");
+  std::vector<std::int64_t> index(n - vertices_);
+  for (std::size_t i = 0; i < index.size(); ++i)
+    index[i] = static_cast<std::int64_t>(vertices_ + i);
+  const hsize_t start = vertices_, count = index.size();
+  const hid_t file_space = H5Dget_space(set);
+  const hid_t mem_space = H5Screate_simple(1, &count, nullptr);
+  herr_t status = H5Sselect_hyperslab(file_space, H5S_SELECT_SET, &start, nullptr, &count, nullptr);
+  if (status >= 0)
+    status = H5Dwrite(set, H5T_NATIVE_INT64, mem_space, file_space, H5P_DEFAULT, index.data());
+  H5Sclose(mem_space);
+  H5Sclose(file_space);
+  if (H5Dclose(set) < 0) status = -1;
+  check(status, h5_path_, "cannot write dataset meshes/vertices");
+  vertices_ = n;
 }
 
 void FieldsFile::write_grid(const std::string& grid, const std::vector<double>& xy,
                             const std::vector<GridField>& fields) {
-  const hid_t g = make_group(frame_group_, grid, h5_path_);
-  const hsize_t n = xy.size() / 2;
-  write_array(g, "position", H5T_NATIVE_DOUBLE, xy.data(), {n, 2}, h5_path_);
-  GridRecord record{grid, n, {}};
-  for (const auto& f : fields) {
-    std::vector<hsize_t> dims = {n};
-    if (f.components > 1) dims.push_back(static_cast<hsize_t>(f.components));
-    write_array(g, f.name, H5T_NATIVE_DOUBLE, f.data, dims, h5_path_);
-    record.fields.emplace_back(f.name, f.components);
-  }
-  H5Gclose(g);
-  frames_.back().grids.push_back(std::move(record));
+  guarded([&] {
+    const bool mesh = std::any_of(meshes_.begin(), meshes_.end(),
+                                  [&](const MeshRecord& m) { return m.grid == grid; });
+    const hsize_t n = xy.size() / 2;
+    if (!mesh) ensure_vertices(n);
+    const hid_t g = make_group(frame_group_, grid, h5_path_);
+    GridRecord record{grid, n, {}};
+    try {
+      write_array(g, "position", H5T_NATIVE_DOUBLE, xy.data(), {n, 2}, h5_path_);
+      for (const auto& f : fields) {
+        std::vector<hsize_t> dims = {n};
+        if (f.components > 1) dims.push_back(static_cast<hsize_t>(f.components));
+        write_array(g, f.name, H5T_NATIVE_DOUBLE, f.data, dims, h5_path_);
+        record.fields.emplace_back(f.name, f.components);
+      }
+    } catch (...) {
+      H5Gclose(g);
+      throw;
+    }
+    check(H5Gclose(g), h5_path_, "cannot close group " + grid);
+    frames_.back().grids.push_back(std::move(record));
+  });
 }
 
 void FieldsFile::end_frame() {
-  H5Gclose(frame_group_);
-  frame_group_ = -1;
-  check(H5Fflush(file_, H5F_SCOPE_GLOBAL), h5_path_, "flush failed");
-  write_xdmf();
+  guarded([&] {
+    const herr_t closed = H5Gclose(frame_group_);
+    frame_group_ = -1;
+    check(closed, h5_path_, "cannot close frame group");
+    check(H5Fflush(file_, H5F_SCOPE_GLOBAL), h5_path_, "flush failed");
+    const std::uintmax_t size = size_of(h5_path_);
+    // The first frame of a file also allocates the file's own structures: not a frame's size.
+    if (size > frame_start_size_ && (frames_.size() > 1 || restarted_))
+      frame_bytes_ = std::max(frame_bytes_, size - frame_start_size_);
+    write_xdmf();
+  });
 }
 
 void FieldsFile::write_xdmf() const {
@@ -188,13 +357,25 @@ void FieldsFile::write_xdmf() const {
       const auto mesh = std::find_if(meshes_.begin(), meshes_.end(),
                                      [&](const MeshRecord& m) { return m.grid == g.grid; });
       x << "  <Grid Name=\"" << g.grid << "\" GridType=\"Uniform\">\n";
-      if (mesh != meshes_.end())
+      if (mesh != meshes_.end()) {
         x << "   <Topology TopologyType=\"Triangle_6\" NumberOfElements=\"" << mesh->elements
           << "\">\n    <DataItem Dimensions=\"" << mesh->elements
           << " 6\" NumberType=\"Int\" Precision=\"8\" Format=\"HDF\">" << h5 << ":/meshes/"
           << g.grid << "/t6</DataItem>\n   </Topology>\n";
-      else
-        x << "   <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << g.points << "\"/>\n";
+      } else if (g.points == 0) {
+        x << "   <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"0\" "
+             "NodesPerElement=\"1\"/>\n";
+      } else {
+        // One vertex cell per particle, with explicit connectivity: ParaView's default reader
+        // (Xdmf3ReaderS) makes no cells from an implicit Polyvertex; the legacy XDMFReader
+        // reads both forms.
+        x << "   <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << g.points
+          << "\" NodesPerElement=\"1\">\n    <DataItem ItemType=\"HyperSlab\" Dimensions=\""
+          << g.points << "\" Type=\"HyperSlab\">\n     <DataItem Dimensions=\"3 1\" "
+          << "Format=\"XML\">0 1 " << g.points << "</DataItem>\n     <DataItem Dimensions=\""
+          << vertices_ << "\" NumberType=\"Int\" Precision=\"8\" Format=\"HDF\">" << h5
+          << ":/meshes/vertices</DataItem>\n    </DataItem>\n   </Topology>\n";
+      }
       x << "   <Geometry GeometryType=\"XY\">\n    <DataItem Dimensions=\"" << g.points
         << " 2\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << base << g.grid
         << "/position</DataItem>\n   </Geometry>\n";
@@ -211,13 +392,8 @@ void FieldsFile::write_xdmf() const {
     x << " </Grid>\n";
   }
   x << "</Grid>\n</Domain>\n</Xdmf>\n";
-  const std::filesystem::path tmp = xmf_path_.string() + ".tmp";
-  {
-    std::ofstream out(tmp);
-    out << x.str();
-    if (!out) h5_fail(xmf_path_, "cannot write XDMF index");
-  }
-  std::filesystem::rename(tmp, xmf_path_);
+  // fields.xmf.tmp, renamed; removed when the write fails (not synced: rewritten every frame).
+  write_file_atomically(xmf_path_, x.str(), "output: ", false);
 }
 
 Dataset read_dataset(const std::filesystem::path& h5, const std::string& name) {

@@ -2,8 +2,12 @@
 
 #include "fsi/core/error.hpp"
 
+#include <cerrno>
+#include <cstring>
+#include <fcntl.h>
 #include <fstream>
 #include <string>
+#include <unistd.h>
 
 namespace fsi::app {
 
@@ -16,13 +20,40 @@ void keep_lines(const std::filesystem::path& file, std::size_t lines) {
   if (count < lines)
     throw InputError(file.string() + ": has " + std::to_string(count) +
                      " lines, the checkpoint needs " + std::to_string(lines));
+  write_file_atomically(file, kept);
+}
+
+void write_file_atomically(const std::filesystem::path& file, const void* data, std::size_t size,
+                           const std::string& prefix, bool sync) {
   const std::filesystem::path tmp = file.string() + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::trunc);
-    out << kept;
-    if (!out) throw RunError("output: " + tmp.string() + ": cannot write");
+  auto fail = [&](const std::string& what, int error) {
+    std::error_code ignored;
+    std::filesystem::remove(tmp, ignored);
+    throw RunError(prefix + file.string() + ": " + what + ": " + std::strerror(error));
+  };
+  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) fail("cannot create " + tmp.filename().string(), errno);
+  const char* p = static_cast<const char*>(data);
+  std::size_t left = size;
+  while (left > 0) {
+    const ssize_t n = ::write(fd, p, left);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      const int error = n < 0 ? errno : ENOSPC;
+      ::close(fd);
+      fail("cannot write", error);
+    }
+    p += n, left -= static_cast<std::size_t>(n);
   }
-  std::filesystem::rename(tmp, file);
+  if (sync && ::fsync(fd) != 0) {
+    const int error = errno;
+    ::close(fd);
+    fail("cannot flush to disk", error);
+  }
+  if (::close(fd) != 0) fail("cannot close", errno);
+  std::error_code ec;
+  std::filesystem::rename(tmp, file, ec);
+  if (ec) fail("cannot rename " + tmp.filename().string(), ec.value());
 }
 
 } // namespace fsi::app

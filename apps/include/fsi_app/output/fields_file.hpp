@@ -2,13 +2,19 @@
 // fields.h5 + fields.xmf: a time series of grids (particle clouds and T6 meshes) that ParaView
 // opens through the XDMF file. Each finished frame is flushed to disk and the XDMF rewritten
 // (to a temporary name, then renamed), so a killed run leaves every finished frame readable and
-// the XDMF names only datasets that exist.
+// the XDMF names only datasets that exist. A full disk stops the run between frames (each frame
+// first checks for room: twice the largest frame so far); a write that fails all the same marks
+// the file broken: nothing more is written to it, and it is closed as its last flush left it.
+// (The room check is a rule of thumb; the broken-file path is what keeps the frames safe.)
+// Every failure throws RunError `output: FILE: what`.
 //
 // A restart reopens the pair, keeps the first frames (those before its checkpoint), deletes the
 // others and rewrites the XDMF; groups track creation order so the index comes out the same.
 //
 // HDF5 layout:
 //   /meshes/<grid>/t6            int64 [elements x 6], written once per mesh grid
+//   /meshes/vertices             int64 [n]: 0 .. n-1, n the largest particle count so far; a
+//                                particle grid's vertex cells (XDMF Polyvertex, one node each)
 //   /frames/<k>                  attribute `time` (s)
 //   /frames/<k>/<grid>/position  float64 [points x 2]
 //   /frames/<k>/<grid>/<field>   float64 [points] or [points x 2]
@@ -65,12 +71,25 @@ private:
     std::size_t elements = 0;
   };
   void write_xdmf() const;
+  /// Runs `body`; after any exception the file is broken and every later call throws.
+  template <class F> void guarded(F&& body);
+  /// The same in a constructor: on an exception the file is closed before it propagates.
+  template <class F> void opened(F&& body);
+  void close() noexcept;
+  void ensure_vertices(std::size_t n);
 
   std::filesystem::path h5_path_, xmf_path_;
   std::int64_t file_ = -1;
   std::int64_t frame_group_ = -1;
   std::vector<FrameRecord> frames_;
   std::vector<MeshRecord> meshes_;
+  std::size_t vertices_ = 0;       ///< entries of /meshes/vertices
+  std::uintmax_t frame_bytes_ = 0; ///< largest growth of fields.h5 by one frame
+  std::uintmax_t frame_start_size_ = 0;
+  bool broken_ = false;   ///< a write failed or a frame was refused: nothing more is written
+  bool refused_ = false;  ///< a frame was refused for want of room (nothing of it written)
+  bool poisoned_ = false; ///< a write failed inside HDF5 (see close())
+  bool restarted_ = false;
 };
 
 /// Reads one float64 or int64 dataset back (tests, restart tools): values and dimensions.
