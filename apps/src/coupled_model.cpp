@@ -108,22 +108,23 @@ void CoupledModel::open_logs(const std::filesystem::path& out, bool resume) {
   if (!resume) {
     *step_log_ << "step,time,dt,iterations,residual_initial,residual_final,omega,converged,"
                   "seconds_fluid,seconds_structure,seconds_coupler";
-    for (const auto& [name, f] : fluid_->force_parts()) *step_log_ << ",fx_" << name << ",fy_" << name;
+    for (const auto& [name, f] : fluid_->force_parts())
+      *step_log_ << ",fx_" << name << ",fy_" << name;
     *step_log_ << '\n';
   }
   // The fluid's force on the structures (N/m) of the step's last iteration, by the term that
   // carries it (FluidPart::force_parts).
-  scheme_->set_step_callback([log = step_log_.get(),
-                              fluid = fluid_.get()](const coupling::StepStats& s) {
-    *log << s.step << ',' << s.t << ',' << s.dt << ',' << s.iterations << ',' << s.residual_initial
-         << ',' << s.residual_final << ',';
-    if (s.omega) *log << *s.omega;
-    *log << ',' << (s.converged ? 1 : 0) << ',' << s.time_fluid << ',' << s.time_structure << ','
-         << s.time_coupler;
-    for (const auto& [name, f] : fluid->force_parts()) *log << ',' << f.x() << ',' << f.y();
-    *log << '\n';
-    if (s.step % 1000 == 999) log->flush();
-  });
+  scheme_->set_step_callback(
+      [log = step_log_.get(), fluid = fluid_.get()](const coupling::StepStats& s) {
+        *log << s.step << ',' << s.t << ',' << s.dt << ',' << s.iterations << ','
+             << s.residual_initial << ',' << s.residual_final << ',';
+        if (s.omega) *log << *s.omega;
+        *log << ',' << (s.converged ? 1 : 0) << ',' << s.time_fluid << ',' << s.time_structure
+             << ',' << s.time_coupler;
+        for (const auto& [name, f] : fluid->force_parts()) *log << ',' << f.x() << ',' << f.y();
+        *log << '\n';
+        if (s.step % 1000 == 999) log->flush();
+      });
 }
 
 void CoupledModel::flush_logs() {

@@ -14,8 +14,8 @@ namespace fsi::app {
 std::shared_ptr<const erp::Motion> make_motion(const WallSpec& wall);
 
 /// Reads every motion table of the scene's walls and checks that it covers the run, 0 ..
-/// time.end (unless the motion says hold: true). InputError `SCENE:LINE: walls[i].motion.table: TABLE[:ROW]: what`, before any model
-/// is built.
+/// time.end (unless the motion says hold: true). InputError `SCENE:LINE: walls[i].motion.table:
+/// TABLE[:ROW]: what`, before any model is built.
 void check_motion_tables(const Scene& scene);
 
 /// The wall called `name`; fail_at(line, key) if there is none or it has no motion.

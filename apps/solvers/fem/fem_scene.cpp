@@ -11,7 +11,7 @@ MeshSpec read_mesh(Section s) {
   MeshSpec m;
   const bool doc = s.context().documenting();
   m.kind = s.choice("kind", {"rectangle", "gmsh"}, "",
-                    "built-in structured T6 rectangle, or a Gmsh 4.1 file of 6-node triangles");
+                    "built-in structured T6 rectangle, or a Gmsh file of 6-node triangles");
   if (doc || m.kind == "rectangle") {
     m.origin = s.vec2("origin", Vec2::Zero(), "lower-left corner, m");
     m.width = s.real("width", Range::positive(), "m");
@@ -19,7 +19,10 @@ MeshSpec read_mesh(Section s) {
     m.elements_x = s.integer("elements_x", Range::closed(1, 10000), "element columns");
     m.elements_y = s.integer("elements_y", Range::closed(1, 10000), "element rows");
   }
-  if (doc || m.kind == "gmsh") m.file = s.file("file", "Gmsh .msh (format 4.1 ASCII)");
+  if (doc || m.kind == "gmsh")
+    m.file = s.file(
+        "file",
+        "Gmsh .msh: format 4.1 (ASCII or binary) or 2.2 (ASCII), second order (gmsh -2 -order 2)");
   s.finish();
   return m;
 }

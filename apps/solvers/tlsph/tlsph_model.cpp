@@ -88,9 +88,8 @@ private:
 };
 
 TlsphModel::TlsphModel(const Scene& scene, const StructureBlock& block)
-    : name_(block.name), region_(block.as<TlsphSpec>().region),
-      solid_(build_solid(scene, block)), interface_(solid_->interface_mesh()),
-      adapter_(std::make_unique<Adapter>(*this)) {
+    : name_(block.name), region_(block.as<TlsphSpec>().region), solid_(build_solid(scene, block)),
+      interface_(solid_->interface_mesh()), adapter_(std::make_unique<Adapter>(*this)) {
   for (const auto& p : scene.output.probes)
     if (p.structure == block.name)
       probe_particles_.emplace_back(p.name, solid_->nearest_particle(*p.point));

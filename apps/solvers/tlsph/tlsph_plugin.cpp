@@ -19,7 +19,8 @@ void check(const Scene& scene, std::size_t index, Section& s, std::vector<Sectio
     if (t.clamped.empty()) s.fail("clamped_motion", "needs clamped boxes to move");
     const auto w = std::find_if(scene.walls.begin(), scene.walls.end(),
                                 [&](const WallSpec& x) { return x.name == t.clamped_motion; });
-    if (w == scene.walls.end()) s.fail("clamped_motion", "no wall named '" + t.clamped_motion + "'");
+    if (w == scene.walls.end())
+      s.fail("clamped_motion", "no wall named '" + t.clamped_motion + "'");
     if (!w->motion) s.fail("clamped_motion", "wall '" + t.clamped_motion + "' has no motion");
   }
   if (scene.fluid && t.interface.empty()) // a fluid and a structure are coupled

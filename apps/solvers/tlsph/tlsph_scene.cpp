@@ -52,8 +52,8 @@ std::shared_ptr<const SolverSpec> read_tlsph(Section& s) {
   if (!doc) {
     const Vec2 size = t.region.max - t.region.min;
     if (t.dp * 3.0 > size.minCoeff())
-      s.fail("dp", "fewer than 3 particles across the region (" + std::to_string(size.x()) +
-                       " x " + std::to_string(size.y()) + " m)");
+      s.fail("dp", "fewer than 3 particles across the region (" + std::to_string(size.x()) + " x " +
+                       std::to_string(size.y()) + " m)");
     for (const auto& tag : t.interface)
       if (tag != "bottom" && tag != "right" && tag != "top" && tag != "left")
         s.fail("interface", "unknown side '" + tag + "' (bottom, right, top, left)");
