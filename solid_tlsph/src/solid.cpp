@@ -241,10 +241,14 @@ void TlsphSolid::build_interface(const SolidGeometry& geometry) {
     return tags.empty() ||
            std::find(tags.begin(), tags.end(), geometry.outline_tags[e]) != tags.end();
   };
+  // Interface nodes lie ON the tagged outline, each attached to a surface particle: the
+  // particle's projection onto its nearest tagged edge, and every vertex of a tagged edge
+  // (attached to the particle nearest to it), so the chain is watertight down to a clamp or a
+  // floor. Clamped particles belong to it too (their loads are reactions).
   struct Node {
-    double s;
-    std::uint32_t i;
-    Vec2 n0;
+    double s;        // arc length along the outline
+    std::uint32_t i; // the attached particle
+    Vec2 X, n0;      // reference position on the outline, outward normal
   };
   std::vector<Node> nodes;
   const double band = options_.dp; // the outer lattice layer lies at dp / 2 from the outline
@@ -254,20 +258,32 @@ void TlsphSolid::build_interface(const SolidGeometry& geometry) {
     // belongs to every edge within the band; the first tagged one wins a tie).
     double best = std::numeric_limits<double>::max(), best_xi = 0.0;
     std::size_t best_e = m;
-    Vec2 normal = Vec2::Zero();
     for (std::size_t e = 0; e < m; ++e) {
       const Vec2 &a = outline[e], &b = outline[(e + 1) % m];
       double xi = 0.0;
       const double d = point_segment_distance(X, a, b, &xi);
       if (d >= band) continue;
       surface_[i] = 1;
-      const Vec2 t = (b - a).normalized();
-      normal += Vec2(t.y(), -t.x()); // outward for a counter-clockwise outline
       if (tagged(e) && d < best) best = d, best_e = e, best_xi = xi;
     }
-    if (best_e == m || clamped_[i]) continue;
+    if (best_e == m) continue;
+    const Vec2 &a = outline[best_e], &b = outline[(best_e + 1) % m];
+    const Vec2 t = (b - a).normalized();
     nodes.push_back({s0[best_e] + best_xi * (s0[best_e + 1] - s0[best_e]),
-                     static_cast<std::uint32_t>(i), normal.normalized()});
+                     static_cast<std::uint32_t>(i), a + best_xi * (b - a), Vec2(t.y(), -t.x())});
+  }
+  for (std::size_t v = 0; v < m; ++v) { // vertex v joins edge v - 1 and edge v
+    const std::size_t before = (v + m - 1) % m;
+    if (!tagged(v) && !tagged(before)) continue;
+    const Vec2& X = outline[v];
+    Vec2 normal = Vec2::Zero();
+    for (const std::size_t e : {before, v})
+      if (tagged(e)) {
+        const Vec2 t = (outline[(e + 1) % m] - outline[e]).normalized();
+        normal += Vec2(t.y(), -t.x()); // outward for a counter-clockwise outline
+      }
+    nodes.push_back(
+        {s0[v], static_cast<std::uint32_t>(nearest_particle(X)), X, normal.normalized()});
   }
   std::stable_sort(nodes.begin(), nodes.end(),
                    [](const Node& a, const Node& b) { return a.s < b.s; });
@@ -277,11 +293,13 @@ void TlsphSolid::build_interface(const SolidGeometry& geometry) {
   for (const Node& node : nodes) {
     interface_.push_back(node.i);
     interface_n0_.push_back(node.n0);
-    interface_mesh_.X0.emplace_back(X0_[node.i], Y0_[node.i]);
+    interface_offset_.push_back(node.X - Vec2(X0_[node.i], Y0_[node.i]));
+    interface_mesh_.X0.push_back(node.X);
   }
-  // Order-1 edges between neighbours along the outline (lattice neighbours, including the
-  // diagonal step around a corner); the chain closes when the whole outline is interface.
-  const double link = 1.5 * options_.dp;
+  // Order-1 edges between neighbours along the outline (dp apart along an edge, 1.5 dp from a
+  // vertex to the first projection past a corner); the chain closes when the whole outline is
+  // interface.
+  const double link = 2.0 * options_.dp;
   const std::size_t k = nodes.size();
   for (std::size_t a = 0; a + 1 < k; ++a)
     if ((interface_mesh_.X0[a + 1] - interface_mesh_.X0[a]).norm() < link)
@@ -529,9 +547,14 @@ int TlsphSolid::advance(double t, double dt) {
   return steps;
 }
 
+// A node moves with its particle's deformation: x = x_p + F_p (X - X_p); v and a are the
+// particle's (the rotation of the dp/2 offset neglected, O(dp |grad v|)).
 std::vector<Vec2> TlsphSolid::interface_positions() const {
   std::vector<Vec2> out;
-  for (const auto i : interface_) out.emplace_back(x_[i], y_[i]);
+  for (std::size_t k = 0; k < interface_.size(); ++k) {
+    const auto i = interface_[k];
+    out.push_back(Vec2(x_[i], y_[i]) + deformation_gradient(i) * interface_offset_[k]);
+  }
   return out;
 }
 std::vector<Vec2> TlsphSolid::interface_velocities() const {
@@ -567,8 +590,8 @@ void TlsphSolid::set_interface_loads(const std::vector<Vec2>& forces) {
                      std::to_string(interface_.size()) + " interface nodes");
   std::fill(fx_.begin(), fx_.end(), 0.0);
   std::fill(fy_.begin(), fy_.end(), 0.0);
-  for (std::size_t k = 0; k < interface_.size(); ++k)
-    fx_[interface_[k]] = forces[k].x(), fy_[interface_[k]] = forces[k].y();
+  for (std::size_t k = 0; k < interface_.size(); ++k) // a particle may carry several nodes
+    fx_[interface_[k]] += forces[k].x(), fy_[interface_[k]] += forces[k].y();
   update_loaded();
   compute_acceleration(); // the loads act from now on (a^n of the next half kick)
 }

@@ -1,6 +1,8 @@
 // Patch test (eq. 13 with B0 of eq. 14), the coupling interface, the guards and the options.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+
 #include <cmath>
 
 #include "common.hpp"
@@ -70,33 +72,43 @@ TEST_CASE("tlsph: without the correction the surface F is measurably wrong",
   CHECK(e.surface > 10.0 * e.interior);
 }
 
-TEST_CASE("tlsph: the interface is the surface particles, ordered counter-clockwise",
+TEST_CASE("tlsph: the interface lies on the outline, ordered counter-clockwise",
           "[solid_tlsph][interface]") {
   TlsphOptions o;
   o.dp = 0.01;
   TlsphSolid s(fill_rectangle({0.0, 0.0}, {0.3, 0.12}, o.dp), o);
   const fsi::InterfaceMesh m = s.interface_mesh();
   CHECK(m.order == 1);
-  CHECK(m.node_count() == 2 * (30 + 12) - 4);
-  CHECK(m.edges.size() == m.node_count()); // closed loop
+  // Each surface particle's projection onto its nearest edge, and the 4 vertices.
+  CHECK(m.node_count() == 2 * (30 + 12) - 4 + 4);
+  CHECK(m.edges.size() == m.node_count());           // closed loop
+  for (std::size_t k = 0; k < m.node_count(); ++k) { // on the outline, attached within dp
+    const Vec2 X = m.X0[k];
+    const double to_outline = std::min({X.x(), 0.3 - X.x(), X.y(), 0.12 - X.y()});
+    CHECK(std::abs(to_outline) < 1e-15);
+    CHECK((s.reference_position(s.interface_particles()[k]) - X).norm() < o.dp);
+  }
   double signed_area2 = 0.0;
   for (const auto& e : m.edges) {
     const Vec2 a = m.X0[e[0]], b = m.X0[e[2]];
-    CHECK((b - a).norm() < 1.5 * o.dp);
+    CHECK((b - a).norm() <= 1.5 * o.dp + 1e-15); // dp along a side, 1.5 dp past a corner
     signed_area2 += a.x() * b.y() - b.x() * a.y();
     // solid on the left of a -> b: the block's centre is to the left
     const Vec2 t = b - a, r = Vec2(0.15, 0.06) - a;
     CHECK(t.x() * r.y() - t.y() * r.x() > 0.0);
   }
-  // The polygon through the surface particles encloses (0.3 - dp) x (0.12 - dp).
-  CHECK_THAT(0.5 * signed_area2, Catch::Matchers::WithinRel(0.29 * 0.11, 1e-12));
+  // The polygon through the nodes is the outline itself: no gap for a fluid to pass.
+  CHECK_THAT(0.5 * signed_area2, Catch::Matchers::WithinRel(0.3 * 0.12, 1e-12));
 
-  // Only the tagged edge: an open chain of 12 nodes on the right side.
+  // Only the tagged edge: an open chain of 12 projections and the 2 end vertices on the right.
   o.interface_tags = {"right"};
   TlsphSolid r(fill_rectangle({0.0, 0.0}, {0.3, 0.12}, o.dp), o);
   const auto mr = r.interface_mesh();
-  CHECK(mr.node_count() == 12);
-  CHECK(mr.edges.size() == 11);
+  CHECK(mr.node_count() == 14);
+  CHECK(mr.edges.size() == 13);
+  for (const auto& X : mr.X0) CHECK(X.x() == 0.3);
+  CHECK(mr.X0.front().y() == 0.0);
+  CHECK(mr.X0.back().y() == 0.12);
   for (const auto& e : mr.edges) CHECK(mr.X0[e[2]].y() > mr.X0[e[0]].y()); // upwards on the right
 }
 

@@ -131,10 +131,12 @@ public:
   double dt_scale() const { return dt_scale_; }
 
   // --- coupling interface ---
-  /// Surface particles of the tagged edges, ordered along the outline (counter-clockwise:
-  /// solid on the left of a -> b), order-1 edges between neighbours along it.
+  /// Nodes on the tagged outline edges (each surface particle's projection onto its nearest
+  /// tagged edge, and the edges' vertices), ordered along the outline (counter-clockwise: solid
+  /// on the left of a -> b), order-1 edges between neighbours along it. Each node is attached to
+  /// a particle (interface_particles(); clamped ones included: their loads are reactions).
   InterfaceMesh interface_mesh() const;
-  /// Particle index of interface node k.
+  /// Particle each interface node k is attached to (a corner particle carries several).
   const std::vector<std::uint32_t>& interface_particles() const { return interface_; }
   /// Current x, v, a of the interface nodes.
   std::vector<Vec2> interface_positions() const;
@@ -233,6 +235,7 @@ private:
   std::vector<std::uint32_t> loaded_;    // free particles with a nonzero external force
   std::vector<std::uint32_t> interface_; // particle of each interface node
   std::vector<Vec2> interface_n0_;       // reference outward normals
+  std::vector<Vec2> interface_offset_;   // node X minus its particle's X0 (onto the outline)
   InterfaceMesh interface_mesh_;
 };
 
