@@ -1,5 +1,7 @@
 #include "fsi_app/scene_reader.hpp"
 
+#include <yaml-cpp/eventhandler.h>
+
 #include "fsi/core/error.hpp"
 
 #include <algorithm>
@@ -68,21 +70,46 @@ std::string read_scene_file(const std::filesystem::path& file) {
   return text;
 }
 
+namespace {
+/// Where each YAML document starts; the content of the documents is not kept.
+struct DocumentStarts final : YAML::EventHandler {
+  std::vector<YAML::Mark> marks;
+  void OnDocumentStart(const YAML::Mark& mark) override { marks.push_back(mark); }
+  void OnDocumentEnd() override {}
+  void OnNull(const YAML::Mark&, YAML::anchor_t) override {}
+  void OnAlias(const YAML::Mark&, YAML::anchor_t) override {}
+  void OnScalar(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                const std::string&) override {}
+  void OnSequenceStart(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                       YAML::EmitterStyle::value) override {}
+  void OnSequenceEnd() override {}
+  void OnMapStart(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                  YAML::EmitterStyle::value) override {}
+  void OnMapEnd() override {}
+};
+} // namespace
+
 YAML::Node load_scene_yaml(const std::string& text, const std::string& file) {
-  std::vector<YAML::Node> documents;
+  // The first document, then whether a second one starts: at most two documents are parsed
+  // (YAML::LoadAll runs out of memory on some malformed inputs, making empty documents forever).
+  YAML::Node first;
+  DocumentStarts starts;
   try {
-    documents = YAML::LoadAll(text);
+    first = YAML::Load(text);
+    std::istringstream in(text);
+    YAML::Parser parser(in);
+    while (starts.marks.size() < 2 && parser.HandleNextDocument(starts)) {
+    }
   } catch (const YAML::DeepRecursion& e) {
     throw InputError(file + ":" + std::to_string(e.mark.line + 1) + ": yaml: nested too deeply (" +
                      std::to_string(e.depth()) + " levels)");
   } catch (const YAML::ParserException& e) {
     throw InputError(file + ":" + std::to_string(e.mark.line + 1) + ": yaml: " + e.msg);
   }
-  if (documents.empty()) return YAML::Node(YAML::NodeType::Null);
-  if (documents.size() > 1) {
+  if (starts.marks.size() > 1) {
     // The line of the '---' that opens the second document: the last separator line at or
     // before its content (a document of nothing but '---' has no mark).
-    const int content = documents[1].Mark().line + 1;
+    const int content = starts.marks[1].line + 1;
     int second = content, line = 1;
     for (std::size_t i = 0; i <= text.size(); ++i) {
       const bool start = i == 0 || text[i - 1] == '\n';
@@ -94,10 +121,10 @@ YAML::Node load_scene_yaml(const std::string& text, const std::string& file) {
     }
     throw InputError(file + ":" + std::to_string(std::max(second, 1)) +
                      ": yaml: a second YAML document (the scene is the document of line " +
-                     std::to_string(std::max(documents[0].Mark().line + 1, 1)) +
+                     std::to_string(std::max(starts.marks[0].line + 1, 1)) +
                      "); a scene file holds one document: remove the '---' and what follows");
   }
-  return documents[0];
+  return first;
 }
 
 Section::Section(YAML::Node node, std::string path, ReadContext& ctx, int key_line)
