@@ -78,6 +78,7 @@ const std::vector<std::string> kForceParts = {"total", "pressure", "repulsive", 
 ProbeSpec read_probe(Section s) {
   ProbeSpec p;
   p.line = s.line();
+  p.key = s.path();
   p.name = s.text("name", "column name in probes.csv (letters, digits, _)");
   p.quantity = s.choice("quantity", probe_quantities(), "",
                         "what is sampled: a node's displacement; a node's displacement in the "
@@ -363,6 +364,7 @@ Scene read_scene(Section top) {
   auto structure_sections = top.list("structures", "the structures");
   for (auto& st : structure_sections) {
     StructureBlock& b = scene.structures.emplace_back();
+    b.key = st.path();
     b.name = st.text("name", "structure name (probes refer to it)");
     read_solver_block(st, structure_plugins(), b, "structure");
     st.finish();

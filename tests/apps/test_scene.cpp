@@ -51,7 +51,7 @@ TEST_CASE("apps: a valid scene reads back its values", "[apps][scene]") {
   REQUIRE(s.output.probes.size() == 1);
   CHECK(s.output.probes[0].point->y() == 0.1);
   CHECK(s.output.fields == std::vector<std::string>{"velocity", "pressure", "pnd", "free_surface",
-                                                  "displacement", "von_mises", "det_F"});
+                                                    "displacement", "von_mises", "det_F"});
   // default: every plug-in's fields
   CHECK_FALSE(s.fluid);
 }
@@ -97,6 +97,20 @@ TEST_CASE("apps: each class of bad input names file, line and key, exit status 2
     CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
     CHECK(r.out.empty());
   }
+}
+
+TEST_CASE("apps: a structure's key is spelt as --set spells it in late messages too",
+          "[apps][scene]") {
+  // Mesh problems found while building the model name structures[i], not structures.<name>.
+  const std::string scene = data + "valid_structure.yaml";
+  auto r = cli({"check", scene, "--set", "structures[0].mesh.width=1e300"});
+  CHECK(r.status == 2);
+  CHECK(r.err.rfind(scene + ":14: structures[0].mesh: rectangle mesh: ", 0) == 0);
+  const std::string order1 = FSI_SOURCE_DIR "/tests/structure_fem/data/gmsh/plate_order1.msh";
+  r = cli({"check", scene, "--set", "structures[0].mesh={kind: gmsh, file: " + order1 + "}"});
+  CHECK(r.status == 2);
+  CHECK(r.err.rfind(scene + ":14: structures[0].mesh: ", 0) == 0);
+  CHECK(r.err.find("structures.beam") == std::string::npos);
 }
 
 TEST_CASE("apps: a bad override fails like a bad scene entry", "[apps][scene]") {

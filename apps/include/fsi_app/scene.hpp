@@ -29,6 +29,7 @@ struct ProbeSpec {
   std::optional<Vec2> box_min, box_max; ///< mean_pressure: the box averaged over
   std::string part = "total";           ///< wall_force: total|pressure|repulsive|viscous
   int line = 0;                         ///< scene line, for late messages
+  std::string key;                      ///< its path in messages, `output.probes[2]`
 };
 
 struct OutputSpec {
@@ -75,6 +76,7 @@ struct StructureBlock {
   std::string type;
   std::string name;
   int line = 0;
+  std::string key; ///< its path in messages, `structures[0]` (as `--set` spells it)
   std::shared_ptr<const SolverSpec> spec;
   template <class T> const T& as() const { return dynamic_cast<const T&>(*spec); }
 };

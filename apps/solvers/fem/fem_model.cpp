@@ -23,7 +23,11 @@ fem::Mesh build_mesh(const Scene& scene, const StructureBlock& block) {
     r.height = spec.mesh.height;
     r.elements_x = spec.mesh.elements_x;
     r.elements_y = spec.mesh.elements_y;
-    return fem::make_rectangle_mesh(r);
+    try {
+      return fem::make_rectangle_mesh(r);
+    } catch (const InputError& e) {
+      fail_at(scene, block.line, block.key + ".mesh", e.what());
+    }
   }
   std::vector<std::string> groups = spec.clamped;
   groups.insert(groups.end(), spec.interface.begin(), spec.interface.end());
@@ -31,7 +35,7 @@ fem::Mesh build_mesh(const Scene& scene, const StructureBlock& block) {
   try {
     return fem::read_gmsh(spec.mesh.file.string(), groups);
   } catch (const InputError& e) {
-    fail_at(scene, block.line, "structures." + block.name + ".mesh", e.what());
+    fail_at(scene, block.line, block.key + ".mesh", e.what());
   }
 }
 
@@ -57,7 +61,7 @@ int probe_node(const Scene& scene, const fem::Mesh& mesh, const ProbeSpec& probe
   const int count = static_cast<int>(mesh.num_nodes());
   if (probe.node) {
     if (*probe.node >= count)
-      fail_at(scene, probe.line, "output.probes." + probe.name + ".node",
+      fail_at(scene, probe.line, probe.key + ".node",
               "node " + std::to_string(*probe.node) + " does not exist (the mesh has " +
                   std::to_string(count) + " nodes)");
     return *probe.node;
@@ -74,7 +78,7 @@ int probe_node(const Scene& scene, const fem::Mesh& mesh, const ProbeSpec& probe
     std::ostringstream msg;
     msg << "no node of structure '" << probe.structure << "' at (" << probe.point->x() << ", "
         << probe.point->y() << ")";
-    fail_at(scene, probe.line, "output.probes." + probe.name + ".point", msg.str());
+    fail_at(scene, probe.line, probe.key + ".point", msg.str());
   }
   return best;
 }
@@ -82,15 +86,15 @@ int probe_node(const Scene& scene, const fem::Mesh& mesh, const ProbeSpec& probe
 std::optional<TankFrame> tank_frame(const Scene& scene, const StructureBlock& block) {
   const StructureSpec& spec = block.as<StructureSpec>();
   if (spec.clamped_motion.empty()) return std::nullopt;
-  const WallSpec& wall = moving_wall(scene, spec.clamped_motion, block.line,
-                                     "structures." + block.name + ".clamped_motion");
+  const WallSpec& wall =
+      moving_wall(scene, spec.clamped_motion, block.line, block.key + ".clamped_motion");
   return TankFrame{make_motion(wall), wall.motion->pivot};
 }
 
 std::unique_ptr<fem::Structure> build_structure(const Scene& scene, const StructureBlock& block) {
   const StructureSpec& spec = block.as<StructureSpec>();
   fem::Mesh mesh = build_mesh(scene, block);
-  const std::string key = "structures." + block.name;
+  const std::string& key = block.key;
   for (const auto& tag : spec.clamped)
     if (!mesh.has_tag(tag))
       fail_at(scene, block.line, key + ".clamped", "no boundary '" + tag + "'");

@@ -35,8 +35,8 @@ std::unique_ptr<tlsph::TlsphSolid> build_solid(const Scene& scene, const Structu
   std::shared_ptr<const erp::Motion> motion;
   Vec2 pivot = Vec2::Zero();
   if (!t.clamped_motion.empty()) {
-    const WallSpec& wall = moving_wall(scene, t.clamped_motion, block.line,
-                                       "structures." + block.name + ".clamped_motion");
+    const WallSpec& wall =
+        moving_wall(scene, t.clamped_motion, block.line, block.key + ".clamped_motion");
     motion = make_motion(wall);
     pivot = wall.motion->pivot;
   }
@@ -57,7 +57,7 @@ std::unique_ptr<tlsph::TlsphSolid> build_solid(const Scene& scene, const Structu
     return std::make_unique<tlsph::TlsphSolid>(
         tlsph::fill_rectangle(t.region.min, t.region.max, t.dp), std::move(o));
   } catch (const InputError& e) {
-    fail_at(scene, block.line, "structures." + block.name, e.what());
+    fail_at(scene, block.line, block.key, e.what());
   }
 }
 
