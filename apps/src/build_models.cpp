@@ -1,15 +1,23 @@
 #include "fsi/core/error.hpp"
 #include "fsi_app/coupled_model.hpp"
+#include "fsi_app/output/interface_history.hpp"
 #include "fsi_app/run.hpp"
 #include "fsi_app/solver_plugin.hpp"
 
 namespace fsi::app {
 
+namespace {
+bool coupled(const Scene& scene) {
+  if (!scene.fluid || scene.structures.empty()) return false;
+  if (!scene.time.dt)
+    fail_at(scene, scene.fluid->line, "time.dt", "a coupled scene needs a fixed time step");
+  return true;
+}
+} // namespace
+
 std::vector<std::unique_ptr<Model>> build_models(const Scene& scene) {
   std::vector<std::unique_ptr<Model>> models;
-  if (scene.fluid && !scene.structures.empty()) {
-    if (!scene.time.dt)
-      fail_at(scene, scene.fluid->line, "time.dt", "a coupled scene needs a fixed time step");
+  if (coupled(scene)) {
     models.push_back(std::make_unique<CoupledModel>(scene));
     return models;
   }
@@ -17,6 +25,24 @@ std::vector<std::unique_ptr<Model>> build_models(const Scene& scene) {
   for (std::size_t i = 0; i < scene.structures.size(); ++i)
     models.push_back(find_structure_plugin(scene.structures[i].type)->build(scene, i));
   return models;
+}
+
+void check_models(const Scene& scene) {
+  std::vector<InterfaceMesh> interfaces;
+  std::vector<Polygon> solid;
+  std::size_t nodes = 0;
+  for (std::size_t i = 0; i < scene.structures.size(); ++i) {
+    StructureOutline o = find_structure_plugin(scene.structures[i].type)->validate(scene, i);
+    nodes += o.interface.node_count();
+    interfaces.push_back(std::move(o.interface));
+    solid.insert(solid.end(), o.occupied.begin(), o.occupied.end());
+  }
+  const bool both = coupled(scene);
+  if (scene.fluid)
+    find_fluid_plugin(scene.fluid->type)
+        ->validate(scene, both ? interfaces : std::vector<InterfaceMesh>{},
+                   both ? solid : std::vector<Polygon>{});
+  if (both) open_replay(scene, nodes);
 }
 
 } // namespace fsi::app

@@ -134,19 +134,21 @@ int dispatch(const Args& a, std::ostream& out, std::ostream& err, bool terminal)
   const Scene scene = load_scene(a.scene, a.overrides);
   check_motion_tables(scene);
   // Errors from the libraries (a mesher's "duplicate node") name no file: give them the scene's.
-  auto models = [&] {
+  auto named = [&](auto&& build) {
     try {
-      return build_models(scene);
+      return build();
     } catch (const InputError& e) {
       const std::string what = e.what();
       if (what.find(a.scene) != std::string::npos) throw;
       throw InputError(a.scene + ": " + what);
     }
-  }();
+  };
   if (a.command == "check") {
+    named([&] { check_models(scene); });
     out << a.scene << ": ok\n";
     return 0;
   }
+  auto models = named([&] { return build_models(scene); });
   if (a.threads > 0) set_num_threads(a.threads);
   RunOptions options{a.out, terminal, &err, a.restart};
   options.overwrite = a.overwrite;

@@ -35,6 +35,19 @@ private:
   coupling::InterfaceMotion motion_;
 };
 
+std::unique_ptr<InterfaceHistory> open_replay(const Scene& scene, std::size_t nodes) {
+  const CouplingSpec c = scene.coupling.value_or(CouplingSpec{});
+  const coupling::SchemeNeeds needs = coupling::builtin_registry().scheme_needs(c.options.scheme);
+  if (!needs.prescribed_motion && !needs.prescribed_loads) return nullptr;
+  const bool motion = needs.prescribed_motion;
+  auto replay = std::make_unique<InterfaceHistory>(motion ? c.motion : c.loads);
+  if (replay->nodes() != nodes)
+    fail_at(scene, c.line, motion ? "coupling.motion" : "coupling.loads",
+            (motion ? c.motion : c.loads).string() + " records " + std::to_string(replay->nodes()) +
+                " interface nodes, this interface has " + std::to_string(nodes));
+  return replay;
+}
+
 CoupledModel::~CoupledModel() = default;
 
 CoupledModel::CoupledModel(const Scene& scene) {
@@ -59,18 +72,12 @@ CoupledModel::CoupledModel(const Scene& scene) {
   coupling::Participants p;
   if (needs_.fluid) p.fluid = tap_.get();
   if (needs_.structure) p.structure = group_.get();
-  if (needs_.prescribed_motion || needs_.prescribed_loads) {
-    const bool motion = needs_.prescribed_motion;
-    replay_ = std::make_unique<InterfaceHistory>(motion ? c.motion : c.loads);
-    std::size_t nodes = 0;
-    for (const auto& mesh : interfaces) nodes += mesh.node_count();
-    if (replay_->nodes() != nodes)
-      fail_at(scene, c.line, motion ? "coupling.motion" : "coupling.loads",
-              (motion ? c.motion : c.loads).string() + " records " +
-                  std::to_string(replay_->nodes()) + " interface nodes, this interface has " +
-                  std::to_string(nodes));
+  std::size_t nodes = 0;
+  for (const auto& mesh : interfaces) nodes += mesh.node_count();
+  replay_ = open_replay(scene, nodes);
+  if (replay_) {
     InterfaceHistory* h = replay_.get();
-    if (motion)
+    if (needs_.prescribed_motion)
       p.prescribed_motion = [h](double t) { return h->motion_at(t); };
     else
       p.prescribed_loads = [h](double t) { return h->loads_at(t); };

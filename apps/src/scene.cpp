@@ -192,31 +192,6 @@ WallSpec read_wall(Section s) {
   return w;
 }
 
-// Reads the coupling options coupling/ declares (visit_options) from the block, its defaults,
-// ranges and names.
-class CouplingReader final : public OptionVisitor {
-public:
-  explicit CouplingReader(Section& s) : s_(s) {}
-  void name(const std::string& key, std::string& value, const std::vector<std::string>& allowed,
-            const std::string& doc) override {
-    value = s_.choice(key, allowed, value, doc);
-  }
-  void real(const std::string& key, double& value, const Range& range,
-            const std::string& doc) override {
-    value = s_.real(key, value, range, doc);
-  }
-  void integer(const std::string& key, int& value, const Range& range,
-               const std::string& doc) override {
-    value = s_.integer(key, value, range, doc);
-  }
-  void flag(const std::string& key, bool& value, const std::string& doc) override {
-    value = s_.boolean(key, value, doc);
-  }
-
-private:
-  Section& s_;
-};
-
 // Recording and one-way replay: the replayed file must cover every step of the run.
 void read_one_way(Section& s, const TimeSpec& time, CouplingSpec& c) {
   const bool doc = s.context().documenting();
@@ -253,7 +228,7 @@ void read_one_way(Section& s, const TimeSpec& time, CouplingSpec& c) {
 CouplingSpec read_coupling(Section s, const TimeSpec& time) {
   CouplingSpec c;
   c.line = s.line();
-  CouplingReader reader(s);
+  OptionReader reader(s);
   coupling::visit_options(c.options, coupling::builtin_registry(), reader);
   read_one_way(s, time, c);
   if (!s.context().documenting()) try { // the rules beyond each key's range

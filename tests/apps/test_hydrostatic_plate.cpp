@@ -25,7 +25,7 @@ TEST_CASE("apps: water column on a clamped plate settles to the FEM deflection u
   // Reference: the plate alone, rho g H on the top edge and gravity, solved statically.
   const double H = fluid.regions.front()[2].y() - fluid.regions.front()[0].y();
   auto alone = build_structure(scene, plate);
-  const double q = fluid.density * -scene.gravity.y() * H; // Pa
+  const double q = fluid.options.density * -scene.gravity.y() * H; // Pa
   alone->set_external_forces(fem::edge_traction_forces(alone->mesh(), "top", Vec2(0.0, -q)));
   alone->solve_static();
   const int node = probe_node(scene, alone->mesh(), mid_span);
@@ -33,7 +33,7 @@ TEST_CASE("apps: water column on a clamped plate settles to the FEM deflection u
 
   // Coupled: the fluid is damped until damping_time; the deflection is averaged after it.
   CoupledModel model(scene);
-  const double dt = *scene.time.dt, t_settled = fluid.damping_time;
+  const double dt = *scene.time.dt, t_settled = fluid.options.damping_time;
   const long steps = std::lround(scene.time.end / dt);
   double sum = 0.0;
   long samples = 0;

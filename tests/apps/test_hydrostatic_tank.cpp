@@ -32,10 +32,10 @@ TEST_CASE("apps: the hydrostatic tank settles: bottom pressure, speed and energy
   EmpsModel model(scene);
   const FluidSpec& fluid = scene.fluid->as<FluidSpec>();
   const std::size_t particles = model.fluid().particles().size();
-  const double dt = *scene.time.dt, t_damped = fluid.damping_time;
+  const double dt = *scene.time.dt, t_damped = fluid.options.damping_time;
   const long steps = std::lround(scene.time.end / dt);
   const long every = std::lround(scene.output.interval / dt); // probes.csv's sampling
-  const double rho_g_h = fluid.density * -scene.gravity.y() * 0.5;
+  const double rho_g_h = fluid.options.density * -scene.gravity.y() * 0.5;
 
   double energy_damped = -1.0, energy_max = 0.0, pressure_sum = 0.0;
   long pressure_samples = 0;

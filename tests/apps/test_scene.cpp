@@ -41,12 +41,13 @@ TEST_CASE("apps: a valid scene reads back its values", "[apps][scene]") {
   const auto& b = s.structures[0].as<fem_plugin::StructureSpec>();
   CHECK(b.mesh.kind == "rectangle");
   CHECK(b.mesh.elements_x == 4);
-  CHECK(b.youngs_modulus == 2e6);
-  CHECK(b.poisson_ratio == 0.25);
-  CHECK(b.plane == "strain"); // default
-  CHECK(b.newmark_beta == 0.25);
-  CHECK(b.newmark_gamma == 0.5);
-  CHECK(b.linear_solver == "cholmod"); // default
+  CHECK(b.options.material.youngs_modulus == 2e6);
+  CHECK(b.options.material.poisson_ratio == 0.25);
+  CHECK(b.options.material.plane == fsi::materials::PlaneModel::plane_strain); // default
+  CHECK(b.options.newmark.beta == 0.25);
+  CHECK(b.options.newmark.gamma == 0.5);
+  CHECK(b.options.newton.max_iterations == 20);                               // default
+  CHECK(b.options.linear_solver.kind == fsi::fem::LinearSolverKind::cholmod); // default
   CHECK(b.clamped == std::vector<std::string>{"left"});
   REQUIRE(s.output.probes.size() == 1);
   CHECK(s.output.probes[0].point->y() == 0.1);
@@ -62,8 +63,8 @@ TEST_CASE("apps: overrides replace entries before validation", "[apps][scene]") 
       {"time.end=0.5", "structures[0].material.density=2000", "structures[0].linear_solver=cg"});
   CHECK(s.time.end == 0.5);
   const auto& b = s.structures[0].as<fem_plugin::StructureSpec>();
-  CHECK(b.density == 2000.0);
-  CHECK(b.linear_solver == "cg");
+  CHECK(b.options.material.density == 2000.0);
+  CHECK(b.options.linear_solver.kind == fsi::fem::LinearSolverKind::cg_incomplete_cholesky);
 }
 
 TEST_CASE("apps: each class of bad input names file, line and key, exit status 2",

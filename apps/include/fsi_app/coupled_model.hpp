@@ -18,6 +18,11 @@ namespace fsi::app {
 class InterfaceHistory;
 class InterfaceHistoryWriter;
 
+/// The recorded interface the scene's one-way scheme replays (coupling.motion or .loads), or
+/// nullptr for a scheme that replays none. InputError (`FILE:LINE: coupling.motion|loads: what`)
+/// for a recording whose node count differs from the `nodes` of the scene's interfaces.
+std::unique_ptr<InterfaceHistory> open_replay(const Scene& scene, std::size_t nodes);
+
 class CoupledModel final : public Model {
 public:
   /// Throws InputError (scene file and line) for coupling options the scheme rejects.

@@ -35,6 +35,10 @@ struct RunResult {
 /// scene that names what this build cannot simulate, before any computation.
 std::vector<std::unique_ptr<Model>> build_models(const Scene& scene);
 
+/// The input checks build_models makes, through each plug-in's `validate`, without building the
+/// solvers (`fsi check`): the same InputError for the same scene.
+void check_models(const Scene& scene);
+
 /// The most steps a run may take (1e9): more is refused, see run_scene.
 double max_steps();
 

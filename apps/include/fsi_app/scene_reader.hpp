@@ -110,4 +110,33 @@ private:
   mutable std::vector<std::string> read_;
 };
 
+/// Reads the options a component declares once (its visit_options, fsi/core/options.hpp) from
+/// a block: each key with the component's default, range, names and doc.
+class OptionReader final : public OptionVisitor {
+public:
+  explicit OptionReader(Section& s) : s_(s) {}
+  void name(const std::string& key, std::string& value, const std::vector<std::string>& allowed,
+            const std::string& doc) override {
+    value = s_.choice(key, allowed, value, doc);
+  }
+  void real(const std::string& key, double& value, const Range& range,
+            const std::string& doc) override {
+    value = s_.real(key, value, range, doc);
+  }
+  void required(const std::string& key, double& value, const Range& range,
+                const std::string& doc) override {
+    value = s_.real(key, range, doc);
+  }
+  void integer(const std::string& key, int& value, const Range& range,
+               const std::string& doc) override {
+    value = s_.integer(key, value, range, doc);
+  }
+  void flag(const std::string& key, bool& value, const std::string& doc) override {
+    value = s_.boolean(key, value, doc);
+  }
+
+private:
+  Section& s_;
+};
+
 } // namespace fsi::app

@@ -53,6 +53,13 @@ struct Footprint {
   std::vector<std::pair<std::string, std::string>> overflows;
 };
 
+/// What a structure shows the fluid before the run: its coupling interface and the area it
+/// occupies, as its part would give them.
+struct StructureOutline {
+  InterfaceMesh interface;
+  std::vector<Polygon> occupied;
+};
+
 struct FluidPlugin {
   std::string name, doc;
   /// Reads the solver's own keys of the fluid block (every key declared there, once).
@@ -64,6 +71,10 @@ struct FluidPlugin {
   std::function<std::unique_ptr<FluidPart>(const Scene&, const std::vector<InterfaceMesh>&,
                                            const std::vector<Polygon>&)>
       build;
+  /// The input checks `build` makes (e.g. that particles fit the regions), without building the
+  /// solver: `fsi check` (seconds and megabytes where build takes minutes and gigabytes).
+  std::function<void(const Scene&, const std::vector<InterfaceMesh>&, const std::vector<Polygon>&)>
+      validate;
   std::function<Footprint(const Scene&)> footprint;
   std::vector<std::string> fields;           ///< output fields it writes
   std::vector<std::string> probe_quantities; ///< probes it answers (without a `structure`)
@@ -76,6 +87,9 @@ struct StructurePlugin {
   std::function<void(const Scene&, std::size_t index, Section&, std::vector<Section>& probes)>
       check;
   std::function<std::unique_ptr<StructurePart>(const Scene&, std::size_t index)> build;
+  /// The input checks `build` makes of entry `index` (its mesh file, boundary tags, probe nodes)
+  /// without building the solver, and the outline its part would show: `fsi check`.
+  std::function<StructureOutline(const Scene&, std::size_t index)> validate;
   std::function<Footprint(const Scene&, std::size_t index)> footprint;
   std::vector<std::string> fields;
   std::vector<std::string> probe_quantities; ///< probes naming a structure of this type

@@ -13,31 +13,9 @@ namespace fsi::app::emps_plugin {
 
 emps::FluidOptions fluid_options(const Scene& scene) {
   const FluidSpec& f = scene.fluid->as<FluidSpec>();
-  emps::FluidOptions o;
-  o.density = f.density;
-  o.viscosity = f.viscosity;
-  o.l0 = f.l0;
-  o.re_over_l0 = f.re_over_l0;
-  o.sound_speed = f.sound_speed;
-  o.beta = f.beta;
-  o.alpha_rep = f.alpha_rep;
-  o.wall_condition =
-      f.wall_condition == "slip" ? emps::WallCondition::slip : emps::WallCondition::no_slip;
-  o.artificial_viscosity = f.artificial_viscosity;
-  o.wall_contact = f.wall_contact == "damped"    ? emps::WallContact::damped
-                   : f.wall_contact == "viscous" ? emps::WallContact::viscous
-                                                 : emps::WallContact::paper;
-  o.wall_damping = f.wall_damping;
-  o.wall_viscosity = f.wall_viscosity;
-  o.wall_density =
-      f.wall_density == "scaled" ? emps::WallDensity::scaled : emps::WallDensity::added;
-  o.corner_faces = f.corner_faces;
-  o.convex_corners = f.convex_corners;
+  emps::FluidOptions o = f.options;
   o.gravity = scene.gravity;
-  o.damping_time = f.damping_time;
-  o.domain_min = f.domain_min;
-  o.domain_max = f.domain_max;
-  if (f.domain_max.x() <= f.domain_min.x()) { // no domain given: walls and regions, with margin
+  if (!f.domain_given) { // walls and regions, with a margin
     Vec2 lo = Vec2::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
     for (const auto& w : scene.walls)
       for (const auto& p : w.polyline) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
@@ -50,20 +28,9 @@ emps::FluidOptions fluid_options(const Scene& scene) {
   return o;
 }
 
-EmpsModel::EmpsModel(const Scene& scene, const std::vector<InterfaceMesh>& interfaces,
-                     const std::vector<Polygon>& solid)
-    : walls_(std::make_unique<erp::WallSet>()) {
-  int group = 0;
-  for (const auto& w : scene.walls) {
-    if (w.motion)
-      walls_->add_rigid_polyline(w.polyline, w.closed, group++, w.motion->pivot, make_motion(w));
-    else
-      walls_->add_polyline(w.polyline, w.closed, group++);
-  }
-  std::vector<erp::Polygon> holes = solid;
-  interface_walls_.reserve(interfaces.size()); // the adapter keeps a reference to the list
-  for (const auto& mesh : interfaces) interface_walls_.emplace_back(*walls_, mesh, group++);
+std::vector<Vec2> fill_regions(const Scene& scene, const std::vector<Polygon>& solid) {
   const FluidSpec& f = scene.fluid->as<FluidSpec>();
+  std::vector<erp::Polygon> holes = solid;
   std::vector<Vec2> positions;
   // Each region on its own lattice from its lower-left corner, so a region a whole number of l0
   // wide has l0/2 gaps at both sides; earlier regions are holes for later ones (no doubles).
@@ -76,13 +43,29 @@ EmpsModel::EmpsModel(const Scene& scene, const std::vector<InterfaceMesh>& inter
   for (const auto& region : f.regions) {
     Vec2 origin = region.front();
     for (const auto& p : region) origin = origin.cwiseMin(p);
-    const auto filled = erp::fill_lattice(origin, f.l0, {region}, holes, &reference);
+    const auto filled = erp::fill_lattice(origin, f.options.l0, {region}, holes, &reference);
     positions.insert(positions.end(), filled.begin(), filled.end());
     holes.push_back(region);
   }
   if (positions.empty())
     fail_at(scene, scene.fluid->line, "fluid.regions",
             "no particle fits in the regions at this l0");
+  return positions;
+}
+
+EmpsModel::EmpsModel(const Scene& scene, const std::vector<InterfaceMesh>& interfaces,
+                     const std::vector<Polygon>& solid)
+    : walls_(std::make_unique<erp::WallSet>()) {
+  int group = 0;
+  for (const auto& w : scene.walls) {
+    if (w.motion)
+      walls_->add_rigid_polyline(w.polyline, w.closed, group++, w.motion->pivot, make_motion(w));
+    else
+      walls_->add_polyline(w.polyline, w.closed, group++);
+  }
+  interface_walls_.reserve(interfaces.size()); // the adapter keeps a reference to the list
+  for (const auto& mesh : interfaces) interface_walls_.emplace_back(*walls_, mesh, group++);
+  const std::vector<Vec2> positions = fill_regions(scene, solid);
   initial_count_ = positions.size();
   fluid_ = std::make_unique<emps::EmpsFluid>(fluid_options(scene), positions, *walls_);
   adapter_ = std::make_unique<FluidAdapter>(*fluid_, *walls_, interface_walls_);

@@ -17,6 +17,10 @@ namespace fsi::app::emps_plugin {
 /// regions with a margin of 4 r_e.
 emps::FluidOptions fluid_options(const Scene& scene);
 
+/// The fluid regions filled with particles on their lattices, the walls and the `solid` areas
+/// kept free. InputError (scene file and line) when no particle fits.
+std::vector<Vec2> fill_regions(const Scene& scene, const std::vector<Polygon>& solid);
+
 class EmpsModel final : public FluidPart {
 public:
   /// Builds walls, fills the regions with particles and maps the options. Each coupled

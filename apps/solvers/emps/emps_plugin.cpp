@@ -50,7 +50,8 @@ double bytes_per_particle(double capacity) {
 Footprint footprint(const Scene& scene) {
   const FluidSpec& f = scene.fluid->as<FluidSpec>();
   Footprint e;
-  for (const auto& region : f.regions) e.count += polygon_area(region) / (f.l0 * f.l0);
+  for (const auto& region : f.regions)
+    e.count += polygon_area(region) / (f.options.l0 * f.options.l0);
   const emps::FluidOptions o = fluid_options(scene);
   const double reach = (1.0 + o.skin) * o.re_over_l0; // as EmpsFluid sizes its rows
   const double capacity = std::ceil(2.0 * M_PI * reach * reach) + 16;
@@ -58,7 +59,7 @@ Footprint footprint(const Scene& scene) {
   const Vec2 span = o.domain_max - o.domain_min;
   const double cells = (std::ceil(span.x() / h) + 3) * (std::ceil(span.y() / h) + 3);
   e.bytes = e.count * bytes_per_particle(capacity) + cells * 4;
-  const bool grid_larger = 4 * cells > e.bytes / 2 && f.domain_max.x() > f.domain_min.x();
+  const bool grid_larger = 4 * cells > e.bytes / 2 && f.domain_given;
   e.key = grid_larger ? "domain" : "l0";
   e.counts =
       count(e.count) + " particles (fluid region area / l0^2) and " + count(cells) + " cells";
@@ -82,6 +83,12 @@ FluidPlugin plugin() {
   p.build = [](const Scene& scene, const std::vector<InterfaceMesh>& interfaces,
                const std::vector<Polygon>& solid) -> std::unique_ptr<FluidPart> {
     return std::make_unique<EmpsModel>(scene, interfaces, solid);
+  };
+  p.validate = [](const Scene& scene, const std::vector<InterfaceMesh>& interfaces,
+                  const std::vector<Polygon>& solid) {
+    erp::WallSet walls; // the interfaces as ERP walls (eqs. 47-51) check their meshes
+    for (const auto& mesh : interfaces) erp::InterfaceWalls(walls, mesh, 0);
+    fill_regions(scene, solid);
   };
   p.footprint = footprint;
   p.fields = {"velocity", "pressure", "pnd", "free_surface"};

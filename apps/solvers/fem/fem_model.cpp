@@ -39,13 +39,6 @@ fem::Mesh build_mesh(const Scene& scene, const StructureBlock& block) {
   }
 }
 
-fem::LinearSolverKind solver_kind(const std::string& name) {
-  if (name == "cg") return fem::LinearSolverKind::cg_incomplete_cholesky;
-  if (name == "umfpack") return fem::LinearSolverKind::umfpack;
-  if (name == "ldlt") return fem::LinearSolverKind::simplicial_ldlt;
-  return fem::LinearSolverKind::cholmod;
-}
-
 double edge_length(const fem::Mesh& mesh, const std::string& tag) {
   double length = 0.0;
   for (const auto& e : mesh.edges_with_tag(tag))
@@ -91,25 +84,35 @@ std::optional<TankFrame> tank_frame(const Scene& scene, const StructureBlock& bl
   return TankFrame{make_motion(wall), wall.motion->pivot};
 }
 
-std::unique_ptr<fem::Structure> build_structure(const Scene& scene, const StructureBlock& block) {
+fem::Mesh checked_mesh(const Scene& scene, const StructureBlock& block) {
   const StructureSpec& spec = block.as<StructureSpec>();
   fem::Mesh mesh = build_mesh(scene, block);
+  auto check = [&](const std::string& tag, const char* key) {
+    if (!mesh.has_tag(tag))
+      fail_at(scene, block.line, block.key + key, "no boundary '" + tag + "'");
+  };
+  for (const auto& tag : spec.clamped) check(tag, ".clamped");
+  for (const auto& tag : spec.interface) check(tag, ".interface");
+  for (const auto& l : spec.loads) check(l.boundary, ".loads");
+  for (const auto& p : scene.output.probes)
+    if (p.structure == block.name) probe_node(scene, mesh, p);
+  return mesh;
+}
+
+std::vector<Polygon> occupied_triangles(const fem::Mesh& mesh) {
+  std::vector<Polygon> triangles;
+  for (const auto& e : mesh.elements)
+    triangles.push_back({mesh.X[static_cast<std::size_t>(e[0])],
+                         mesh.X[static_cast<std::size_t>(e[1])],
+                         mesh.X[static_cast<std::size_t>(e[2])]});
+  return triangles;
+}
+
+std::unique_ptr<fem::Structure> build_structure(const Scene& scene, const StructureBlock& block) {
+  const StructureSpec& spec = block.as<StructureSpec>();
+  fem::Mesh mesh = checked_mesh(scene, block);
   const std::string& key = block.key;
-  for (const auto& tag : spec.clamped)
-    if (!mesh.has_tag(tag))
-      fail_at(scene, block.line, key + ".clamped", "no boundary '" + tag + "'");
-  for (const auto& tag : spec.interface)
-    if (!mesh.has_tag(tag))
-      fail_at(scene, block.line, key + ".interface", "no boundary '" + tag + "'");
-  fem::StructureOptions o;
-  o.material.youngs_modulus = spec.youngs_modulus;
-  o.material.poisson_ratio = spec.poisson_ratio;
-  o.material.density = spec.density;
-  o.material.plane =
-      spec.plane == "stress" ? fem::PlaneModel::plane_stress : fem::PlaneModel::plane_strain;
-  o.material.model = spec.material_model == "neo_hookean"
-                         ? fem::MaterialModel::neo_hookean
-                         : fem::MaterialModel::saint_venant_kirchhoff;
+  fem::StructureOptions o = spec.options;
   o.gravity = scene.gravity;
   fem::PrescribedMotion clamped_motion; // empty: fixed
   if (const auto frame = tank_frame(scene, block)) {
@@ -119,19 +122,9 @@ std::unique_ptr<fem::Structure> build_structure(const Scene& scene, const Struct
     };
   }
   for (const auto& tag : spec.clamped) o.clamped.push_back({tag, true, true, {}, clamped_motion});
-  o.newmark.beta = spec.newmark_beta;
-  o.newmark.gamma = spec.newmark_gamma;
-  o.newton.residual_rtol = spec.newton_tolerance;
-  o.newton.increment_rtol = spec.increment_tolerance;
-  o.newton.max_iterations = spec.newton_max_iterations;
-  o.newton.max_substep_levels = spec.newton_substep_levels;
-  o.linear_solver.kind = solver_kind(spec.linear_solver);
   fem::Vector loads = fem::Vector::Zero(2 * static_cast<Eigen::Index>(mesh.num_nodes()));
-  for (const auto& l : spec.loads) {
-    if (!mesh.has_tag(l.boundary))
-      fail_at(scene, block.line, key + ".loads", "no boundary '" + l.boundary + "'");
+  for (const auto& l : spec.loads)
     loads += fem::edge_traction_forces(mesh, l.boundary, l.force / edge_length(mesh, l.boundary));
-  }
   auto structure = std::make_unique<fem::Structure>(std::move(mesh), o);
   if (!spec.loads.empty()) {
     structure->set_external_forces(loads);
@@ -208,13 +201,7 @@ coupling::StructureSolver& FemModel::coupling_solver() {
 }
 
 std::vector<Polygon> FemModel::occupied_area() const {
-  const fem::Mesh& mesh = structure_->mesh();
-  std::vector<Polygon> triangles;
-  for (const auto& e : mesh.elements)
-    triangles.push_back({mesh.X[static_cast<std::size_t>(e[0])],
-                         mesh.X[static_cast<std::size_t>(e[1])],
-                         mesh.X[static_cast<std::size_t>(e[2])]});
-  return triangles;
+  return occupied_triangles(structure_->mesh());
 }
 
 void FemModel::advance(double /*time*/, double dt) {

@@ -14,6 +14,13 @@
 
 namespace fsi::app::fem_plugin {
 
+/// The entry's mesh, read or generated, with its boundary tags and probe nodes checked. Throws
+/// InputError (scene file and line) for tags or meshes that do not fit.
+fem::Mesh checked_mesh(const Scene& scene, const StructureBlock& block);
+
+/// The mesh's elements as the triangles of their corner nodes (the area kept free of fluid).
+std::vector<Polygon> occupied_triangles(const fem::Mesh& mesh);
+
 /// The FEM structure of one scene entry: mesh built, options mapped. Throws InputError (scene
 /// file and line) for tags or meshes that do not fit.
 std::unique_ptr<fem::Structure> build_structure(const Scene& scene, const StructureBlock& block);

@@ -116,6 +116,12 @@ StructurePlugin plugin() {
   p.build = [](const Scene& scene, std::size_t index) -> std::unique_ptr<StructurePart> {
     return std::make_unique<FemModel>(scene, scene.structures[index]);
   };
+  p.validate = [](const Scene& scene, std::size_t index) {
+    const StructureBlock& block = scene.structures[index];
+    const fem::Mesh mesh = checked_mesh(scene, block);
+    return StructureOutline{fem::interface_of(mesh, block.as<StructureSpec>().interface).mesh,
+                            occupied_triangles(mesh)};
+  };
   p.footprint = footprint;
   p.fields = {"displacement", "velocity", "von_mises"};
   p.probe_quantities = {"displacement_x", "displacement_y", "displacement_x_tank",

@@ -1,6 +1,9 @@
 // The FE structure's scene keys, each declared once where it is read.
 #include "fem/fem_spec.hpp"
 
+#include "fsi_app/material_reader.hpp"
+#include "structure_fem/options.hpp"
+
 #include <cmath>
 
 namespace fsi::app::fem_plugin {
@@ -34,18 +37,7 @@ std::shared_ptr<const SolverSpec> read_structure(Section& s) {
   StructureSpec& st = *spec;
   st.mesh = read_mesh(s.required_block("mesh", "the T6 mesh"));
   auto mat = s.required_block("material", "hyperelastic material (eq. 35 by default)");
-  st.youngs_modulus = mat.real("youngs_modulus", Range::positive(), "E, Pa");
-  st.poisson_ratio = mat.real("poisson_ratio", Range::open(-1.0, 0.5), "nu");
-  st.density = mat.real("density", Range::positive(), "rho_s, kg/m^3");
-  st.plane = mat.choice("plane", {"strain", "stress"}, "strain", "2D idealisation");
-  st.material_model =
-      mat.choice("model", {"saint_venant_kirchhoff", "neo_hookean"}, "saint_venant_kirchhoff",
-                 "strain energy: the paper's St. Venant-Kirchhoff (eq. 35), or compressible "
-                 "neo-Hookean (plane strain only), which cannot be crushed flat by a finite "
-                 "load (docs/structure_fem.md)");
-  if (st.material_model == "neo_hookean" && st.plane != "strain")
-    mat.fail("model", "neo_hookean is implemented in plane strain only (plane: strain)");
-  mat.finish();
+  read_material(mat, st.options.material);
   st.clamped = s.names("clamped", {}, "boundary tags whose nodes are fixed");
   st.clamped_motion =
       s.text("clamped_motion", "",
@@ -54,29 +46,20 @@ std::shared_ptr<const SolverSpec> read_structure(Section& s) {
              "equilibrium with the wall at t = 0; empty: they stay fixed");
   st.interface = s.names("interface", {}, "boundary tags wetted by the fluid");
   if (auto nb = s.block("newmark", "Newmark-beta coefficients (eqs. 40-41)")) {
-    st.newmark_beta = nb->real("beta", 0.3025, Range::left_open(0.0, 0.5), "beta_NB");
-    st.newmark_gamma = nb->real("gamma", 0.6, Range::closed(0.5, 1.0), "gamma_NB");
-    if (!s.context().documenting() &&
-        st.newmark_beta < 0.25 * std::pow(st.newmark_gamma + 0.5, 2) - 1e-12)
+    OptionReader reader(*nb);
+    fem::NewmarkOptions& n = st.options.newmark;
+    fem::visit_options(n, reader);
+    if (!s.context().documenting() && n.beta < 0.25 * std::pow(n.gamma + 0.5, 2) - 1e-12)
       nb->fail("beta", "must be >= (gamma + 1/2)^2 / 4 for unconditional stability");
     nb->finish();
   }
   if (auto nr = s.block("newton", "Newton-Raphson controls")) {
-    st.newton_tolerance = nr->real("tolerance", 1e-8, Range::open(0.0, 1.0),
-                                   "residual norm relative to the load norm");
-    st.increment_tolerance = nr->real("increment_tolerance", 1e-10, Range::open(0.0, 1.0),
-                                      "increment norm relative to the displacement norm");
-    st.newton_max_iterations = nr->integer("max_iterations", 20, Range::closed(1, 1000),
-                                           "iterations before the run stops");
-    st.newton_substep_levels = nr->integer(
-        "substep_levels", 0, Range::closed(0, 10),
-        "a step whose Newton fails (no convergence, or an inverted element) is retried as 2, 4, "
-        "... 2^levels sub-steps with the loads linear in time, each to the same tolerances; "
-        "counted in run.json (docs/structure_fem.md); 0: the run stops");
+    OptionReader reader(*nr);
+    fem::visit_options(st.options.newton, reader);
     nr->finish();
   }
-  st.linear_solver = s.choice("linear_solver", {"cholmod", "umfpack", "ldlt", "cg"}, "cholmod",
-                              "sparse direct (CHOLMOD, UMFPACK, Eigen LDLT) or preconditioned CG");
+  OptionReader reader(s);
+  fem::visit_options(st.options.linear_solver, reader);
   for (auto& load : s.list("loads", "constant nodal forces (structure-only scenes)")) {
     PointLoadSpec p;
     p.boundary = load.text("boundary", "boundary tag the force is spread over");

@@ -2,6 +2,7 @@
 // The FE structure's scene entry (structures[].type: fem), as the plug-in reads it.
 #include "fsi_app/scene.hpp"
 #include "fsi_app/scene_reader.hpp"
+#include "structure_fem/structure.hpp"
 
 #include <filesystem>
 #include <memory>
@@ -25,17 +26,12 @@ struct PointLoadSpec {
 
 struct StructureSpec final : SolverSpec {
   MeshSpec mesh;
-  double youngs_modulus = 0.0, poisson_ratio = 0.0, density = 0.0;
-  std::string plane;                  ///< strain | stress
-  std::string material_model;         ///< saint_venant_kirchhoff | neo_hookean
+  /// What structure_fem and materials/ declare (visit_options): material, newmark, newton and
+  /// the linear solver; gravity and clamped conditions are set from the scene when built.
+  fem::StructureOptions options;
   std::vector<std::string> clamped;   ///< boundary tags held fixed
   std::string clamped_motion;         ///< wall whose rigid motion the clamped nodes follow
   std::vector<std::string> interface; ///< boundary tags wetted by the fluid
-  double newmark_beta = 0.3025, newmark_gamma = 0.6;
-  double newton_tolerance = 1e-8, increment_tolerance = 1e-10;
-  int newton_max_iterations = 20;
-  int newton_substep_levels = 0; ///< retries of a failed step with 2^level sub-steps
-  std::string linear_solver;     ///< cg | cholmod | umfpack | ldlt
   std::vector<PointLoadSpec> loads;
 };
 

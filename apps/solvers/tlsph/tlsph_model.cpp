@@ -18,14 +18,7 @@ bool inside(const Box& b, const Vec2& X) {
 std::unique_ptr<tlsph::TlsphSolid> build_solid(const Scene& scene, const StructureBlock& block) {
   const TlsphSpec& t = block.as<TlsphSpec>();
   tlsph::TlsphOptions o;
-  o.material.youngs_modulus = t.youngs_modulus;
-  o.material.poisson_ratio = t.poisson_ratio;
-  o.material.density = t.density;
-  o.material.plane = t.plane == "stress" ? materials::PlaneModel::plane_stress
-                                         : materials::PlaneModel::plane_strain;
-  o.material.model = t.material_model == "neo_hookean"
-                         ? materials::MaterialModel::neo_hookean
-                         : materials::MaterialModel::saint_venant_kirchhoff;
+  o.material = t.material;
   o.dp = t.dp;
   o.h_factor = t.h_factor;
   o.gravity = scene.gravity;

@@ -59,6 +59,10 @@ StructurePlugin plugin() {
   p.build = [](const Scene& scene, std::size_t index) -> std::unique_ptr<StructurePart> {
     return std::make_unique<TlsphModel>(scene, scene.structures[index]);
   };
+  p.validate = [](const Scene& scene, std::size_t index) { // a lattice of a few thousand: built
+    const TlsphModel model(scene, scene.structures[index]);
+    return StructureOutline{model.interface_mesh(), model.occupied_area()};
+  };
   p.footprint = footprint;
   p.fields = {"displacement", "velocity", "von_mises", "det_F"};
   p.probe_quantities = {"displacement_x", "displacement_y"};

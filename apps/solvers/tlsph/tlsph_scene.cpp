@@ -1,6 +1,8 @@
 // The TL-SPH solid's scene keys, each declared once where it is read.
 #include "tlsph/tlsph_spec.hpp"
 
+#include "fsi_app/material_reader.hpp"
+
 namespace fsi::app::tlsph_plugin {
 
 namespace {
@@ -29,15 +31,7 @@ std::shared_ptr<const SolverSpec> read_tlsph(Section& s) {
   t.h_factor = s.real("h_factor", 1.15, Range::closed(1.0, 2.0),
                       "smoothing length h = h_factor dp (Wendland C2, support 2h)");
   auto mat = s.required_block("material", "hyperelastic material (materials/)");
-  t.youngs_modulus = mat.real("youngs_modulus", Range::positive(), "E, Pa");
-  t.poisson_ratio = mat.real("poisson_ratio", Range::open(-1.0, 0.5), "nu");
-  t.density = mat.real("density", Range::positive(), "rho_s, kg/m^3");
-  t.plane = mat.choice("plane", {"strain", "stress"}, "strain", "2D idealisation");
-  t.material_model = mat.choice("model", {"saint_venant_kirchhoff", "neo_hookean"},
-                                "saint_venant_kirchhoff", "strain energy");
-  if (!doc && t.material_model == "neo_hookean" && t.plane != "strain")
-    mat.fail("model", "neo_hookean is implemented in plane strain only (plane: strain)");
-  mat.finish();
+  read_material(mat, t.material);
   for (auto& box : s.list("clamped", "boxes: particles whose reference position lies inside are "
                                      "held (or follow clamped_motion)"))
     t.clamped.push_back(read_box(box, "a clamped box"));

@@ -2,6 +2,7 @@
 // The TL-SPH solid's scene entry (structures[].type: tlsph), as the plug-in reads it.
 #include "fsi_app/scene.hpp"
 #include "fsi_app/scene_reader.hpp"
+#include "materials/material.hpp"
 
 #include <memory>
 #include <string>
@@ -14,16 +15,14 @@ struct Box {
 };
 
 struct TlsphSpec final : SolverSpec {
-  Box region;             ///< the rectangle filled with particles (sides tagged
-                          ///< bottom, right, top, left)
-  double dp = 0.0;        ///< particle spacing dp_S, m
-  double h_factor = 1.15; ///< h = h_factor dp
-  double youngs_modulus = 0.0, poisson_ratio = 0.0, density = 0.0;
-  std::string plane;                  ///< strain | stress
-  std::string material_model;         ///< saint_venant_kirchhoff | neo_hookean
-  std::vector<Box> clamped;           ///< particles with X0 inside a box are held (or moved)
-  std::string clamped_motion;         ///< wall whose rigid motion the clamped particles follow
-  std::vector<std::string> interface; ///< sides wetted by the fluid
+  Box region;                          ///< the rectangle filled with particles (sides tagged
+                                       ///< bottom, right, top, left)
+  double dp = 0.0;                     ///< particle spacing dp_S, m
+  double h_factor = 1.15;              ///< h = h_factor dp
+  materials::MaterialOptions material; ///< the keys materials/ declares
+  std::vector<Box> clamped;            ///< particles with X0 inside a box are held (or moved)
+  std::string clamped_motion;          ///< wall whose rigid motion the clamped particles follow
+  std::vector<std::string> interface;  ///< sides wetted by the fluid
   double pair_damping = 0.0, mass_damping = 0.0;
 };
 

@@ -1,5 +1,7 @@
 #pragma once
-// Options of the EMPS fluid (Mitsume 2023, eqs. 7-27): a plain struct, filled by the caller.
+// Options of the EMPS fluid (Mitsume 2023, eqs. 7-27): a plain struct, filled by the caller, and
+// its keys declared once (visit_options) for readers such as the scene file.
+#include "fsi/core/options.hpp"
 #include "fsi/core/types.hpp"
 
 namespace fsi::emps {
@@ -54,5 +56,10 @@ struct FluidOptions {
   double r_e() const { return re_over_l0 * l0; }
   double volume() const { return l0 * l0; } ///< V_i = l0^d (eq. 43)
 };
+
+/// The options a user sets, each once: key, member, range, doc; the member's initial value is the
+/// default (density, l0 and sound_speed have none). Gravity, domain, reordering and the list skin
+/// are set by the caller.
+void visit_options(FluidOptions& options, OptionVisitor& visitor);
 
 } // namespace fsi::emps

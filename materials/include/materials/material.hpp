@@ -7,6 +7,7 @@
 #include <Eigen/Core>
 #include <Eigen/LU>
 
+#include "fsi/core/options.hpp"
 #include "fsi/core/types.hpp"
 
 namespace fsi::materials {
@@ -31,6 +32,10 @@ struct MaterialOptions {
 
 /// Throws InputError naming the field, its value and the allowed range.
 void validate(const MaterialOptions& options);
+
+/// The keys a user sets, each once (E, nu and rho are required; fsi/core/options.hpp). A visitor
+/// that reads them still needs validate() for the rule across keys (neo_hookean: plane strain).
+void visit_options(MaterialOptions& options, OptionVisitor& visitor);
 
 class Material;
 /// The law options.model names.

@@ -28,10 +28,10 @@ namespace fsi::fem {
 /// converged when ||du_k|| <= roundoff_rtol * ||u||: the residual is then at its round-off floor
 /// (which grows with the condition number) and no further progress is possible in double.
 struct NewtonOptions {
-  int max_iterations = 25;       ///< >= 1
+  int max_iterations = 20;       ///< >= 1
   double residual_rtol = 1e-8;   ///< >= 0
   double residual_atol = 1e-10;  ///< [N/m], >= 0
-  double increment_rtol = 1e-8;  ///< >= 0
+  double increment_rtol = 1e-10; ///< >= 0
   double increment_atol = 1e-14; ///< [m], >= 0
   double roundoff_rtol = 1e-13;  ///< >= 0
   /// An iterate u + du with an inverted element (det F <= 0) is not a configuration of the body:

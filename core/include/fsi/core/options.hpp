@@ -7,6 +7,7 @@
 #include <limits>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace fsi {
@@ -59,6 +60,26 @@ public:
   virtual void integer(const std::string& key, int& value, const Range& range,
                        const std::string& doc) = 0;
   virtual void flag(const std::string& key, bool& value, const std::string& doc) = 0;
+  /// A number the user must give (no default); a visitor without that notion reads it as real.
+  virtual void required(const std::string& key, double& value, const Range& range,
+                        const std::string& doc) {
+    real(key, value, range, doc);
+  }
+
+  /// An enumeration, visited as one of its names (`names`: each value's name, in order).
+  template <class E>
+  void choice(const std::string& key, E& value, const std::vector<std::pair<std::string, E>>& names,
+              const std::string& doc) {
+    std::string text;
+    std::vector<std::string> allowed;
+    for (const auto& [n, e] : names) {
+      allowed.push_back(n);
+      if (e == value) text = n;
+    }
+    name(key, text, allowed, doc);
+    for (const auto& [n, e] : names)
+      if (n == text) value = e;
+  }
 };
 
 } // namespace fsi

@@ -1,0 +1,49 @@
+#include "fluid_emps/options.hpp"
+
+namespace fsi::emps {
+
+void visit_options(FluidOptions& o, OptionVisitor& v) {
+  v.required("density", o.density, Range::positive(), "rho, kg/m^3");
+  v.real("viscosity", o.viscosity, Range::non_negative(),
+         "kinematic viscosity nu, m^2/s; 0 skips the viscous loop");
+  v.required("l0", o.l0, Range::positive(), "initial particle spacing, m");
+  v.real("re_over_l0", o.re_over_l0, Range::closed(2.0, 5.0), "effective radius r_e / l0");
+  v.required("sound_speed", o.sound_speed, Range::positive(), "c of eq. 15, m/s");
+  v.real("beta", o.beta, Range::left_open(0.0, 1.5), "free-surface threshold, eq. 17");
+  v.real("alpha_rep", o.alpha_rep, Range::non_negative(), "repulsive coefficient of eq. 27, N/m^3");
+  v.choice("wall_condition", o.wall_condition,
+           {{"no_slip", WallCondition::no_slip}, {"slip", WallCondition::slip}},
+           "viscous wall condition (eq. 24)");
+  v.choice(
+      "wall_contact", o.wall_contact,
+      {{"paper", WallContact::paper},
+       {"damped", WallContact::damped},
+       {"viscous", WallContact::viscous}},
+      "particle-wall contact: paper, the repulsive term of eq. 27 alone; damped, eq. 27 plus a "
+      "damper on the wall-normal approach velocity within l0 of a wall (rate wall_damping "
+      "c/l0 (1 - r/l0), a wall force); viscous, eq. 27 plus the closing-pair viscosity "
+      "wall_viscosity c l0 on pairs with a particle within r_e of a wall");
+  v.real("wall_damping", o.wall_damping, Range::non_negative(),
+         "wall_contact damped: damping rate in units of c / l0");
+  v.real("wall_viscosity", o.wall_viscosity, Range::non_negative(),
+         "wall_contact viscous: alpha of the near-wall closing-pair viscosity");
+  v.real("artificial_viscosity", o.artificial_viscosity, Range::non_negative(),
+         "alpha: closing particle pairs feel a viscosity alpha c l0 along their line of centres "
+         "(damps acoustic noise; not in the paper, 0 = off)");
+  v.choice("wall_density", o.wall_density,
+           {{"added", WallDensity::added}, {"scaled", WallDensity::scaled}},
+           "wall part of pnd: added, n_i + z(r) as eq. 20; scaled, n_i + z max(1, n_i / (n0 - z)): "
+           "the virtual particles compressed like the fluid next to them (equal to eq. 20 at rest "
+           "and in expansion)");
+  v.flag("corner_faces", o.corner_faces,
+         "at concave wall corners also apply the nearest other face (its z, mirror terms and "
+         "repulsion, the doubly counted quadrant once); false: the nearest wall only, eq. 18");
+  v.flag("convex_corners", o.convex_corners,
+         "at convex wall corners count the solid's own virtual lattice in pnd and in the wall "
+         "pressure term (eqs. 20 and 25 assume a half-plane there; false: as in the paper)");
+  v.real("damping_time", o.damping_time, Range::non_negative(),
+         "initial damping phase T_d: velocities damped at a rate 20/T_d (1 - t/T_d) (quiet "
+         "hydrostatic starts), s");
+}
+
+} // namespace fsi::emps
