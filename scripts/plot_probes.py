@@ -95,10 +95,13 @@ def read_curve(spec, base):
             [scale * v for v in data[spec["value"]]])
 
 
-def draw_overlay(ax, spec, base):
+def draw_overlay(ax, spec, base, t_end):
+    """One overlay; curves only up to the run's end time t_end (the y range follows the run)."""
     kind, label = spec["kind"], spec.get("label")
     if kind == "curve":
         curve = read_curve(spec, base)
+        if curve:
+            curve = tuple(zip(*[(t, v) for t, v in zip(*curve) if t <= t_end])) or None
         if curve and spec.get("marker"):
             ax.plot(*curve, spec["marker"], ms=4, mfc="none", label=label)
         elif curve:
@@ -147,7 +150,7 @@ def main():
         ax.plot(probes["time"], probes[probe], color="tab:blue", lw=1.5, label="fsi (this run)")
         if refs:
             for spec in refs.get("probes", {}).get(probe, []) + refs.get("probes", {}).get("*", []):
-                draw_overlay(ax, spec, base)
+                draw_overlay(ax, spec, base, max(probes["time"]))
         for t, v, label in extra.get(probe, []):
             ax.plot(t, v, "o", ms=3, label=label)
         ax.set_ylabel(labels.get(probe, probe))
