@@ -21,6 +21,25 @@ inline double limiter(double u, double inv_c0) {
   return std::min(3.0 * std::max(u * inv_c0, 0.0), 1.0);
 }
 
+/// The dummy wall particle's pressure excess p_d - p_i = rho_i r max(0, (a_prior - a_w) . (-e_ia))
+/// (eq. 16 in the reference code's form, method notes).
+inline double dummy_excess(double rho_i, double r, double dax, double day, double ex, double ey) {
+  return rho_i * r * std::max(0.0, -(dax * ex + day * ey));
+}
+
+/// Neighbour j at (dx, dy) = x_i - x_j into slot k of a pair set: e_ij, dW_ij, r_ij.
+inline void store_pair(std::uint32_t k, std::uint32_t j, double dx, double dy,
+                       const particles::WendlandC2& kernel, std::vector<std::uint32_t>& js,
+                       std::vector<double>& ex, std::vector<double>& ey, std::vector<double>& dw,
+                       std::vector<double>& rs) {
+  const double r = std::sqrt(dx * dx + dy * dy);
+  js[k] = j;
+  ex[k] = dx / r;
+  ey[k] = dy / r;
+  dw[k] = kernel.dW(r);
+  rs[k] = r;
+}
+
 std::string fmt(double v) {
   std::ostringstream s;
   s.precision(6);
@@ -328,8 +347,8 @@ void SphFluid::first_half(double dt) {
     for (std::uint32_t k = wstart_[i]; k < wstart_[i + 1]; ++k) {
       const std::uint32_t a = wj_[k];
       const double ex = wex_[k], ey = wey_[k], dWV = wdw_[k] * options_.dp * options_.dp;
-      const double face = -((apx - walls_.ax[a]) * ex + (apy - walls_.ay[a]) * ey);
-      const double p_d = p_i + rho_i * wr_[k] * std::max(0.0, face);
+      const double p_d =
+          p_i + dummy_excess(rho_i, wr_[k], apx - walls_.ax[a], apy - walls_.ay[a], ex, ey);
       const double gx = dWV * ex, gy = dWV * ey, ps = p_i + p_d;
       fx -= ps * (b00 * gx + b01 * gy);
       fy -= ps * (b01 * gx + b11 * gy);
@@ -368,11 +387,16 @@ void SphFluid::second_half(double dt) {
           const double u = (vx_i - f.vx[j]) * pex_[k] + (vy_i - f.vy[j]) * pey_[k];
           s += (u + (p_i - f.p[j]) * inv_rho0c0) * pdw_[k] * f.vol[j];
         }
-        // Walls: v_d = 2 v_w - v_i, so v_i - v_d = 2 (v_i - v_w).
+        // Walls: v_d = 2 v_w - v_i, so v_i - v_d = 2 (v_i - v_w); the pressure term with the
+        // dummy pressure p_d of eq. 16 (the reference code's wall density diffusion).
+        const double apx = f.apx[i], apy = f.apy[i], rho_i = f.rho[i];
         for (std::uint32_t k = wstart_[i]; k < wstart_[i + 1]; ++k) {
           const std::uint32_t a = wj_[k];
-          const double u = (vx_i - walls_.vx[a]) * wex_[k] + (vy_i - walls_.vy[a]) * wey_[k];
-          s += 2.0 * u * wdw_[k] * vw;
+          const double ex = wex_[k], ey = wey_[k];
+          const double u = (vx_i - walls_.vx[a]) * ex + (vy_i - walls_.vy[a]) * ey;
+          const double p_id =
+              -dummy_excess(rho_i, wr_[k], apx - walls_.ax[a], apy - walls_.ay[a], ex, ey);
+          s += (2.0 * u + p_id * inv_rho0c0) * wdw_[k] * vw;
         }
         f.drho[i] = f.rho[i] * s;
         f.rho[i] += f.drho[i] * half;
@@ -522,13 +546,7 @@ void SphFluid::build_pairs() {
           const double dx = xi - f.xb[j] - sx, dy = yi - f.yb[j] - sy;
           const double r2 = dx * dx + dy * dy;
           if (j == i || r2 >= cut2 || r2 <= 0.0) return;
-          const double r = std::sqrt(r2);
-          pj_[k] = j;
-          pex_[k] = dx / r;
-          pey_[k] = dy / r;
-          pdw_[k] = kernel_.dW(r);
-          pr_[k] = r;
-          ++k;
+          store_pair(k++, j, dx, dy, kernel_, pj_, pex_, pey_, pdw_, pr_);
         });
         std::uint32_t kw = wstart_[i];
         double nearest = cut2;
@@ -537,13 +555,7 @@ void SphFluid::build_pairs() {
           const double dx = xi - walls_.xb[a] - sx, dy = yi - walls_.yb[a] - sy;
           const double r2 = dx * dx + dy * dy;
           if (r2 >= cut2 || r2 <= 0.0) return;
-          const double r = std::sqrt(r2);
-          wj_[kw] = a;
-          wex_[kw] = dx / r;
-          wey_[kw] = dy / r;
-          wdw_[kw] = kernel_.dW(r);
-          wr_[kw] = r;
-          ++kw;
+          store_pair(kw++, a, dx, dy, kernel_, wj_, wex_, wey_, wdw_, wr_);
           if (r2 < nearest) nearest = r2, in_front = dx * walls_.nx[a] + dy * walls_.ny[a] >= 0.0;
         });
         return in_front ? none : i;
