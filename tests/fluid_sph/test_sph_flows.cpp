@@ -124,7 +124,8 @@ namespace {
 /// Taylor-Green vortex on [0, 1)^2, U = 1, Re = 100: u = -U e^{bt} cos 2 pi x sin 2 pi y,
 /// v = U e^{bt} sin 2 pi x cos 2 pi y, b = -8 pi^2 nu; the kinetic energy decays as e^{2bt}.
 /// Returns the measured decay rate -d ln(E)/dt (least squares over t in [0.2, 1]).
-double taylor_green_rate(int m, sph::Correction corr) {
+/// advection_cfl: Dt = advection_cfl h / U (pair data are frozen over Dt).
+double taylor_green_rate(int m, sph::Correction corr, double advection_cfl = 0.25) {
   sph::SphOptions o;
   const double U = 1.0, L = 1.0, nu = U * L / 100.0;
   o.rho0 = 1.0;
@@ -134,6 +135,7 @@ double taylor_green_rate(int m, sph::Correction corr) {
   o.viscosity = nu;
   o.correction = corr;
   o.wkgc_alpha = 0.0;
+  o.advection_cfl = advection_cfl;
   o.free_surface = false;
   o.transport_velocity = true;
   o.domain_min = {0, 0};
@@ -174,11 +176,13 @@ TEST_CASE("sph: Taylor-Green vortex decay rate at dp = 1/25, 1/50: rkgc closer t
   }
 }
 
-TEST_CASE("sph: Taylor-Green vortex at dp = 1/100 (finest): decay rate within 5 %",
+// At Dt = 0.25 h / U the particles move h / 4 on frozen pair data: rkgc +6.3 % at 1/100. The
+// advection step carries it: at Dt = 0.1 h / U rkgc +0.8 %, none +3.2 % (docs/fluid_sph.md).
+TEST_CASE("sph: Taylor-Green vortex at dp = 1/100 (finest), Dt = 0.1 h / U: decay rate within 5 %",
           "[sph][taylor_green][slow]") {
   const double exact = 16.0 * std::numbers::pi * std::numbers::pi / 100.0;
-  const double r_rkgc = taylor_green_rate(100, sph::Correction::rkgc);
-  const double r_none = taylor_green_rate(100, sph::Correction::none);
+  const double r_rkgc = taylor_green_rate(100, sph::Correction::rkgc, 0.1);
+  const double r_none = taylor_green_rate(100, sph::Correction::none, 0.1);
   INFO("dp = 1/100: rate rkgc " << r_rkgc << ", none " << r_none << ", exact " << exact);
   CHECK(std::abs(r_rkgc / exact - 1.0) < 0.05);
   CHECK(std::abs(r_rkgc / exact - 1.0) < std::abs(r_none / exact - 1.0));
