@@ -43,14 +43,18 @@ void SphFluid::track_wall_forces(std::size_t first) {
   wall_viscous_reaction(); // for the current advection step
 }
 
-// The wall terms of first_half for each pair (i, a) with a tracked, times -V_i: the force on a.
+// The wall terms of first_half for each pair (i, a) with a tracked, times -V_i: the force on a,
+// plus the viscous force of this advection step (kept in fvx, fvy).
 // Sequential scatter over the fluid particles (deterministic for any thread count).
 void SphFluid::wall_reaction() {
   const auto& f = fluid_;
   const double rho0c0 = options_.rho0 * options_.c0, inv_c0 = 1.0 / options_.c0;
   const double vw = options_.dp * options_.dp;
-  std::fill(wfx_.begin(), wfx_.end(), 0.0);
-  std::fill(wfy_.begin(), wfy_.end(), 0.0);
+  // The viscous part of this step is that of the prior acceleration the fluid felt (this Dt's).
+  std::copy(walls_.fvx.begin() + static_cast<std::ptrdiff_t>(tracked_), walls_.fvx.end(),
+            wfx_.begin());
+  std::copy(walls_.fvy.begin() + static_cast<std::ptrdiff_t>(tracked_), walls_.fvy.end(),
+            wfy_.begin());
   for (std::size_t i = 0; i < f.size(); ++i) {
     const double p_i = f.p[i], vx_i = f.vx[i], vy_i = f.vy[i], rho_i = f.rho[i];
     const double b00 = f.b00[i], b01 = f.b01[i], b11 = f.b11[i], V_i = f.vol[i];

@@ -202,8 +202,9 @@ double cross(const Vec2& a, const Vec2& b) {
 
 } // namespace
 
-TEST_CASE("sph interface boundary: spacing <= dp, loads with the exact total force and moment",
+TEST_CASE("sph interface boundary: 4 layers at dp, loads with the exact total force and moment",
           "[apps][sph]") {
+  // The inner outline of an open container 0.1 m wide, 0.2 m tall.
   const double dp = 0.005;
   const InterfaceMesh mesh =
       polyline_mesh({{0.1, 0.2}, {0.1, 0.0}, {0.0, 0.0}, {0.0, 0.2}}, false, 0.0123);
@@ -211,24 +212,34 @@ TEST_CASE("sph interface boundary: spacing <= dp, loads with the exact total for
   std::vector<Vec2> x, n, force(b.size()), nodal;
   b.place(mesh.X0, x, n);
   Vec2 total = Vec2::Zero();
-  double moment = 0.0, worst_spacing = 0.0;
+  double moment = 0.0, closest = 1.0, farthest_nearest = 0.0;
   for (std::size_t p = 0; p < b.size(); ++p) {
     force[p] = Vec2(std::sin(3.0 * p + 1.0), std::cos(7.0 * p));
-    const Vec2 on_edge = edge_point(mesh, mesh.X0, b.edge(p), b.xi(p));
-    CHECK((on_edge - b.depth(p) * n[p] - x[p]).norm() < 1e-15);
+    const auto& e = mesh.edges[b.edge(p)];
+    const Vec2 anchor = edge_point(mesh, mesh.X0, b.edge(p), b.xi(p));
+    const Vec2 t = (mesh.X0[e[2]] - mesh.X0[e[0]]).normalized(), n_e(t.y(), -t.x());
+    CHECK((anchor + b.along(p) * t - b.depth(p) * n_e - x[p]).norm() < 1e-15);
+    CHECK(n[p].dot(n_e) > 0.7); // the edge's normal, or a corner's bisector
+    CHECK(b.depth(p) > 0.0);    // inside the solid
     total += force[p];
-    moment += cross(on_edge, force[p]);
-    if (p > 0 && b.edge(p) == b.edge(p - 1) && b.depth(p) == b.depth(p - 1))
-      worst_spacing = std::max(worst_spacing, (x[p] - x[p - 1]).norm());
+    moment += cross(anchor, force[p]);
+    double nearest = 1.0;
+    for (std::size_t q = 0; q < b.size(); ++q)
+      if (q != p) nearest = std::min(nearest, (x[q] - x[p]).norm());
+    closest = std::min(closest, nearest);
+    farthest_nearest = std::max(farthest_nearest, nearest);
   }
   b.distribute(force, nodal);
   Vec2 total_nodal = Vec2::Zero();
   double moment_nodal = 0.0;
   for (std::size_t k = 0; k < nodal.size(); ++k)
     total_nodal += nodal[k], moment_nodal += cross(mesh.X0[k], nodal[k]);
-  INFO("points " << b.size() << ", largest spacing " << worst_spacing << " m");
-  CHECK(b.size() == 4 * 3 * (17 + 9 + 17)); // 17, 9, 17 edges per side, 3 points per edge
-  CHECK(worst_spacing <= dp * (1.0 + 1e-12));
+  INFO("points " << b.size() << ", nearest-neighbour spacing " << closest << " .. "
+                 << farthest_nearest << " m");
+  // Floor 20 x 4, sides 4 x 40 each, 13 of the 16 lattice points in each corner (as the walls).
+  CHECK(b.size() == 80 + 2 * 160 + 2 * 13);
+  CHECK(std::abs(closest - dp) < 1e-12);
+  CHECK(std::abs(farthest_nearest - dp) < 1e-12);
   CHECK((total_nodal - total).norm() < 1e-13 * static_cast<double>(b.size()));
   CHECK(std::abs(moment_nodal - moment) < 1e-14 * static_cast<double>(b.size()));
 }

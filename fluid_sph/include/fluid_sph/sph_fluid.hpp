@@ -103,9 +103,7 @@ public:
   /// after each advance, N/m, the exact reaction of the wall terms the fluid particles felt in
   /// that acoustic step (eqs. 15-17 and the no-slip viscous term frozen over Dt).
   void track_wall_forces(std::size_t first);
-  Vec2 wall_force(std::size_t a) const {
-    return {wfx_[a - tracked_] + walls_.fvx[a], wfy_[a - tracked_] + walls_.fvy[a]};
-  }
+  Vec2 wall_force(std::size_t a) const { return {wfx_[a - tracked_], wfy_[a - tracked_]}; }
 
   /// The acoustic step allowed now: min(acoustic criterion, what is left of the current Dt), or
   /// fixed_dt.
@@ -201,7 +199,7 @@ private:
   long step_ = 0, builds_ = 0, sub_ = 0, subs_ = 0; // fixed dt: subs_ acoustic steps per Dt
   std::size_t removed_ = 0;
   std::size_t tracked_ = static_cast<std::size_t>(-1); // first tracked wall particle
-  std::vector<double> wfx_, wfy_;                      // their wall-term force, last step
+  std::vector<double> wfx_, wfy_;                      // their force, last acoustic step
 };
 
 /// Lattice points (x0 + (i + 1/2) dp, y0 + (j + 1/2) dp) inside the rectangle [lo, hi].
