@@ -50,7 +50,11 @@ InterfaceBoundary::InterfaceBoundary(const InterfaceMesh& mesh, double dp, int l
         const Vec2 a = mesh.X0[mesh.edges[e][0]], ab = mesh.X0[mesh.edges[e][2]] - a;
         const double t = std::clamp((q - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
         const double dist = (q - a - t * ab).norm();
-        if (dist < best + 1e-9 * dp && dist > best - 1e-9 * dp) e_tie = e;
+        // As near as the best so far, at a corner (not the opposite face of a thin part).
+        const bool corner = e_best != none && (chord_frame(mesh, mesh.X0, e).second +
+                                               chord_frame(mesh, mesh.X0, e_best).second)
+                                                      .norm() > 0.5;
+        if (dist < best + 1e-9 * dp && dist > best - 1e-9 * dp && corner) e_tie = e;
         if (dist >= best - 1e-9 * dp) continue;
         best = dist, e_best = e, xi_best = 2.0 * t - 1.0, e_tie = none;
         Vec2 n = chord_frame(mesh, mesh.X0, e).second;

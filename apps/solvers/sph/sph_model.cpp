@@ -47,7 +47,8 @@ sph::SphOptions sph_options(const Scene& scene) {
 // fluid's time (start_) to the one given (end_), crossed by the fluid's own acoustic steps. Per
 // acoustic step the nodes move on the line between the two, the boundary points follow them
 // (edge_point), with the step's mean velocity and the coupler step's mean acceleration
-// (v_end - v_start) / Dt as the wall's time-averaged velocity and acceleration (eq. 17). The
+// (v_end - v_start) / Dt (fluid.interface_acceleration; else zero) as the wall's time-averaged
+// velocity and acceleration (eq. 17). The
 // loads are the points' impulse over the coupler step / Dt, distributed to the nodes: the
 // structure receives exactly the momentum the fluid lost to it.
 class SphModel::Adapter final : public coupling::FluidSolver {
@@ -128,7 +129,12 @@ void SphModel::Adapter::advance(double t, double dt) {
   const auto& bs = model_.boundaries_;
   const double t_end = t + dt, inv_dt = 1.0 / dt;
   nodal_a_.resize(nodes_);
-  for (std::size_t k = 0; k < nodes_; ++k) nodal_a_[k] = (end_.v[k] - start_.v[k]) * inv_dt;
+  // The wall acceleration of eq. 16's dummy pressure: the step's mean (v_end - v_start) / Dt
+  // with fluid.interface_acceleration, else zero (docs/fluid_sph.md: explicit coupling with a
+  // light structure feeds it back unstably).
+  const bool mean_a = model_.interface_acceleration_;
+  for (std::size_t k = 0; k < nodes_; ++k)
+    nodal_a_[k] = mean_a ? Vec2((end_.v[k] - start_.v[k]) * inv_dt) : Vec2::Zero();
   for (std::size_t j = 0; j < bs.size(); ++j) {
     const auto first = nodal_a_.begin() + static_cast<std::ptrdiff_t>(offset_[j]);
     a_[j].assign(first, first + static_cast<std::ptrdiff_t>(bs[j].mesh().node_count()));
@@ -239,6 +245,7 @@ SphModel::SphModel(const Scene& scene, const std::vector<InterfaceMesh>& interfa
       fluid_->set_wall_motion(static_cast<int>(w), wall_motion(scene.walls[w]));
   first_point_ = fluid_->walls().size() - points.size();
   tracked_ = !interfaces.empty() || has_wall_force_probe(scene);
+  interface_acceleration_ = f.interface_acceleration;
   if (tracked_) fluid_->track_wall_forces(interfaces.empty() ? 0 : first_point_);
   adapter_ = std::make_unique<Adapter>(*this);
 }
@@ -250,11 +257,22 @@ coupling::FluidSolver& SphModel::coupling_solver() {
 }
 
 void SphModel::advance(double time, double dt) {
-  fluid_->advance_to(time + dt);
+  if (!tracked_) return fluid_->advance_to(time + dt);
+  // As advance_to, with the tracked walls' mean force over the step (the wall_force probes).
+  const double t_end = time + dt;
+  Vec2 impulse = Vec2::Zero();
+  while (fluid_->time() < t_end - 1e-12 * std::max(1.0, std::abs(t_end))) {
+    const double h = std::min(fluid_->next_dt(), t_end - fluid_->time());
+    fluid_->advance(h);
+    Vec2 f = Vec2::Zero();
+    for (std::size_t a = 0; a < fluid_->walls().size(); ++a) f += fluid_->wall_force(a);
+    impulse += f * h;
+  }
+  wall_force_ = impulse / dt;
 }
 
 std::optional<double> SphModel::stable_dt(double) const {
-  return fluid_->next_dt();
+  return fluid_->advection_dt();
 }
 
 void SphModel::write_frame(FieldsFile& file, const std::vector<std::string>& fields) const {
@@ -278,14 +296,12 @@ void SphModel::write_frame(FieldsFile& file, const std::vector<std::string>& fie
 }
 
 Vec2 SphModel::wall_force() const {
-  Vec2 total = Vec2::Zero();
   if (!boundaries_.empty()) {
+    Vec2 total = Vec2::Zero();
     for (const Vec2& q : adapter_->interface_loads().f) total += q;
     return total;
   }
-  if (!tracked_) return total;
-  for (std::size_t a = 0; a < fluid_->walls().size(); ++a) total += fluid_->wall_force(a);
-  return total;
+  return wall_force_;
 }
 
 std::optional<double> SphModel::probe(const ProbeSpec& probe) const {

@@ -25,7 +25,8 @@ public:
   ~SphModel() override;
   /// Acoustic steps of the fluid's own criteria up to time + dt (the last one shortened).
   void advance(double time, double dt) override;
-  /// The fluid's next acoustic step (its dual criteria; the Courant number is not used).
+  /// The fluid's advection step Dt (its dual criteria; the Courant number is not used): the
+  /// run's step holds the acoustic steps that cross it.
   std::optional<double> stable_dt(double courant) const override;
   void declare(FieldsFile&) const override {}
   void write_frame(FieldsFile& file, const std::vector<std::string>& fields) const override;
@@ -42,7 +43,8 @@ public:
   const sph::SphFluid& fluid() const { return *fluid_; }
   /// Boundary points of each coupled interface, in order.
   const std::vector<sph::InterfaceBoundary>& boundaries() const { return boundaries_; }
-  /// Total force of the fluid on the tracked walls over the last advance, N/m.
+  /// Mean force of the fluid on the coupled structures (on all walls without one) over the last
+  /// advance, N/m.
   Vec2 wall_force() const;
 
 private:
@@ -51,7 +53,8 @@ private:
   std::unique_ptr<sph::SphFluid> fluid_;
   std::unique_ptr<Adapter> adapter_;
   std::size_t initial_count_ = 0, first_point_ = 0;
-  bool tracked_ = false;
+  bool tracked_ = false, interface_acceleration_ = false;
+  Vec2 wall_force_ = Vec2::Zero();     // uncoupled: the walls' mean force over the last advance
   mutable std::vector<double> xy_, v_; // output buffers
 };
 

@@ -83,8 +83,13 @@ std::shared_ptr<const SolverSpec> read_sph(Section& s) {
                           "acoustic step dt = acoustic_cfl h / max(c0 + |v|, sqrt(4 h |a|)) "
                           "(sph steps by its own criteria: time.courant is not used)");
   f.interface_layers = s.integer("interface_layers", 4, Range::closed(1.0, 8.0),
-                                 "rows of boundary points at depths (k + 1/2) l0 behind a coupled "
-                                 "structure's interface edges");
+                                 "boundary points fill a coupled structure within "
+                                 "interface_layers l0 of its interface (lattice at l0)");
+  f.interface_acceleration = s.boolean(
+      "interface_acceleration", false,
+      "a coupled interface's mean acceleration over the coupling step in the wall's dummy "
+      "pressure (eqs. 16-17); false: zero (explicit coupling with a light structure feeds it "
+      "back unstably)");
   f.damping_time =
       s.real("damping_time", 0.0, Range::non_negative(),
              "initial damping phase T_d: velocities damped at a rate 20/T_d (1 - t/T_d) "

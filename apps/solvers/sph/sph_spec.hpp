@@ -23,7 +23,8 @@ struct SphSpec final : SolverSpec {
   bool transport_velocity = false;
   double u_ref = 0.0; ///< reference speed of the advection criterion (0: sound_speed / 10)
   double advection_cfl = 0.25, acoustic_cfl = 0.6;
-  int interface_layers = 4; ///< rows of boundary points behind a structure's interface
+  int interface_layers = 4;            ///< rows of boundary points behind a structure's interface
+  bool interface_acceleration = false; ///< the interface's mean acceleration in eq. 16
   double damping_time = 0.0;
   std::vector<std::vector<Vec2>> regions; ///< closed polygons filled with particles
   Vec2 domain_min = Vec2::Zero(), domain_max = Vec2::Zero();
