@@ -103,7 +103,8 @@ WallParticles::WallParticles()
       x0(fields.add_real("x0")), y0(fields.add_real("y0")), nx(fields.add_real("nx")),
       ny(fields.add_real("ny")), nx0(fields.add_real("nx0")), ny0(fields.add_real("ny0")),
       vx(fields.add_real("vx")), vy(fields.add_real("vy")), ax(fields.add_real("ax")),
-      ay(fields.add_real("ay")), xb(fields.add_real("xb")), yb(fields.add_real("yb")) {}
+      ay(fields.add_real("ay")), xb(fields.add_real("xb")), yb(fields.add_real("yb")),
+      fvx(fields.add_real("fvx")), fvy(fields.add_real("fvy")) {}
 
 std::vector<Vec2> fill_rectangle(const Vec2& lo, const Vec2& hi, double dp) {
   std::vector<Vec2> out;
@@ -116,7 +117,7 @@ std::vector<Vec2> fill_rectangle(const Vec2& lo, const Vec2& hi, double dp) {
 }
 
 SphFluid::SphFluid(const SphOptions& options, const std::vector<Vec2>& positions,
-                   const std::vector<WallPolyline>& walls)
+                   const std::vector<WallPolyline>& walls, const std::vector<WallPoint>& points)
     : options_(options), kernel_((options.validate(), options.h())), h_(options.h()), sigma0_(0.0),
       mass_(options.mass()) {
   const double dp = options_.dp;
@@ -148,6 +149,7 @@ SphFluid::SphFluid(const SphOptions& options, const std::vector<Vec2>& positions
     fluid_.apy[i] = fluid_.ay[i] = options_.gravity.y();
   }
   fill_walls(walls);
+  append_wall_points(points);
   // The first advection step starts here: its per-Dt work runs as at the end of any other.
   builds_ = -1;
   per_advection_step();
@@ -262,6 +264,7 @@ void SphFluid::advance(double dt) {
                      "] (what is left of the advection step)");
   move_walls(dt);
   first_half(dt);
+  if (tracked_ < walls_.size()) wall_reaction();
   second_half(dt);
   if (options_.damping_time > 0.0 && t_ < options_.damping_time) {
     const double T = options_.damping_time;
@@ -668,6 +671,7 @@ void SphFluid::prior_acceleration() {
     f.apx[i] = g.x() + fx;
     f.apy[i] = g.y() + fy;
   });
+  if (tracked_ < walls_.size()) wall_viscous_reaction();
 }
 
 void SphFluid::transport_shift() {
