@@ -406,23 +406,20 @@ void TlsphSolid::prescribe(double t) {
 Mat2 TlsphSolid::deformation_gradient(std::size_t a) const {
   // eq. 13: F_a = (sum_b (u_b - u_a) (x) grad0 W_ab V_b) B0_a + I
   const double ux_a = x_[a] - X0_[a], uy_a = y_[a] - Y0_[a];
+  // The quadratic correction: F_a = I + sum_b (u_b - u_a) (x) g~_ab (the gradients corrected).
+  const double* gx = quadratic_ ? pair_qx_.data() : pair_gx_.data();
+  const double* gy = quadratic_ ? pair_qy_.data() : pair_gy_.data();
   double G00 = 0.0, G01 = 0.0, G10 = 0.0, G11 = 0.0;
-  if (quadratic_) { // F_a = I + sum_b (u_b - u_a) (x) g~_ab
-    for (std::uint32_t p = pair_start_[a]; p < pair_start_[a + 1]; ++p) {
-      const std::uint32_t b = pair_b_[p];
-      const double dux = x_[b] - X0_[b] - ux_a, duy = y_[b] - Y0_[b] - uy_a;
-      G00 += dux * pair_qx_[p], G01 += dux * pair_qy_[p];
-      G10 += duy * pair_qx_[p], G11 += duy * pair_qy_[p];
-    }
-    Mat2 F;
-    F << 1.0 + G00, G01, G10, 1.0 + G11;
-    return F;
-  }
   for (std::uint32_t p = pair_start_[a]; p < pair_start_[a + 1]; ++p) {
     const std::uint32_t b = pair_b_[p];
     const double dux = x_[b] - X0_[b] - ux_a, duy = y_[b] - Y0_[b] - uy_a;
-    G00 += dux * pair_gx_[p], G01 += dux * pair_gy_[p];
-    G10 += duy * pair_gx_[p], G11 += duy * pair_gy_[p];
+    G00 += dux * gx[p], G01 += dux * gy[p];
+    G10 += duy * gx[p], G11 += duy * gy[p];
+  }
+  if (quadratic_) {
+    Mat2 F;
+    F << 1.0 + G00, G01, G10, 1.0 + G11;
+    return F;
   }
   Mat2 F;
   F(0, 0) = 1.0 + G00 * B00_[a] + G01 * B10_[a];

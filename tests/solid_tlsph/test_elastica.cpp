@@ -68,4 +68,3 @@ TEST_CASE("tlsph: elastica within 2 % of the analytic tip position (H/dp = 8)",
     CHECK_THAT(e.u, Catch::Matchers::WithinRel(e.u_ref, 0.02));
   }
 }
-
