@@ -3,7 +3,8 @@
 Short runs of data/scenes/dam_break_elastic_obstacle.yaml (coarse, to --end): the obstacle 100x
 stiffer and 10x softer, structure/fluid density ratio 1 down to 0.01, Courant numbers 0.05-0.5 (the
 coupled scene has a fixed dt, so dt = C l0 / c), the coarsest and a finer resolution, each with
-several coupling schemes. Every case runs `fsi run` (--threads 1, two at a time) into OUT/CASE and
+several coupling schemes. Every case runs through the Python module fsi (1 thread, in a child
+process, two at a time; sweep.run_in_child) into OUT/CASE and
 reports `completed` or how it stopped: the run's exit status and run.json message (or the last line
 of its output when it left no run.json), or `timed out` past --timeout. A case with a run.json or a
 timeout marker is not run again, so the script resumes. The stability map goes to OUT/table.md and,
@@ -11,13 +12,11 @@ with --doc, into a `<!-- sweep:NAME begin/end -->` block of a Markdown file.
 """
 import argparse
 import concurrent.futures
-import json
 import os
-import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from sweep import ROOT, SCHEMES, read_probe, status, write_doc  # noqa: E402
+from sweep import ROOT, SCHEMES, read_probe, run_in_child, status, write_doc  # noqa: E402
 
 SCENE = "data/scenes/dam_break_elastic_obstacle.yaml"
 SOUND_SPEED = 17.1  # m/s, the scene's c: Courant number C = c dt / l0
@@ -49,24 +48,16 @@ def conditions(l0, dt, fine_l0, fine_dt):
     return out
 
 
-def run_case(fsi, out, name, overrides, timeout):
+def run_case(out, name, overrides, timeout):
     case_dir = os.path.join(out, name)
     marker = case_dir + ".timeout"
     if status(case_dir) is not None or os.path.exists(marker):
         return name, "skipped (ran before)"
-    cmd = [fsi, "run", os.path.join(ROOT, SCENE), "--out", case_dir, "--threads", "1"]
-    for o in overrides:
-        cmd += ["--set", o]
-    with open(case_dir + ".log", "w") as log:
-        proc = subprocess.Popen(cmd, stdout=log, stderr=subprocess.STDOUT)
-        try:
-            code = proc.wait(timeout=timeout)
-        except subprocess.TimeoutExpired:
-            proc.kill()
-            proc.wait()
-            with open(marker, "w") as f:
-                f.write(f"{timeout}\n")
-            return name, "timed out"
+    code = run_in_child(os.path.join(ROOT, SCENE), case_dir, overrides, timeout)
+    if code is None:
+        with open(marker, "w") as f:
+            f.write(f"{timeout}\n")
+        return name, "timed out"
     with open(case_dir + ".exit", "w") as f:
         f.write(f"{code}\n")
     return name, f"exit {code}"
@@ -131,7 +122,6 @@ def main():
     p.add_argument("--dry-run", action="store_true", help="list the cases and stop")
     args = p.parse_args()
 
-    fsi = os.path.join(os.environ.get("BUILD_DIR", os.path.join(ROOT, "build")), "apps", "fsi")
     plan = []
     for cond, overrides, schemes in conditions(args.l0, args.dt, args.fine_l0, args.fine_dt):
         if args.only and cond not in args.only.split(","):
@@ -146,7 +136,7 @@ def main():
         return
     os.makedirs(args.out, exist_ok=True)
     with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
-        jobs = [pool.submit(run_case, fsi, args.out, n, o, args.timeout) for n, o in plan]
+        jobs = [pool.submit(run_case, args.out, n, o, args.timeout) for n, o in plan]
         for job in concurrent.futures.as_completed(jobs):
             name, what = job.result()
             print(f"extremes: {name}: {what}", flush=True)

@@ -1,7 +1,8 @@
 """Speed-accuracy sweep of a coupled scene (issue 7): resolution, coupling scheme, time step.
 
-Each case is one `fsi run` (--threads 1, two cases at a time by default) into OUT/CASE; a case
-whose run.json says `completed` is not run again, so an interrupted sweep resumes. The table
+Each case is one run through the Python module fsi (1 thread, in a child process, two cases at a
+time by default) into OUT/CASE; a case whose run.json says `completed` is not run again, so an
+interrupted sweep resumes. The table
 (wall seconds, steps, coupling iterations, error against the scene's reference figure) goes to
 OUT/table.md and, with --doc, between `<!-- sweep:NAME begin/end -->` markers of a Markdown
 file; the error against wall time goes to a PNG (the Pareto front).
@@ -9,8 +10,8 @@ file; the error against wall time goes to a PNG (the Pareto front).
 import argparse
 import concurrent.futures
 import json
+import multiprocessing
 import os
-import subprocess
 import sys
 
 import matplotlib
@@ -19,6 +20,9 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+# The module fsi as built in BUILD_DIR (default build/): BUILD_DIR/python/fsi.
+sys.path.insert(0, os.path.join(os.environ.get("BUILD_DIR", os.path.join(ROOT, "build")), "python"))
+import fsi  # noqa: E402
 
 # What each scene is measured by. The dam break: the upper-left corner's largest rightward
 # deflection against the centre of the published band 0.040-0.055 m (issue 7). The plate: the
@@ -102,16 +106,49 @@ def status(case_dir):
         return None
 
 
-def run_case(fsi, scene_file, out, name, overrides):
+def _run_child(scene_file, case_dir, overrides, log_path):
+    """One case in a child process: fsi.Scene.run (replacing an earlier attempt's files) with its
+    log and messages in log_path; the exit status is the command's (0 completed, 2 bad input,
+    3 stopped, 128 + signal)."""
+    with open(log_path, "w") as log:
+        os.dup2(log.fileno(), 1)
+        os.dup2(log.fileno(), 2)
+    sys.stdout = os.fdopen(1, "w", buffering=1)
+    sys.stderr = os.fdopen(2, "w", buffering=1)
+    try:
+        fsi.load(scene_file, overrides).run(out=case_dir, threads=1, overwrite=True, quiet=False)
+    except fsi.InputError as e:
+        print(e, file=sys.stderr)
+        sys.exit(2)
+    except fsi.RunError as e:
+        print(f"run stopped: {e}", file=sys.stderr)
+        sys.exit(3)
+    except fsi.Interrupted as e:
+        print(e, file=sys.stderr)
+        sys.exit(128 + e.signal)
+
+
+def run_in_child(scene_file, case_dir, overrides, timeout=None):
+    """Runs a case (case_dir.log gets its output); its exit status, or None past timeout s
+    (the child is killed)."""
+    child = multiprocessing.get_context("spawn").Process(
+        target=_run_child, args=(scene_file, case_dir, overrides, case_dir + ".log"))
+    child.start()
+    child.join(timeout)
+    if child.exitcode is None:
+        child.kill()
+        child.join()
+        return None
+    return child.exitcode
+
+
+def run_case(scene_file, out, name, overrides):
     case_dir = os.path.join(out, name)
     done = status(case_dir)
     if done and done.get("status") == "completed":
         return name, "skipped (completed before)"
-    cmd = [fsi, "run", os.path.join(ROOT, scene_file), "--out", case_dir, "--threads", "1"]
-    for o in overrides:
-        cmd += ["--set", o]
-    with open(case_dir + ".log", "w") as log:
-        code = subprocess.call(cmd, stdout=log, stderr=subprocess.STDOUT)
+    # A case that stopped or was cut short before starts again (its files are replaced).
+    code = run_in_child(os.path.join(ROOT, scene_file), case_dir, overrides)
     return name, f"exit {code}"
 
 
@@ -193,7 +230,6 @@ def main():
     args = p.parse_args()
 
     scene = SCENES[args.scene]
-    fsi = os.path.join(os.environ.get("BUILD_DIR", os.path.join(ROOT, "build")), "apps", "fsi")
     plan = cases(args)
     if args.dry_run:
         for name, overrides in plan:
@@ -201,7 +237,7 @@ def main():
         return
     os.makedirs(args.out, exist_ok=True)
     with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
-        jobs = [pool.submit(run_case, fsi, scene["file"], args.out, n, o) for n, o in plan]
+        jobs = [pool.submit(run_case, scene["file"], args.out, n, o) for n, o in plan]
         for job in concurrent.futures.as_completed(jobs):
             name, what = job.result()
             print(f"sweep: {name}: {what}", flush=True)

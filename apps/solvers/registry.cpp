@@ -3,6 +3,7 @@
 // The first entry of each list is the default `type`.
 #include "emps/emps_plugin.hpp"
 #include "fem/fem_plugin.hpp"
+#include "sph/sph_plugin.hpp"
 #include "tlsph/tlsph_plugin.hpp"
 
 #include <algorithm>
@@ -11,7 +12,7 @@ namespace fsi::app {
 
 namespace {
 std::vector<FluidPlugin>& fluids() {
-  static std::vector<FluidPlugin> list{emps_plugin::plugin()};
+  static std::vector<FluidPlugin> list{emps_plugin::plugin(), sph_plugin::plugin()};
   return list;
 }
 std::vector<StructurePlugin>& structures() {

@@ -474,6 +474,7 @@ RunResult run_scene(const Scene& scene, std::vector<std::unique_ptr<Model>>& mod
         update_last_words();
       }
       progress.update(c.time, c.step);
+      if (options.on_step) options.on_step(c.time, c.step);
       if (checkpoint_due()) checkpoint();
       if ((result.signal = interrupt.received()) != 0) {
         if (checkpoint_step != c.step) checkpoint();

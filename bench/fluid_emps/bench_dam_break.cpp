@@ -2,12 +2,12 @@
 // water column against the left wall of a 4 m wide tank, r_e = 3.1 l0, l0 = 0.01 m (20,000
 // particles) or 0.005 m (80,000), on 1 or 2 threads. Steps are timed after 0.1 s of collapse
 // (the surge has started; neighbour-list rebuilds and reorderings are counted).
+#include "common/sweep.hpp"
 #include "fluid_emps/emps_fluid.hpp"
 #include "geometry_erp/fill.hpp"
 
 #include <benchmark/benchmark.h>
 #include <cmath>
-#include <omp.h>
 
 using namespace fsi;
 
@@ -15,7 +15,7 @@ namespace {
 
 void dam_break(benchmark::State& state) {
   const double l0 = 1e-3 * static_cast<double>(state.range(0));
-  omp_set_num_threads(static_cast<int>(state.range(1)));
+  bench::use_threads(state, 1);
   erp::WallSet walls;
   const std::vector<Vec2> tank{{0.0, 3.0}, {0.0, 0.0}, {4.0, 0.0}, {4.0, 3.0}};
   walls.add_polyline(tank, false, 0);
@@ -60,13 +60,6 @@ void dam_break(benchmark::State& state) {
 
 } // namespace
 
-BENCHMARK(dam_break)
-    ->ArgNames({"l0_mm", "threads"})
-    ->Args({10, 1})
-    ->Args({10, 2})
-    ->Args({5, 1})
-    ->Args({5, 2})
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime();
+BENCHMARK(dam_break)->ArgNames({"l0_mm", "threads"})->Apply(bench::sizes_on_1_and_2_threads<10, 5>);
 
 BENCHMARK_MAIN();

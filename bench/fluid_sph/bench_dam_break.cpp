@@ -3,13 +3,14 @@
 // particles) or 0.005 m (80,000), rkgc on, 1 or 2 threads. Timed after 0.1 s of collapse;
 // advection-step work (pair rebuild, sort, density, B, viscous force) is counted.
 // FSI_SPH_WARMUP=seconds overrides the 0.1 s of collapse before timing.
+#include "dam_break_options.hpp"
 #include "fluid_sph/sph_fluid.hpp"
+#include "fsi/core/parallel.hpp"
 
 #include <benchmark/benchmark.h>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
-#include <omp.h>
 #include <string>
 
 using namespace fsi;
@@ -32,19 +33,11 @@ double rss_bytes() {
 
 void dam_break(benchmark::State& state) {
   const double dp = 1e-3 * static_cast<double>(state.range(0));
-  omp_set_num_threads(static_cast<int>(state.range(1)));
+  set_num_threads(static_cast<int>(state.range(1)));
   const double rss0 = rss_bytes();
-  sph::SphOptions o;
-  o.rho0 = 1000.0;
-  o.dp = dp;
-  o.c0 = 10.0 * std::sqrt(2.0 * 9.81 * 2.0);
-  o.u_ref = 2.0 * std::sqrt(9.81 * 2.0);
-  o.viscosity = 1e-6;
-  o.gravity = {0.0, -9.81};
-  o.correction = sph::Correction::rkgc;
-  o.wkgc_alpha = 0.3;
-  o.domain_min = {-0.1, -0.1};
-  o.domain_max = {4.1, 3.1};
+  const sph::SphOptions o =
+      sph::dam_break_options(dp, 10.0 * std::sqrt(2.0 * 9.81 * 2.0), 2.0 * std::sqrt(9.81 * 2.0),
+                             {-0.1, -0.1}, {4.1, 3.1});
   const std::vector<sph::WallPolyline> walls{{{{0.0, 3.0}, {0.0, 0.0}, {4.0, 0.0}, {4.0, 3.0}}}};
   sph::SphFluid fluid(o, sph::fill_rectangle({0, 0}, {1, 2}, dp), walls);
   const char* warm = std::getenv("FSI_SPH_WARMUP");

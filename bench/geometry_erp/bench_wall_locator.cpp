@@ -4,10 +4,10 @@
 // Layouts (1.6 m x 1.0 m tank, l0 = sqrt(area / 100k) = 4 mm, r_e = 3.1 l0):
 //   tank:      the tank outline cut into N segments, particles uniform in the tank;
 //   obstacles: N / 10 decagons (radius 2 r_e) scattered in the tank, particles uniform in the tank.
+#include "common/sweep.hpp"
 #include "geometry_erp/wall_locator.hpp"
 
 #include <benchmark/benchmark.h>
-#include <omp.h>
 
 #include <cmath>
 #include <numbers>
@@ -62,8 +62,8 @@ void BM_query(benchmark::State& state) {
   const WallSet walls =
       make_walls(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)));
   const auto kind = state.range(2) == 0 ? LocatorKind::grid : LocatorKind::aabb_tree;
-  const int threads_before = omp_get_max_threads();
-  omp_set_num_threads(static_cast<int>(state.range(3)));
+  const int threads_before = fsi::num_threads();
+  fsi::bench::use_threads(state, 3);
   const auto locator = make_wall_locator(walls, r_e, kind);
   const std::vector<Vec2> x = make_particles();
   WallHits hits;
@@ -77,7 +77,7 @@ void BM_query(benchmark::State& state) {
   for (const int s : hits.segment) near += s >= 0;
   state.counters["near_wall"] = static_cast<double>(near) / static_cast<double>(x.size());
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * x.size()));
-  omp_set_num_threads(threads_before);
+  fsi::set_num_threads(threads_before);
 }
 
 /// Args: layout, segments, back-end. Every node moves, then update() (timed together).

@@ -1,14 +1,14 @@
 // Cost of one Newton iteration of the T6 solid, split into assembly (internal force + tangent),
 // factorisation and solve (CHOLMOD; Eigen's SimplicialLDLT factorisation for comparison), or
 // preconditioner set-up and CG solve (IncompleteCholesky), for about 200, 2k and 20k elements,
-// on 1 and 2 threads (omp_set_num_threads; only the assembly loop is OpenMP-parallel).
+// on 1 and 2 threads (only the assembly loop is parallel).
 #include <benchmark/benchmark.h>
 
 #include <map>
 #include <memory>
-#include <omp.h>
 #include <stdexcept>
 
+#include "common/sweep.hpp"
 #include "structure_fem/assembly.hpp"
 #include "structure_fem/linear_solver.hpp"
 #include "structure_fem/rectangle_mesher.hpp"
@@ -60,9 +60,16 @@ void set_counters(benchmark::State& state, const Problem& p) {
   state.counters["threads"] = static_cast<double>(state.range(1));
 }
 
-void BM_Assembly(benchmark::State& state) {
+/// The problem of state.range(0) quads along the beam (ex / 4 across: 20 -> 200, 64 -> 2048,
+/// 200 -> 20000 elements), on state.range(1) threads.
+Problem& setup(benchmark::State& state) {
   Problem& p = problem(static_cast<int>(state.range(0)));
-  omp_set_num_threads(static_cast<int>(state.range(1)));
+  fsi::bench::use_threads(state, 1);
+  return p;
+}
+
+void BM_Assembly(benchmark::State& state) {
+  Problem& p = setup(state);
   Vector f;
   for (auto _ : state) {
     p.assembler->assemble(p.u, f, &p.K);
@@ -71,68 +78,37 @@ void BM_Assembly(benchmark::State& state) {
   set_counters(state, p);
 }
 
-void BM_CholmodFactorize(benchmark::State& state) {
-  Problem& p = problem(static_cast<int>(state.range(0)));
-  omp_set_num_threads(static_cast<int>(state.range(1)));
-  auto solver = make_linear_solver({LinearSolverKind::cholmod, 1e-10, 0});
+/// The factorisation of K_eff (CG: the preconditioner set-up).
+void BM_Factorize(benchmark::State& state, LinearSolverKind kind) {
+  Problem& p = setup(state);
+  auto solver = make_linear_solver({kind, 1e-10, 0});
   solver->analyze(p.K_eff);
   for (auto _ : state) solver->factorize(p.K_eff);
   set_counters(state, p);
 }
 
-void BM_CholmodSolve(benchmark::State& state) {
-  Problem& p = problem(static_cast<int>(state.range(0)));
-  omp_set_num_threads(static_cast<int>(state.range(1)));
-  auto solver = make_linear_solver({LinearSolverKind::cholmod, 1e-10, 0});
+void BM_Solve(benchmark::State& state, LinearSolverKind kind) {
+  Problem& p = setup(state);
+  auto solver = make_linear_solver({kind, 1e-10, 0});
   solver->analyze(p.K_eff);
   solver->factorize(p.K_eff);
   for (auto _ : state) benchmark::DoNotOptimize(solver->solve(p.rhs));
   set_counters(state, p);
+  if (kind == LinearSolverKind::cg_incomplete_cholesky)
+    state.counters["cg_iterations"] = solver->iterations();
 }
 
-void BM_LdltFactorize(benchmark::State& state) {
-  Problem& p = problem(static_cast<int>(state.range(0)));
-  omp_set_num_threads(static_cast<int>(state.range(1)));
-  auto solver = make_linear_solver({LinearSolverKind::simplicial_ldlt, 1e-10, 0});
-  solver->analyze(p.K_eff);
-  for (auto _ : state) solver->factorize(p.K_eff);
-  set_counters(state, p);
-}
-
-void BM_CgSetup(benchmark::State& state) {
-  Problem& p = problem(static_cast<int>(state.range(0)));
-  omp_set_num_threads(static_cast<int>(state.range(1)));
-  auto solver = make_linear_solver({LinearSolverKind::cg_incomplete_cholesky, 1e-10, 0});
-  solver->analyze(p.K_eff);
-  for (auto _ : state) solver->factorize(p.K_eff);
-  set_counters(state, p);
-}
-
-void BM_CgSolve(benchmark::State& state) {
-  Problem& p = problem(static_cast<int>(state.range(0)));
-  omp_set_num_threads(static_cast<int>(state.range(1)));
-  auto solver = make_linear_solver({LinearSolverKind::cg_incomplete_cholesky, 1e-10, 0});
-  solver->analyze(p.K_eff);
-  solver->factorize(p.K_eff);
-  for (auto _ : state) benchmark::DoNotOptimize(solver->solve(p.rhs));
-  set_counters(state, p);
-  state.counters["cg_iterations"] = solver->iterations();
-}
-
-/// ex quads along the beam (ex / 4 across): 20 -> 200, 64 -> 2048, 200 -> 20000 elements.
-void sizes(benchmark::internal::Benchmark* b) {
-  for (int ex : {20, 64, 200})
-    for (int threads : {1, 2}) b->Args({ex, threads});
-  b->Unit(benchmark::kMillisecond)->UseRealTime();
-}
+constexpr auto sizes = fsi::bench::sizes_on_1_and_2_threads<20, 64, 200>;
 
 } // namespace
 
 BENCHMARK(BM_Assembly)->Apply(sizes);
-BENCHMARK(BM_CholmodFactorize)->Apply(sizes);
-BENCHMARK(BM_CholmodSolve)->Apply(sizes);
-BENCHMARK(BM_LdltFactorize)->Apply(sizes);
-BENCHMARK(BM_CgSetup)->Apply(sizes);
-BENCHMARK(BM_CgSolve)->Apply(sizes);
+BENCHMARK_CAPTURE(BM_Factorize, cholmod, LinearSolverKind::cholmod)->Apply(sizes);
+BENCHMARK_CAPTURE(BM_Solve, cholmod, LinearSolverKind::cholmod)->Apply(sizes);
+BENCHMARK_CAPTURE(BM_Factorize, simplicial_ldlt, LinearSolverKind::simplicial_ldlt)->Apply(sizes);
+BENCHMARK_CAPTURE(BM_Factorize, cg_incomplete_cholesky, LinearSolverKind::cg_incomplete_cholesky)
+    ->Apply(sizes);
+BENCHMARK_CAPTURE(BM_Solve, cg_incomplete_cholesky, LinearSolverKind::cg_incomplete_cholesky)
+    ->Apply(sizes);
 
 BENCHMARK_MAIN();

@@ -16,9 +16,30 @@ namespace {
 constexpr std::size_t none = std::numeric_limits<std::size_t>::max();
 
 /// Low-dissipation limiter (eq. 5, reference code's argument): beta = min(3 max(u / c0, 0), 1)
-/// with u = (v_i - v_j) . e_ij, positive when the pair separates.
-inline double limiter(double u, double inv_c0) {
-  return std::min(3.0 * std::max(u * inv_c0, 0.0), 1.0);
+/// with u = (v_i - v_j) . e_ij, positive when the pair separates; beta = 1 when it is off.
+inline double limiter(double u, double inv_c0, bool on) {
+  return on ? std::min(3.0 * std::max(u * inv_c0, 0.0), 1.0) : 1.0;
+}
+
+/// The dummy wall particle's pressure jump p_d - p_i = rho_i r (a_prior - a_w) . (-e_ia) (eq. 16),
+/// extrapolated towards every dummy: the reference code's max(0, .) leaves p_d = p_i above the
+/// particle, a vertical force on the side-wall columns that no pressure field balances (it drove a
+/// circulation along the side walls, docs/fluid_sph.md).
+inline double dummy_jump(double rho_i, double r, double dax, double day, double ex, double ey) {
+  return -rho_i * r * (dax * ex + day * ey);
+}
+
+/// Neighbour j at (dx, dy) = x_i - x_j into slot k of a pair set: e_ij, dW_ij, r_ij.
+inline void store_pair(std::uint32_t k, std::uint32_t j, double dx, double dy,
+                       const particles::WendlandC2& kernel, std::vector<std::uint32_t>& js,
+                       std::vector<double>& ex, std::vector<double>& ey, std::vector<double>& dw,
+                       std::vector<double>& rs) {
+  const double r = std::sqrt(dx * dx + dy * dy);
+  js[k] = j;
+  ex[k] = dx / r;
+  ey[k] = dy / r;
+  dw[k] = kernel.dW(r);
+  rs[k] = r;
 }
 
 std::string fmt(double v) {
@@ -82,7 +103,8 @@ WallParticles::WallParticles()
       x0(fields.add_real("x0")), y0(fields.add_real("y0")), nx(fields.add_real("nx")),
       ny(fields.add_real("ny")), nx0(fields.add_real("nx0")), ny0(fields.add_real("ny0")),
       vx(fields.add_real("vx")), vy(fields.add_real("vy")), ax(fields.add_real("ax")),
-      ay(fields.add_real("ay")), xb(fields.add_real("xb")), yb(fields.add_real("yb")) {}
+      ay(fields.add_real("ay")), xb(fields.add_real("xb")), yb(fields.add_real("yb")),
+      fvx(fields.add_real("fvx")), fvy(fields.add_real("fvy")) {}
 
 std::vector<Vec2> fill_rectangle(const Vec2& lo, const Vec2& hi, double dp) {
   std::vector<Vec2> out;
@@ -95,7 +117,7 @@ std::vector<Vec2> fill_rectangle(const Vec2& lo, const Vec2& hi, double dp) {
 }
 
 SphFluid::SphFluid(const SphOptions& options, const std::vector<Vec2>& positions,
-                   const std::vector<WallPolyline>& walls)
+                   const std::vector<WallPolyline>& walls, const std::vector<WallPoint>& points)
     : options_(options), kernel_((options.validate(), options.h())), h_(options.h()), sigma0_(0.0),
       mass_(options.mass()) {
   const double dp = options_.dp;
@@ -127,6 +149,7 @@ SphFluid::SphFluid(const SphOptions& options, const std::vector<Vec2>& positions
     fluid_.apy[i] = fluid_.ay[i] = options_.gravity.y();
   }
   fill_walls(walls);
+  append_wall_points(points);
   // The first advection step starts here: its per-Dt work runs as at the end of any other.
   builds_ = -1;
   per_advection_step();
@@ -241,6 +264,7 @@ void SphFluid::advance(double dt) {
                      "] (what is left of the advection step)");
   move_walls(dt);
   first_half(dt);
+  if (tracked_ < walls_.size()) wall_reaction();
   second_half(dt);
   if (options_.damping_time > 0.0 && t_ < options_.damping_time) {
     const double T = options_.damping_time;
@@ -305,6 +329,7 @@ void SphFluid::first_half(double dt) {
     f.y[i] += f.vy[i] * half;
   });
   const double rho0c0 = rho0 * options_.c0, inv_c0 = 1.0 / options_.c0, inv_m = 1.0 / mass_;
+  const bool lim = options_.riemann_limiter;
   parallel_for(f.size(), [&](std::size_t i) {
     const double p_i = f.p[i], vx_i = f.vx[i], vy_i = f.vy[i];
     const double b00 = f.b00[i], b01 = f.b01[i], b11 = f.b11[i];
@@ -319,7 +344,7 @@ void SphFluid::first_half(double dt) {
       fy -= p_i * (f.b01[j] * gx + f.b11[j] * gy) + p_j * (b01 * gx + b11 * gy);
       // Riemann dissipation: -2 (P* - p_bar) grad W = beta rho0 c0 u grad W (eq. 5).
       const double u = (vx_i - f.vx[j]) * ex + (vy_i - f.vy[j]) * ey;
-      const double d = rho0c0 * limiter(u, inv_c0) * u;
+      const double d = rho0c0 * limiter(u, inv_c0, lim) * u;
       fx += d * gx;
       fy += d * gy;
     }
@@ -328,15 +353,16 @@ void SphFluid::first_half(double dt) {
     for (std::uint32_t k = wstart_[i]; k < wstart_[i + 1]; ++k) {
       const std::uint32_t a = wj_[k];
       const double ex = wex_[k], ey = wey_[k], dWV = wdw_[k] * options_.dp * options_.dp;
-      const double face = -((apx - walls_.ax[a]) * ex + (apy - walls_.ay[a]) * ey);
-      const double p_d = p_i + rho_i * wr_[k] * std::max(0.0, face);
-      const double gx = dWV * ex, gy = dWV * ey, ps = p_i + p_d;
+      const double p_d =
+          p_i + dummy_jump(rho_i, wr_[k], apx - walls_.ax[a], apy - walls_.ay[a], ex, ey);
+      // A wall pushes, never pulls: p_i + p_d >= 0 (p_d < 0 above a particle near the surface).
+      const double gx = dWV * ex, gy = dWV * ey, ps = std::max(p_i + p_d, 0.0);
       fx -= ps * (b00 * gx + b01 * gy);
       fy -= ps * (b01 * gx + b11 * gy);
       // Dissipation along the wall normal with u = 2 (v_i - v_w) . n_w.
       const double nx = walls_.nx[a], ny = walls_.ny[a];
       const double u = 2.0 * ((vx_i - walls_.vx[a]) * nx + (vy_i - walls_.vy[a]) * ny);
-      const double d = rho0c0 * limiter(u, inv_c0) * u * dWV;
+      const double d = rho0c0 * limiter(u, inv_c0, lim) * u * dWV;
       fx += d * nx;
       fy += d * ny;
     }
@@ -368,11 +394,16 @@ void SphFluid::second_half(double dt) {
           const double u = (vx_i - f.vx[j]) * pex_[k] + (vy_i - f.vy[j]) * pey_[k];
           s += (u + (p_i - f.p[j]) * inv_rho0c0) * pdw_[k] * f.vol[j];
         }
-        // Walls: v_d = 2 v_w - v_i, so v_i - v_d = 2 (v_i - v_w).
+        // Walls: v_d = 2 v_w - v_i, so v_i - v_d = 2 (v_i - v_w); the pressure term with the
+        // dummy pressure p_d of eq. 16 (the reference code's wall density diffusion).
+        const double apx = f.apx[i], apy = f.apy[i], rho_i = f.rho[i];
         for (std::uint32_t k = wstart_[i]; k < wstart_[i + 1]; ++k) {
           const std::uint32_t a = wj_[k];
-          const double u = (vx_i - walls_.vx[a]) * wex_[k] + (vy_i - walls_.vy[a]) * wey_[k];
-          s += 2.0 * u * wdw_[k] * vw;
+          const double ex = wex_[k], ey = wey_[k];
+          const double u = (vx_i - walls_.vx[a]) * ex + (vy_i - walls_.vy[a]) * ey;
+          const double p_id =
+              -dummy_jump(rho_i, wr_[k], apx - walls_.ax[a], apy - walls_.ay[a], ex, ey);
+          s += (2.0 * u + p_id * inv_rho0c0) * wdw_[k] * vw;
         }
         f.drho[i] = f.rho[i] * s;
         f.rho[i] += f.drho[i] * half;
@@ -522,13 +553,7 @@ void SphFluid::build_pairs() {
           const double dx = xi - f.xb[j] - sx, dy = yi - f.yb[j] - sy;
           const double r2 = dx * dx + dy * dy;
           if (j == i || r2 >= cut2 || r2 <= 0.0) return;
-          const double r = std::sqrt(r2);
-          pj_[k] = j;
-          pex_[k] = dx / r;
-          pey_[k] = dy / r;
-          pdw_[k] = kernel_.dW(r);
-          pr_[k] = r;
-          ++k;
+          store_pair(k++, j, dx, dy, kernel_, pj_, pex_, pey_, pdw_, pr_);
         });
         std::uint32_t kw = wstart_[i];
         double nearest = cut2;
@@ -537,13 +562,7 @@ void SphFluid::build_pairs() {
           const double dx = xi - walls_.xb[a] - sx, dy = yi - walls_.yb[a] - sy;
           const double r2 = dx * dx + dy * dy;
           if (r2 >= cut2 || r2 <= 0.0) return;
-          const double r = std::sqrt(r2);
-          wj_[kw] = a;
-          wex_[kw] = dx / r;
-          wey_[kw] = dy / r;
-          wdw_[kw] = kernel_.dW(r);
-          wr_[kw] = r;
-          ++kw;
+          store_pair(kw++, a, dx, dy, kernel_, wj_, wex_, wey_, wdw_, wr_);
           if (r2 < nearest) nearest = r2, in_front = dx * walls_.nx[a] + dy * walls_.ny[a] >= 0.0;
         });
         return in_front ? none : i;
@@ -652,6 +671,7 @@ void SphFluid::prior_acceleration() {
     f.apx[i] = g.x() + fx;
     f.apy[i] = g.y() + fy;
   });
+  if (tracked_ < walls_.size()) wall_viscous_reaction();
 }
 
 void SphFluid::transport_shift() {

@@ -99,4 +99,14 @@ double NeoHookean::stress_33(const Mat2& E) const {
   return lambda_ * RightCauchyGreen(E).log_J; // C33 = 1
 }
 
+double von_mises(const Material& law, const Mat2& F, const Mat2& E) {
+  const double J = F.determinant();
+  const Mat2 sigma = F * law.stress(E) * F.transpose() / J;
+  const double s33 = law.stress_33(E) / J; // F33 = 1
+  const double sxx = sigma(0, 0), syy = sigma(1, 1), sxy = sigma(0, 1);
+  return std::sqrt(
+      0.5 * ((sxx - syy) * (sxx - syy) + (syy - s33) * (syy - s33) + (s33 - sxx) * (s33 - sxx)) +
+      3.0 * sxy * sxy);
+}
+
 } // namespace fsi::materials

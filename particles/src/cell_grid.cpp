@@ -1,8 +1,7 @@
 #include "particles/cell_grid.hpp"
 
-#include "fsi/core/parallel.hpp"
+#include "binning.hpp"
 
-#include <algorithm>
 #include <cmath>
 
 namespace fsi::particles {
@@ -15,34 +14,18 @@ CellGrid::CellGrid(const Vec2& lo, const Vec2& hi, double h)
 }
 
 int CellGrid::cell_x(double x) const {
-  const double c = std::floor((x - lo_.x()) * inv_h_);
-  return static_cast<int>(std::clamp(c, 0.0, static_cast<double>(nx_ - 1)));
+  return detail::cell_index(x, lo_.x(), inv_h_, nx_);
 }
 
 int CellGrid::cell_y(double y) const {
-  const double c = std::floor((y - lo_.y()) * inv_h_);
-  return static_cast<int>(std::clamp(c, 0.0, static_cast<double>(ny_ - 1)));
+  return detail::cell_index(y, lo_.y(), inv_h_, ny_);
 }
 
 void CellGrid::bin(const double* x, const double* y, std::size_t n) {
-  cell_.resize(n);
-  order_.resize(n);
-  parallel_for(n, [&](std::size_t i) {
-    cell_[i] = static_cast<std::uint32_t>(cell_y(y[i]) * nx_ + cell_x(x[i]));
-  });
-  std::fill(start_.begin(), start_.end(), 0u);
-  for (std::size_t i = 0; i < n; ++i) ++start_[cell_[i] + 1];
-  for (std::size_t c = 1; c < start_.size(); ++c) start_[c] += start_[c - 1];
-  // Stable scatter: within a cell, particles keep their index order (deterministic).
-  std::vector<std::uint32_t>& next = cell_; // reuse: cell_ is no longer needed after this pass
-  for (std::size_t i = 0; i < n; ++i) {
-    const std::uint32_t c = next[i];
-    next[i] = start_[c]++; // position of particle i in order_
-  }
-  for (std::size_t i = 0; i < n; ++i) order_[next[i]] = static_cast<std::uint32_t>(i);
-  // start_ was advanced to the ends of the cells: shift back by one cell.
-  for (std::size_t c = start_.size() - 1; c > 0; --c) start_[c] = start_[c - 1];
-  start_[0] = 0;
+  detail::sort_by_cell(
+      n,
+      [&](std::size_t i) { return static_cast<std::uint32_t>(cell_y(y[i]) * nx_ + cell_x(x[i])); },
+      cell_, start_, order_);
 }
 
 } // namespace fsi::particles

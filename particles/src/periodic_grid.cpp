@@ -1,8 +1,7 @@
 #include "particles/periodic_grid.hpp"
 
-#include "fsi/core/parallel.hpp"
+#include "binning.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -27,45 +26,37 @@ PeriodicGrid::PeriodicGrid(const Vec2& lo, const Vec2& hi, double cell, bool per
   start_.assign(static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_) + 1, 0);
 }
 
+namespace {
+/// v brought into [lo, lo + L) by one period along a periodic axis; unchanged otherwise.
+double wrap(double v, double lo, double L, bool periodic) {
+  if (!periodic) return v;
+  if (v < lo) v += L;
+  if (v >= lo + L) v -= L;
+  return v;
+}
+} // namespace
+
 double PeriodicGrid::wrap_x(double x) const {
-  if (!periodic_x_) return x;
-  const double L = period_.x();
-  if (x < lo_.x()) x += L;
-  if (x >= lo_.x() + L) x -= L;
-  return x;
+  return wrap(x, lo_.x(), period_.x(), periodic_x_);
 }
 
 double PeriodicGrid::wrap_y(double y) const {
-  if (!periodic_y_) return y;
-  const double L = period_.y();
-  if (y < lo_.y()) y += L;
-  if (y >= lo_.y() + L) y -= L;
-  return y;
+  return wrap(y, lo_.y(), period_.y(), periodic_y_);
 }
 
 int PeriodicGrid::cell_x(double x) const {
-  const double c = std::floor((x - lo_.x()) * inv_cell_.x());
-  return static_cast<int>(std::clamp(c, 0.0, static_cast<double>(nx_ - 1)));
+  return detail::cell_index(x, lo_.x(), inv_cell_.x(), nx_);
 }
 
 int PeriodicGrid::cell_y(double y) const {
-  const double c = std::floor((y - lo_.y()) * inv_cell_.y());
-  return static_cast<int>(std::clamp(c, 0.0, static_cast<double>(ny_ - 1)));
+  return detail::cell_index(y, lo_.y(), inv_cell_.y(), ny_);
 }
 
 void PeriodicGrid::bin(const double* x, const double* y, std::size_t n) {
-  cell_.resize(n);
-  order_.resize(n);
-  parallel_for(n, [&](std::size_t i) {
-    cell_[i] = static_cast<std::uint32_t>(cell_y(y[i]) * nx_ + cell_x(x[i]));
-  });
-  std::fill(start_.begin(), start_.end(), 0u);
-  for (std::size_t i = 0; i < n; ++i) ++start_[cell_[i] + 1];
-  for (std::size_t c = 1; c < start_.size(); ++c) start_[c] += start_[c - 1];
-  for (std::size_t i = 0; i < n; ++i) cell_[i] = start_[cell_[i]]++; // slot of particle i
-  for (std::size_t i = 0; i < n; ++i) order_[cell_[i]] = static_cast<std::uint32_t>(i);
-  for (std::size_t c = start_.size() - 1; c > 0; --c) start_[c] = start_[c - 1];
-  start_[0] = 0;
+  detail::sort_by_cell(
+      n,
+      [&](std::size_t i) { return static_cast<std::uint32_t>(cell_y(y[i]) * nx_ + cell_x(x[i])); },
+      cell_, start_, order_);
 }
 
 } // namespace fsi::particles

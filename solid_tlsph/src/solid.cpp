@@ -51,9 +51,8 @@ void validate(const TlsphOptions& o) {
     const auto& c = o.clamps[k];
     if (!c.contains)
       throw InputError("tlsph: clamps[" + std::to_string(k) + "].contains is not set");
-    if (c.odd_image && (c.position || !(c.face_normal.norm() > 0.0)))
-      throw InputError("tlsph: clamps[" + std::to_string(k) +
-                       "]: odd_image needs a fixed clamp and a nonzero face_normal");
+    if (!c.face_normal.allFinite() || !c.face_point.allFinite())
+      throw InputError("tlsph: clamps[" + std::to_string(k) + "]: face is not finite");
     if (static_cast<bool>(c.position) != static_cast<bool>(c.velocity))
       throw InputError("tlsph: clamps[" + std::to_string(k) +
                        "]: set both position and velocity of a moving clamp, or neither");
@@ -308,20 +307,72 @@ void TlsphSolid::build_interface(const SolidGeometry& geometry) {
     interface_mesh_.edges.push_back({k - 1, k - 1, 0});
 }
 
+void TlsphSolid::clamp_face(std::size_t k, Vec2& point, Vec2& normal) const {
+  const Clamp& c = options_.clamps[k];
+  const double dp = options_.dp, tol = 1e-6 * dp;
+  if (c.face_normal.norm() > 0.0) {
+    point = c.face_point, normal = c.face_normal.normalized();
+    return;
+  }
+  // The clamped-free pairs one lattice spacing apart: their directions give the normal, their
+  // midpoints the face.
+  Vec2 sum_d = Vec2::Zero(), sum_m = Vec2::Zero();
+  std::vector<std::pair<Vec2, Vec2>> pairs; // (X_p - X_g, midpoint)
+  for (std::size_t g = 0; g < size(); ++g) {
+    if (clamped_[g] != k + 1) continue;
+    for (std::uint32_t q = pair_start_[g]; q < pair_start_[g + 1]; ++q) {
+      const std::uint32_t p = pair_b_[q];
+      const Vec2 d(X0_[p] - X0_[g], Y0_[p] - Y0_[g]);
+      if (clamped_[p] || std::abs(d.norm() - dp) > tol) continue;
+      const Vec2 m(0.5 * (X0_[p] + X0_[g]), 0.5 * (Y0_[p] + Y0_[g]));
+      pairs.emplace_back(d, m), sum_d += d, sum_m += m;
+    }
+  }
+  const std::string clamp = "tlsph: clamps[" + std::to_string(k) + "]";
+  if (pairs.empty() || !(sum_d.norm() > 0.0))
+    throw InputError(clamp + ": no clamped particle is dp from a free one; set face_point and "
+                             "face_normal, or odd_image = false");
+  normal = sum_d.normalized(), point = sum_m / static_cast<double>(pairs.size());
+  for (const auto& [d, m] : pairs)
+    if ((d - dp * normal).norm() > tol || std::abs((m - point).dot(normal)) > tol)
+      throw InputError(clamp + ": the clamped particles do not meet the free ones on one "
+                               "straight face (odd_image); set face_point and face_normal, or "
+                               "odd_image = false");
+}
+
 void TlsphSolid::build_images() {
-  const std::size_t n = size();
+  const std::size_t n = size(), clamps = options_.clamps.size();
   image_partner_.assign(n, none), image_of_.assign(n, none);
+  imaged_.assign(clamps, 0);
+  std::vector<Vec2> face_point(clamps), face_normal(clamps);
+  for (std::size_t k = 0; k < clamps; ++k) {
+    const Clamp& c = options_.clamps[k];
+    imaged_[k] = c.odd_image && !c.position;
+    if (!imaged_[k]) continue;
+    bool any = false;
+    for (std::size_t i = 0; i < n && !any; ++i) any = clamped_[i] == k + 1;
+    if (any) clamp_face(k, face_point[k], face_normal[k]);
+  }
+  const double tol = 1e-6 * options_.dp;
   for (std::size_t g = 0; g < n; ++g) {
-    if (!clamped_[g] || !options_.clamps[clamped_[g] - 1u].odd_image) continue;
-    const Clamp& c = options_.clamps[clamped_[g] - 1u];
-    const Vec2 nrm = c.face_normal.normalized(), X(X0_[g], Y0_[g]);
-    const Vec2 M = X - 2.0 * (X - c.face_point).dot(nrm) * nrm; // mirror position
+    if (!imaged(g)) continue;
+    const std::size_t k = clamped_[g] - 1u;
+    const Vec2 nrm = face_normal[k], X(X0_[g], Y0_[g]);
+    const Vec2 M = X - 2.0 * (X - face_point[k]).dot(nrm) * nrm; // mirror position
     const std::size_t p = nearest_particle(M);
-    if (clamped_[p] || (Vec2(X0_[p], Y0_[p]) - M).norm() > 1e-6 * options_.dp)
-      throw InputError("tlsph: clamped particle " + std::to_string(g) +
-                       " has no free particle at its mirror position (odd_image)");
-    image_partner_[g] = p, image_of_[p] = g;
-    images_ = true;
+    if (!clamped_[p] && (Vec2(X0_[p], Y0_[p]) - M).norm() <= tol) {
+      image_partner_[g] = p, image_of_[p] = g;
+      images_ = true;
+      continue;
+    }
+    // No partner: the particle stays at X0 and must not be a free particle's neighbour.
+    for (std::uint32_t q = pair_start_[g]; q < pair_start_[g + 1]; ++q)
+      if (!clamped_[pair_b_[q]])
+        throw InputError("tlsph: clamped particle " + std::to_string(g) +
+                         " lies within 2h of "
+                         "free particle " +
+                         std::to_string(pair_b_[q]) +
+                         " but has no free particle at its mirror position (odd_image)");
   }
   image_ax_.assign(n, 0.0), image_ay_.assign(n, 0.0);
 }
@@ -334,8 +385,8 @@ void TlsphSolid::prescribe(double t) {
   parallel_for(size(), [&](std::size_t i) {
     if (!clamped_[i]) return;
     const Clamp& c = options_.clamps[clamped_[i] - 1u];
-    if (c.odd_image) { // u_g = -u_p, v_g = -v_p
-      const std::size_t p = image_partner_[i];
+    const std::size_t p = image_partner_[i];
+    if (p != none) { // u_g = -u_p, v_g = -v_p
       x_[i] = X0_[i] - (x_[p] - X0_[p]), y_[i] = Y0_[i] - (y_[p] - Y0_[p]);
       vx_[i] = -vx_[p], vy_[i] = -vy_[p], ax_[i] = -ax_[p], ay_[i] = -ay_[p];
     } else if (c.position) {
@@ -355,23 +406,20 @@ void TlsphSolid::prescribe(double t) {
 Mat2 TlsphSolid::deformation_gradient(std::size_t a) const {
   // eq. 13: F_a = (sum_b (u_b - u_a) (x) grad0 W_ab V_b) B0_a + I
   const double ux_a = x_[a] - X0_[a], uy_a = y_[a] - Y0_[a];
+  // The quadratic correction: F_a = I + sum_b (u_b - u_a) (x) g~_ab (the gradients corrected).
+  const double* gx = quadratic_ ? pair_qx_.data() : pair_gx_.data();
+  const double* gy = quadratic_ ? pair_qy_.data() : pair_gy_.data();
   double G00 = 0.0, G01 = 0.0, G10 = 0.0, G11 = 0.0;
-  if (quadratic_) { // F_a = I + sum_b (u_b - u_a) (x) g~_ab
-    for (std::uint32_t p = pair_start_[a]; p < pair_start_[a + 1]; ++p) {
-      const std::uint32_t b = pair_b_[p];
-      const double dux = x_[b] - X0_[b] - ux_a, duy = y_[b] - Y0_[b] - uy_a;
-      G00 += dux * pair_qx_[p], G01 += dux * pair_qy_[p];
-      G10 += duy * pair_qx_[p], G11 += duy * pair_qy_[p];
-    }
-    Mat2 F;
-    F << 1.0 + G00, G01, G10, 1.0 + G11;
-    return F;
-  }
   for (std::uint32_t p = pair_start_[a]; p < pair_start_[a + 1]; ++p) {
     const std::uint32_t b = pair_b_[p];
     const double dux = x_[b] - X0_[b] - ux_a, duy = y_[b] - Y0_[b] - uy_a;
-    G00 += dux * pair_gx_[p], G01 += dux * pair_gy_[p];
-    G10 += duy * pair_gx_[p], G11 += duy * pair_gy_[p];
+    G00 += dux * gx[p], G01 += dux * gy[p];
+    G10 += duy * gx[p], G11 += duy * gy[p];
+  }
+  if (quadratic_) {
+    Mat2 F;
+    F << 1.0 + G00, G01, G10, 1.0 + G11;
+    return F;
   }
   Mat2 F;
   F(0, 0) = 1.0 + G00 * B00_[a] + G01 * B10_[a];
@@ -399,7 +447,7 @@ void TlsphSolid::compute_stress() {
           PB00_[a] = PB01_[a] = PB10_[a] = PB11_[a] = 0.0;
           return a;
         }
-        if (image_partner_[a] != none) { // an odd image carries no strain energy
+        if (imaged(a)) { // an odd-image clamp carries no strain energy
           PB00_[a] = PB01_[a] = PB10_[a] = PB11_[a] = 0.0;
           return none;
         }
@@ -548,30 +596,36 @@ int TlsphSolid::advance(double t, double dt) {
 }
 
 // A node moves with its particle's deformation: x = x_p + F_p (X - X_p); v and a are the
-// particle's (the rotation of the dp/2 offset neglected, O(dp |grad v|)).
+// particle's (the rotation of the dp/2 offset neglected, O(dp |grad v|)). A node on an
+// odd-image clamp stays at its reference position (the images are a device of the free
+// particles' stencils; the clamp itself is rigid).
 std::vector<Vec2> TlsphSolid::interface_positions() const {
   std::vector<Vec2> out;
   for (std::size_t k = 0; k < interface_.size(); ++k) {
     const auto i = interface_[k];
+    if (imaged(i)) {
+      out.push_back(Vec2(X0_[i], Y0_[i]) + interface_offset_[k]);
+      continue;
+    }
     out.push_back(Vec2(x_[i], y_[i]) + deformation_gradient(i) * interface_offset_[k]);
   }
   return out;
 }
 std::vector<Vec2> TlsphSolid::interface_velocities() const {
   std::vector<Vec2> out;
-  for (const auto i : interface_) out.emplace_back(vx_[i], vy_[i]);
+  for (const auto i : interface_) out.push_back(imaged(i) ? Vec2::Zero() : Vec2(vx_[i], vy_[i]));
   return out;
 }
 std::vector<Vec2> TlsphSolid::interface_accelerations() const {
   std::vector<Vec2> out;
-  for (const auto i : interface_) out.emplace_back(ax_[i], ay_[i]);
+  for (const auto i : interface_) out.push_back(imaged(i) ? Vec2::Zero() : Vec2(ax_[i], ay_[i]));
   return out;
 }
 
 std::vector<Vec2> TlsphSolid::interface_normals() const {
   std::vector<Vec2> out;
   for (std::size_t k = 0; k < interface_.size(); ++k) {
-    const Mat2 F = deformation_gradient(interface_[k]);
+    const Mat2 F = imaged(interface_[k]) ? Mat2::Identity() : deformation_gradient(interface_[k]);
     out.push_back((F.inverse().transpose() * interface_n0_[k]).normalized()); // Nanson
   }
   return out;
@@ -605,20 +659,23 @@ void TlsphSolid::set_external_forces(const std::vector<Vec2>& forces) {
   compute_acceleration();
 }
 
-void TlsphSolid::set_positions(const std::vector<Vec2>& x) {
-  if (x.size() != size()) throw InputError("tlsph: set_positions needs size() entries");
+void TlsphSolid::set_free(const std::vector<Vec2>& values, std::vector<double>& ex,
+                          std::vector<double>& ey, const char* what) {
+  if (values.size() != size())
+    throw InputError(std::string("tlsph: ") + what + " needs size() entries");
   for (std::size_t i = 0; i < size(); ++i)
-    if (!clamped_[i]) x_[i] = x[i].x(), y_[i] = x[i].y();
+    if (!clamped_[i]) ex[i] = values[i].x(), ey[i] = values[i].y();
   if (images_) prescribe(time_); // the odd images follow their partners
+}
+
+void TlsphSolid::set_positions(const std::vector<Vec2>& x) {
+  set_free(x, x_, y_, "set_positions");
   compute_stress();
   compute_acceleration();
 }
 
 void TlsphSolid::set_velocities(const std::vector<Vec2>& v) {
-  if (v.size() != size()) throw InputError("tlsph: set_velocities needs size() entries");
-  for (std::size_t i = 0; i < size(); ++i)
-    if (!clamped_[i]) vx_[i] = v[i].x(), vy_[i] = v[i].y();
-  if (images_) prescribe(time_);
+  set_free(v, vx_, vy_, "set_velocities");
   compute_acceleration();
 }
 
@@ -633,14 +690,7 @@ std::vector<double> TlsphSolid::von_mises() const {
   const materials::Material& law = *material_;
   parallel_for(size(), [&](std::size_t i) {
     const Mat2 F = deformation_gradient(i);
-    const double J = F.determinant();
-    const Mat2 E = 0.5 * (F.transpose() * F - Mat2::Identity());
-    const Mat2 sigma = F * law.stress(E) * F.transpose() / J;
-    const double s33 = law.stress_33(E) / J; // F33 = 1
-    const double s11 = sigma(0, 0), s22 = sigma(1, 1), s12 = sigma(0, 1);
-    out[i] = std::sqrt(
-        0.5 * ((s11 - s22) * (s11 - s22) + (s22 - s33) * (s22 - s33) + (s33 - s11) * (s33 - s11)) +
-        3.0 * s12 * s12);
+    out[i] = materials::von_mises(law, F, 0.5 * (F.transpose() * F - Mat2::Identity()));
   });
   return out;
 }
@@ -679,8 +729,7 @@ TlsphEnergies TlsphSolid::energies() const {
         const Mat2 F = deformation_gradient(i);
         const Mat2 E = 0.5 * (F.transpose() * F - Mat2::Identity());
         const double m = rho0_ * V0_[i];
-        if (clamped_[i])
-          return Sum{0.0, image_partner_[i] != none ? 0.0 : V0_[i] * law.energy(E), 0.0};
+        if (clamped_[i]) return Sum{0.0, imaged(i) ? 0.0 : V0_[i] * law.energy(E), 0.0};
         return Sum{0.5 * m * (vx_[i] * vx_[i] + vy_[i] * vy_[i]), V0_[i] * law.energy(E),
                    m * (g.x() * (x_[i] - X0_[i]) + g.y() * (y_[i] - Y0_[i]))};
       },

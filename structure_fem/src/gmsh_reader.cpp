@@ -117,6 +117,15 @@ public:
     if (pos_ < data_.size() && data_[pos_] == '\r') ++pos_;
     if (pos_ < data_.size() && data_[pos_] == '\n') ++pos_, ++line_;
   }
+  /// The start of a msh 4.1 section's data: in a binary file, after the section's line.
+  void begin_section() {
+    if (binary_) skip_newline();
+  }
+  /// The `keyword` line that ends a msh 4.1 section (in a binary file, after the data's newline).
+  void end_section(const std::string& keyword) {
+    if (binary_) skip_newline();
+    expect(keyword);
+  }
 
   // Binary values (the file's data size is 8: size_t is 8 bytes, int 4, double 8).
   template <class T> T raw(const std::string& what) {
@@ -276,7 +285,7 @@ void read_physical_names(Lexer& lex, Parsed& p) {
 }
 
 void read_entities_41(Lexer& lex, Parsed& p) {
-  if (lex.binary()) lex.skip_newline(); // the binary data starts after the section's line
+  lex.begin_section();
   long count[4];
   for (auto& c : count) c = lex.size("the number of entities");
   for (long dim = 0; dim < 4; ++dim)
@@ -291,16 +300,22 @@ void read_entities_41(Lexer& lex, Parsed& p) {
         for (long k = 0; k < n_bound; ++k) lex.tag("a bounding entity");
       }
     }
-  if (lex.binary()) lex.skip_newline();
-  lex.expect("$EndEntities");
+  lex.end_section("$EndEntities");
+}
+
+/// The header of a msh 4.1 $Nodes or $Elements section (`what`: node or element): the number of
+/// blocks (returned), the number of items and their smallest and largest tag.
+long read_block_header(Lexer& lex, const std::string& what) {
+  lex.begin_section();
+  const long blocks = lex.size("the number of " + what + " blocks");
+  lex.size("the number of " + what + "s");
+  lex.size("the minimum " + what + " tag");
+  lex.size("the maximum " + what + " tag");
+  return blocks;
 }
 
 void read_nodes_41(Lexer& lex, Parsed& p) {
-  if (lex.binary()) lex.skip_newline(); // the binary data starts after the section's line
-  const long blocks = lex.size("the number of node blocks");
-  lex.size("the number of nodes");
-  lex.size("the minimum node tag");
-  lex.size("the maximum node tag");
+  const long blocks = read_block_header(lex, "node");
   for (long b = 0; b < blocks; ++b) {
     const long dim = lex.tag("a node block dimension");
     lex.tag("a node block entity");
@@ -317,16 +332,11 @@ void read_nodes_41(Lexer& lex, Parsed& p) {
       add_node(lex, p, tags[static_cast<std::size_t>(i)], x, y, z, at);
     }
   }
-  if (lex.binary()) lex.skip_newline();
-  lex.expect("$EndNodes");
+  lex.end_section("$EndNodes");
 }
 
 void read_elements_41(Lexer& lex, Parsed& p) {
-  if (lex.binary()) lex.skip_newline(); // the binary data starts after the section's line
-  const long blocks = lex.size("the number of element blocks");
-  lex.size("the number of elements");
-  lex.size("the minimum element tag");
-  lex.size("the maximum element tag");
+  const long blocks = read_block_header(lex, "element");
   for (long b = 0; b < blocks; ++b) {
     lex.tag("an element block dimension");
     const long entity = lex.tag("an element block entity");
@@ -338,8 +348,7 @@ void read_elements_41(Lexer& lex, Parsed& p) {
                   [&] { return lex.size("an element node"); });
     }
   }
-  if (lex.binary()) lex.skip_newline();
-  lex.expect("$EndElements");
+  lex.end_section("$EndElements");
 }
 
 void read_nodes_22(Lexer& lex, Parsed& p) {

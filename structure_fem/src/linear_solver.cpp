@@ -33,63 +33,66 @@ void check(Eigen::ComputationInfo info, LinearSolverKind kind, const char* phase
                    " failed: " + info_text(info));
 }
 
-/// Any Eigen sparse direct solver with analyzePattern / factorize / solve.
-template <class Solver> class DirectSolver final : public LinearSolver {
+/// An Eigen sparse solver (analyzePattern / factorize / solve) behind LinearSolver: the pattern
+/// analysis and the factorisation, checked; `factorize_phase` names the latter in messages.
+template <class Solver> class EigenSolver : public LinearSolver {
 public:
-  explicit DirectSolver(LinearSolverKind kind) : kind_(kind) {
-    if constexpr (requires(Solver & s) { s.cholmod(); }) solver_.cholmod().print = 0; // no stderr
-  }
   void analyze(const SparseMatrix& K) override {
     solver_.analyzePattern(K);
     check(solver_.info(), kind_, "pattern analysis");
   }
   void factorize(const SparseMatrix& K) override {
     solver_.factorize(K);
-    check(solver_.info(), kind_, "factorisation");
-  }
-  Vector solve(const Vector& b) override {
-    Vector x = solver_.solve(b);
-    check(solver_.info(), kind_, "solve");
-    if (!x.allFinite())
-      throw RunError(std::string("linear solver ") + to_string(kind_) + ": non-finite solution");
-    return x;
+    check(solver_.info(), kind_, factorize_phase_);
   }
 
-private:
+protected:
+  EigenSolver(LinearSolverKind kind, const char* factorize_phase)
+      : kind_(kind), factorize_phase_(factorize_phase) {}
   LinearSolverKind kind_;
+  const char* factorize_phase_;
   Solver solver_;
 };
 
-template <class Preconditioner> class CgSolver final : public LinearSolver {
+/// Any Eigen sparse direct solver.
+template <class Solver> class DirectSolver final : public EigenSolver<Solver> {
 public:
-  CgSolver(LinearSolverKind kind, const LinearSolverOptions& o) : kind_(kind) {
-    solver_.setTolerance(o.cg_tolerance);
-    if (o.cg_max_iterations > 0) solver_.setMaxIterations(o.cg_max_iterations);
-  }
-  void analyze(const SparseMatrix& K) override {
-    solver_.analyzePattern(K);
-    check(solver_.info(), kind_, "pattern analysis");
-  }
-  void factorize(const SparseMatrix& K) override {
-    solver_.factorize(K);
-    check(solver_.info(), kind_, "preconditioner set-up");
+  explicit DirectSolver(LinearSolverKind kind) : EigenSolver<Solver>(kind, "factorisation") {
+    if constexpr (requires(Solver & s) { s.cholmod(); })
+      this->solver_.cholmod().print = 0; // no stderr
   }
   Vector solve(const Vector& b) override {
-    Vector x = solver_.solve(b);
-    if (solver_.info() != Eigen::Success) {
+    Vector x = this->solver_.solve(b);
+    check(this->solver_.info(), this->kind_, "solve");
+    if (!x.allFinite())
+      throw RunError(std::string("linear solver ") + to_string(this->kind_) +
+                     ": non-finite solution");
+    return x;
+  }
+};
+
+template <class Preconditioner>
+using Cg = Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper, Preconditioner>;
+
+template <class Preconditioner> class CgSolver final : public EigenSolver<Cg<Preconditioner>> {
+public:
+  CgSolver(LinearSolverKind kind, const LinearSolverOptions& o)
+      : EigenSolver<Cg<Preconditioner>>(kind, "preconditioner set-up") {
+    this->solver_.setTolerance(o.cg_tolerance);
+    if (o.cg_max_iterations > 0) this->solver_.setMaxIterations(o.cg_max_iterations);
+  }
+  Vector solve(const Vector& b) override {
+    Vector x = this->solver_.solve(b);
+    if (this->solver_.info() != Eigen::Success) {
       std::ostringstream s;
-      s << "linear solver " << to_string(kind_) << ": no convergence after " << solver_.iterations()
-        << " iterations (relative residual " << solver_.error() << ", tolerance "
-        << solver_.tolerance() << ")";
+      s << "linear solver " << to_string(this->kind_) << ": no convergence after "
+        << this->solver_.iterations() << " iterations (relative residual " << this->solver_.error()
+        << ", tolerance " << this->solver_.tolerance() << ")";
       throw RunError(s.str());
     }
     return x;
   }
-  int iterations() const override { return static_cast<int>(solver_.iterations()); }
-
-private:
-  LinearSolverKind kind_;
-  Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper, Preconditioner> solver_;
+  int iterations() const override { return static_cast<int>(this->solver_.iterations()); }
 };
 
 } // namespace

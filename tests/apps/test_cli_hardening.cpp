@@ -1,6 +1,8 @@
 // Issue 17, the command line and the run loop, through the real executable (FSI_EXECUTABLE, or
 // the program named by the environment variable FSI_EXE, to replay these against an older build):
 // each case is a failure the audit found, asserting the exit status and the one-line message.
+#include "fsi_process.hpp"
+
 #include <catch2/catch.hpp>
 #include <chrono>
 #include <csignal>
@@ -19,6 +21,8 @@
 #include <unistd.h>
 
 namespace fs = std::filesystem;
+using fsi_test::slurp;
+using fsi_test::wait_status;
 
 namespace {
 
@@ -32,17 +36,7 @@ std::string executable() {
 }
 
 fs::path fresh(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("fsi_test_cli_" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-std::string slurp(const fs::path& file) {
-  std::ifstream in(file);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
+  return fsi_test::fresh_dir("cli", name);
 }
 
 void write(const fs::path& file, const std::string& text) {
@@ -50,37 +44,7 @@ void write(const fs::path& file, const std::string& text) {
 }
 
 pid_t spawn(const std::vector<std::string>& args, const fs::path& logs) {
-  const std::string exe = executable();
-  const pid_t pid = fork();
-  REQUIRE(pid >= 0);
-  if (pid == 0) {
-    const int out = open((logs / "stdout.txt").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    const int err = open((logs / "stderr.txt").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    dup2(out, STDOUT_FILENO);
-    dup2(err, STDERR_FILENO);
-    std::vector<char*> argv{const_cast<char*>(exe.c_str())};
-    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    execv(exe.c_str(), argv.data());
-    _exit(127);
-  }
-  return pid;
-}
-
-/// Exit status as a shell reports it; a process still running after `timeout_s` is killed and
-/// counts as 124 (a hang).
-int wait_status(pid_t pid, double timeout_s = 120.0) {
-  const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
-  int status = 0;
-  while (waitpid(pid, &status, WNOHANG) == 0) {
-    if (std::chrono::steady_clock::now() > until) {
-      kill(pid, SIGKILL);
-      waitpid(pid, &status, 0);
-      return 124;
-    }
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
-  }
-  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  return fsi_test::spawn(executable(), args, logs);
 }
 
 struct Result {
@@ -259,7 +223,7 @@ TEST_CASE("apps: cli: after SIGINT the continue command carries --set and --thre
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   std::this_thread::sleep_for(std::chrono::milliseconds(300));
   kill(pid, SIGINT);
-  REQUIRE(wait_status(pid) == 130);
+  REQUIRE(wait_status(pid, 120.0) == 130);
   const std::string err = slurp(dir / "stderr.txt");
   INFO(err);
   const std::smatch m = [&] {
@@ -307,7 +271,7 @@ TEST_CASE("apps: cli: a double Ctrl-C leaves run.json saying interrupted", "[app
   for (int i = 0; i < 1000 && signal_pending(pid); ++i)
     std::this_thread::sleep_for(std::chrono::microseconds(200));
   kill(pid, SIGINT);
-  CHECK(wait_status(pid) == 130);
+  CHECK(wait_status(pid, 120.0) == 130);
   const std::string json = slurp(out / "run.json");
   INFO(slurp(dir / "stderr.txt"));
   CHECK(json_field(json, "status") == "interrupted");

@@ -7,6 +7,7 @@
 #include "fsi/core/error.hpp"
 #include "fsi_app/output/checkpoint_file.hpp"
 #include "fsi_app/output/fields_file.hpp"
+#include "fsi_process.hpp"
 
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -24,23 +25,15 @@
 
 namespace fs = std::filesystem;
 using Catch::Contains;
+using fsi_test::slurp;
+using fsi_test::wait_status;
 
 namespace {
 
 const std::string fluid = FSI_TEST_DATA "/tiny_fluid.yaml";
 
 fs::path fresh(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("fsi_test_output_" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-std::string slurp(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
+  return fsi_test::fresh_dir("output", name);
 }
 
 /// Limits every file the calling process writes to `bytes` and makes a write past it fail with
@@ -51,34 +44,26 @@ void limit_file_size(rlim_t bytes) {
   setrlimit(RLIMIT_FSIZE, &limit);
 }
 
-/// The exit status as a shell reports it (128 + signal for a killed process).
-int wait_status(pid_t pid) {
-  int status = 0;
-  waitpid(pid, &status, 0);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-}
-
 /// Runs `fsi ARGS...` to its end, with files limited to `limit` bytes (0: no limit); stderr in
 /// `err`.
 int run_fsi(const std::vector<std::string>& args, const fs::path& logs, rlim_t limit,
             std::string& err) {
-  const pid_t pid = fork();
-  REQUIRE(pid >= 0);
-  if (pid == 0) {
-    const int out = open((logs / "stdout.txt").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    const int e = open((logs / "stderr.txt").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    dup2(out, STDOUT_FILENO);
-    dup2(e, STDERR_FILENO);
+  const int status = wait_status(fsi_test::spawn(FSI_EXECUTABLE, args, logs, [limit] {
     if (limit > 0) limit_file_size(limit);
-    std::vector<char*> argv{const_cast<char*>(FSI_EXECUTABLE)};
-    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    execv(FSI_EXECUTABLE, argv.data());
-    _exit(127);
-  }
-  const int status = wait_status(pid);
+  }));
   err = slurp(logs / "stderr.txt");
   return status;
+}
+
+/// A fresh folder DIR (returned) with the fluid scene run to t = 0.004 s in DIR/run: its
+/// checkpoint at step 50 is DIR/run/checkpoint_000000050.h5.
+fs::path checkpointed_run(const std::string& name) {
+  const fs::path dir = fresh(name);
+  std::string err;
+  REQUIRE(run_fsi({"run", fluid, "--out", (dir / "run").string(), "--set", "time.end=0.004"}, dir,
+                  0, err) == 0);
+  REQUIRE(fs::exists(dir / "run" / "checkpoint_000000050.h5"));
+  return dir;
 }
 
 std::string last_line(const std::string& text) {
@@ -91,39 +76,8 @@ std::string last_line(const std::string& text) {
 /// Every HDF5 dataset fields.xmf names opens, with the dimensions it states, and reads; returns
 /// the number of frames the index lists.
 std::size_t check_index_readable(const fs::path& dir) {
-  const std::string xmf = slurp(dir / "fields.xmf");
-  REQUIRE(xmf.find("</Xdmf>") != std::string::npos); // whole
-  const std::regex item(
-      R"re(<DataItem Dimensions="([0-9 ]+)"[^>]*>fields\.h5:([^<]+)</DataItem>)re");
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  const hid_t file = H5Fopen((dir / "fields.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-  REQUIRE(file >= 0);
-  int items = 0;
-  for (auto it = std::sregex_iterator(xmf.begin(), xmf.end(), item); it != std::sregex_iterator();
-       ++it, ++items) {
-    const std::string path = (*it)[2];
-    INFO(path);
-    const hid_t set = H5Dopen2(file, path.c_str(), H5P_DEFAULT);
-    REQUIRE(set >= 0);
-    const hid_t space = H5Dget_space(set);
-    hsize_t dims[2] = {0, 0};
-    const int rank = H5Sget_simple_extent_dims(space, dims, nullptr);
-    std::string stated;
-    for (int k = 0; k < rank; ++k) {
-      if (k > 0) stated += ' ';
-      stated += std::to_string(dims[k]);
-    }
-    CHECK(stated == (*it)[1].str());
-    std::vector<double> values(dims[0] * (rank > 1 ? dims[1] : 1));
-    CHECK(H5Dread(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) >= 0);
-    H5Sclose(space);
-    H5Dclose(set);
-  }
-  H5Fclose(file);
-  CHECK(items > 0);
-  const std::regex time("<Time ");
-  return static_cast<std::size_t>(
-      std::distance(std::sregex_iterator(xmf.begin(), xmf.end(), time), std::sregex_iterator()));
+  CHECK(fsi_test::check_indexed_datasets(dir) > 0);
+  return fsi_test::frames_in(dir / "fields.xmf");
 }
 
 std::vector<std::string> temporary_files(const fs::path& dir) {
@@ -268,12 +222,9 @@ TEST_CASE("apps: output: a checkpoint with a changed value or a NaN is refused n
 
 TEST_CASE("apps: output: a restart from a damaged checkpoint stops with exit 2 before computing",
           "[apps][output][checkpoint]") {
-  const fs::path dir = fresh("damaged_restart"), out = dir / "run";
-  std::string err;
-  REQUIRE(run_fsi({"run", fluid, "--out", out.string(), "--set", "time.end=0.004"}, dir, 0, err) ==
-          0);
+  const fs::path dir = checkpointed_run("damaged_restart"), out = dir / "run";
   const fs::path checkpoint = out / "checkpoint_000000050.h5";
-  REQUIRE(fs::exists(checkpoint));
+  std::string err;
   poke(checkpoint, "fluid/vx", 7, 123.0);
   const std::string probes = slurp(out / "probes.csv"), xmf = slurp(out / "fields.xmf");
   const int status = run_fsi({"run", fluid, "--out", out.string(), "--set", "time.end=0.004",
@@ -288,10 +239,8 @@ TEST_CASE("apps: output: a restart from a damaged checkpoint stops with exit 2 b
 
 TEST_CASE("apps: output: a checkpoint of a Courant-stepped run says so when refused",
           "[apps][output][checkpoint]") {
-  const fs::path dir = fresh("courant_restart"), out = dir / "run";
+  const fs::path dir = checkpointed_run("courant_restart"), out = dir / "run";
   std::string err;
-  REQUIRE(run_fsi({"run", fluid, "--out", out.string(), "--set", "time.end=0.004"}, dir, 0, err) ==
-          0);
   // The same scene with a fixed step instead of its Courant number.
   std::string text = slurp(fluid);
   const auto at = text.find("courant: 0.2");

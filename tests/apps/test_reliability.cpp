@@ -5,6 +5,7 @@
 // for the same and for different thread counts.
 #include "fsi_app/output/checkpoint_file.hpp"
 #include "fsi_app/output/fields_file.hpp"
+#include "fsi_process.hpp"
 
 #include <catch2/catch.hpp>
 #include <chrono>
@@ -23,6 +24,10 @@
 #include <unistd.h>
 
 namespace fs = std::filesystem;
+using fsi_test::check_indexed_datasets;
+using fsi_test::frames_in;
+using fsi_test::slurp;
+using fsi_test::wait_status;
 
 namespace {
 
@@ -31,42 +36,11 @@ const std::string fluid = FSI_TEST_DATA "/tiny_fluid.yaml";
 const std::string structure = FSI_TEST_DATA "/valid_structure.yaml";
 
 fs::path fresh(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("fsi_test_reliability_" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
+  return fsi_test::fresh_dir("reliability", name);
 }
 
-std::string slurp(const fs::path& file) {
-  std::ifstream in(file);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-/// Starts `fsi ARGS...` with stdout and stderr to files in `dir`.
 pid_t spawn(const std::vector<std::string>& args, const fs::path& dir) {
-  const pid_t pid = fork();
-  REQUIRE(pid >= 0);
-  if (pid == 0) {
-    const int out = open((dir / "stdout.txt").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    const int err = open((dir / "stderr.txt").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    dup2(out, STDOUT_FILENO);
-    dup2(err, STDERR_FILENO);
-    std::vector<char*> argv{const_cast<char*>(FSI_EXECUTABLE)};
-    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    execv(FSI_EXECUTABLE, argv.data());
-    _exit(127);
-  }
-  return pid;
-}
-
-/// The exit status as a shell reports it (128 + signal for a killed process).
-int wait_status(pid_t pid) {
-  int status = 0;
-  waitpid(pid, &status, 0);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  return fsi_test::spawn(FSI_EXECUTABLE, args, dir);
 }
 
 /// Runs `fsi run SCENE --out DIR ARGS...` to the end; its stderr goes to DIR/../NAME.err.
@@ -150,12 +124,17 @@ std::string json_text(const fs::path& run_json, const std::string& key) {
   return std::regex_search(text, m, pattern) ? m[1].str() : "";
 }
 
-/// Frames listed in an XDMF index.
-std::size_t frames_in(const fs::path& xmf) {
-  const std::string text = slurp(xmf);
-  const std::regex time("<Time ");
-  return static_cast<std::size_t>(
-      std::distance(std::sregex_iterator(text.begin(), text.end(), time), std::sregex_iterator()));
+/// SCENE run to its end in DIR/whole, and a copy of that folder continued in DIR/continued from
+/// its `checkpoint`: the same output, bitwise.
+void require_continues_bitwise(const std::string& scene, const fs::path& dir,
+                               const std::vector<std::string>& args,
+                               const std::string& checkpoint) {
+  REQUIRE(fsi_run(scene, dir / "whole", args) == 0);
+  fs::copy(dir / "whole", dir / "continued");
+  auto restart = args;
+  restart.insert(restart.end(), {"--restart", (dir / "continued" / checkpoint).string()});
+  REQUIRE(fsi_run(scene, dir / "continued", restart) == 0);
+  require_same_output(dir / "whole", dir / "continued");
 }
 
 /// Waits until `file` has at least `count` lines (the run is under way).
@@ -163,6 +142,18 @@ void wait_for_lines(const fs::path& file, std::size_t count) {
   for (int k = 0; k < 3000 && !(fs::exists(file) && lines(file) >= count); ++k)
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   REQUIRE(lines(file) >= count);
+}
+
+/// `fsi run` of the coupled scene with ARGS into DIR/NAME (stdout and stderr in DIR), sent
+/// `signal` once its probes.csv has `rows` lines; its exit status.
+int signalled_run(const fs::path& dir, const std::string& name,
+                  const std::vector<std::string>& args, std::size_t rows, int signal) {
+  std::vector<std::string> all = {"run", coupled, "--out", (dir / name).string()};
+  all.insert(all.end(), args.begin(), args.end());
+  const pid_t pid = spawn(all, dir);
+  wait_for_lines(dir / name / "probes.csv", rows);
+  kill(pid, signal);
+  return wait_status(pid);
 }
 
 } // namespace
@@ -204,13 +195,7 @@ TEST_CASE("apps: a coupled run continued from a checkpoint is bitwise the uninte
         "--set",     "time.end=0.006",
         "--set",     "coupling.acceleration=" + acceleration,
         "--set",     "checkpoint={interval_steps: 100, keep: 5}"};
-    REQUIRE(fsi_run(coupled, dir / "whole", args) == 0);
-    fs::copy(dir / "whole", dir / "continued");
-    auto restart = args;
-    restart.insert(restart.end(),
-                   {"--restart", (dir / "continued" / "checkpoint_000000100.h5").string()});
-    REQUIRE(fsi_run(coupled, dir / "continued", restart) == 0);
-    require_same_output(dir / "whole", dir / "continued");
+    require_continues_bitwise(coupled, dir, args, "checkpoint_000000100.h5");
     CHECK(columns(dir / "whole" / "coupling.csv", 8) ==
           columns(dir / "continued" / "coupling.csv", 8));
     CHECK(lines(dir / "continued" / "coupling.csv") == 301);
@@ -222,13 +207,7 @@ TEST_CASE("apps: a fluid run with an adaptive step and a moving wall continues b
   const fs::path dir = fresh("restart_fluid");
   const std::vector<std::string> args = {"--threads", "1", "--set",
                                          "checkpoint={interval_steps: 150, keep: 5}"};
-  REQUIRE(fsi_run(fluid, dir / "whole", args) == 0);
-  fs::copy(dir / "whole", dir / "continued");
-  auto restart = args;
-  restart.insert(restart.end(),
-                 {"--restart", (dir / "continued" / "checkpoint_000000150.h5").string()});
-  REQUIRE(fsi_run(fluid, dir / "continued", restart) == 0);
-  require_same_output(dir / "whole", dir / "continued");
+  require_continues_bitwise(fluid, dir, args, "checkpoint_000000150.h5");
 }
 
 TEST_CASE("apps: a structure run continues bitwise", "[apps][reliability]") {
@@ -236,13 +215,7 @@ TEST_CASE("apps: a structure run continues bitwise", "[apps][reliability]") {
   const std::vector<std::string> args = {"--threads", "1",
                                          "--set",     "time.end=0.05",
                                          "--set",     "checkpoint={interval_steps: 20, keep: 5}"};
-  REQUIRE(fsi_run(structure, dir / "whole", args) == 0);
-  fs::copy(dir / "whole", dir / "continued");
-  auto restart = args;
-  restart.insert(restart.end(),
-                 {"--restart", (dir / "continued" / "checkpoint_000000020.h5").string()});
-  REQUIRE(fsi_run(structure, dir / "continued", restart) == 0);
-  require_same_output(dir / "whole", dir / "continued");
+  require_continues_bitwise(structure, dir, args, "checkpoint_000000020.h5");
 }
 
 TEST_CASE("apps: a restart refuses a checkpoint that does not fit, before computing",
@@ -272,12 +245,8 @@ TEST_CASE("apps: SIGINT stops a run with a checkpoint that continues it bitwise"
           "[apps][reliability]") {
   const fs::path dir = fresh("sigint");
   const std::vector<std::string> args = {"--threads", "1", "--set", "output.interval=0.0002"};
-  const pid_t pid = spawn(
-      {"run", coupled, "--out", (dir / "stopped").string(), args[0], args[1], args[2], args[3]},
-      dir);
-  wait_for_lines(dir / "stopped" / "probes.csv", 4); // header, t = 0 and two frames
-  kill(pid, SIGINT);
-  REQUIRE(wait_status(pid) == 130);
+  // Once probes.csv has its header, t = 0 and two frames.
+  REQUIRE(signalled_run(dir, "stopped", args, 4, SIGINT) == 130);
   const std::string err = slurp(dir / "stderr.txt");
   CHECK(err.find("interrupted by signal 2 at step ") != std::string::npos);
   const fs::path checkpoint = json_text(dir / "stopped" / "run.json", "checkpoint");
@@ -295,12 +264,8 @@ TEST_CASE("apps: SIGINT stops a run with a checkpoint that continues it bitwise"
 TEST_CASE("apps: SIGTERM stops a run with a checkpoint and exit status 143",
           "[apps][reliability]") {
   const fs::path dir = fresh("sigterm");
-  const pid_t pid = spawn({"run", coupled, "--out", (dir / "stopped").string(), "--threads", "1",
-                           "--set", "output.interval=0.0002"},
-                          dir);
-  wait_for_lines(dir / "stopped" / "probes.csv", 3);
-  kill(pid, SIGTERM);
-  REQUIRE(wait_status(pid) == 143);
+  REQUIRE(signalled_run(dir, "stopped", {"--threads", "1", "--set", "output.interval=0.0002"}, 3,
+                        SIGTERM) == 143);
   CHECK(slurp(dir / "stderr.txt").find("interrupted by signal 15 at step ") != std::string::npos);
   CHECK(fs::exists(json_text(dir / "stopped" / "run.json", "checkpoint")));
 }
@@ -332,42 +297,11 @@ TEST_CASE("apps: checkpoints by wall time keep the newest ones, whole", "[apps][
 TEST_CASE("apps: after SIGKILL every frame fields.xmf names is readable in fields.h5",
           "[apps][reliability]") {
   const fs::path dir = fresh("sigkill");
-  const pid_t pid = spawn({"run", coupled, "--out", (dir / "killed").string(), "--threads", "1",
-                           "--set", "output.interval=0.0001"},
-                          dir);
-  wait_for_lines(dir / "killed" / "probes.csv", 6);
-  kill(pid, SIGKILL);
-  REQUIRE(wait_status(pid) == 128 + SIGKILL);
+  REQUIRE(signalled_run(dir, "killed", {"--threads", "1", "--set", "output.interval=0.0001"}, 6,
+                        SIGKILL) == 128 + SIGKILL);
 
   // Every HDF dataset the XDMF index names opens with the dimensions it states.
-  const std::string xmf = slurp(dir / "killed" / "fields.xmf");
-  const std::regex item(
-      R"re(<DataItem Dimensions="([0-9 ]+)"[^>]*>fields\.h5:([^<]+)</DataItem>)re");
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  const hid_t file = H5Fopen((dir / "killed" / "fields.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-  REQUIRE(file >= 0);
-  int items = 0;
-  for (auto it = std::sregex_iterator(xmf.begin(), xmf.end(), item); it != std::sregex_iterator();
-       ++it, ++items) {
-    const std::string path = (*it)[2];
-    INFO(path);
-    const hid_t set = H5Dopen2(file, path.c_str(), H5P_DEFAULT);
-    REQUIRE(set >= 0);
-    const hid_t space = H5Dget_space(set);
-    hsize_t dims[2] = {0, 0};
-    const int rank = H5Sget_simple_extent_dims(space, dims, nullptr);
-    std::string stated;
-    for (int k = 0; k < rank; ++k) {
-      if (k > 0) stated += ' ';
-      stated += std::to_string(dims[k]);
-    }
-    CHECK(stated == (*it)[1].str());
-    std::vector<double> values(dims[0] * (rank > 1 ? dims[1] : 1));
-    CHECK(H5Dread(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) >= 0);
-    H5Sclose(space);
-    H5Dclose(set);
-  }
-  H5Fclose(file);
+  const int items = check_indexed_datasets(dir / "killed");
   const std::size_t frames = frames_in(dir / "killed" / "fields.xmf");
   CHECK(frames >= 5);
   CHECK(items >= static_cast<int>(frames) * 2);

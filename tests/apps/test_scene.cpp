@@ -52,7 +52,8 @@ TEST_CASE("apps: a valid scene reads back its values", "[apps][scene]") {
   REQUIRE(s.output.probes.size() == 1);
   CHECK(s.output.probes[0].point->y() == 0.1);
   CHECK(s.output.fields == std::vector<std::string>{"velocity", "pressure", "pnd", "free_surface",
-                                                    "displacement", "von_mises", "det_F"});
+                                                    "density", "wkgc_indicator", "displacement",
+                                                    "von_mises", "det_F"});
   // default: every plug-in's fields
   CHECK_FALSE(s.fluid);
 }

@@ -17,83 +17,86 @@ namespace {
 
 using Calls = std::vector<std::string>;
 
-// F: load = 0.5 x_in + 1 (x-component); state = number of advances since initialize.
-class CountingFluid : public FluidSolver {
+// What both counting stand-ins share: every call recorded as "WHO.call", the number of advances
+// since initialize (state_at_advance: its value at each advance), and save/restore of that count
+// with the solver's own value (F: its loads, S: its position).
+template <class Solver, class Value> class Counting : public Solver {
 public:
-  explicit CountingFluid(Calls& calls) : calls_(calls) {}
+  Counting(Calls& calls, std::string who) : calls_(calls), who_(std::move(who)) {}
+  void save_state() override {
+    record("save");
+    saved_count_ = count_;
+    saved_ = value_;
+  }
+  void restore_state() override {
+    record("restore");
+    count_ = saved_count_;
+    value_ = saved_;
+  }
+  void finalize() override { record("finalize"); }
+  std::vector<int> state_at_advance;
+
+protected:
+  void record(const std::string& call) { calls_.push_back(who_ + "." + call); }
+  /// Records the advance and counts it.
+  void count_advance() {
+    record("advance");
+    state_at_advance.push_back(count_);
+    ++count_;
+  }
+  Value value_{};
+
+private:
+  Calls& calls_;
+  std::string who_;
+  int count_ = 0, saved_count_ = -1;
+  Value saved_{};
+};
+
+// F: load = 0.5 x_in + 1 (x-component); state = number of advances since initialize.
+class CountingFluid : public Counting<FluidSolver, InterfaceLoads> {
+public:
+  explicit CountingFluid(Calls& calls) : Counting(calls, "F") {}
   void initialize() override {
-    calls_.push_back("F.init");
-    loads_ = InterfaceLoads::zeros(1);
+    record("init");
+    value_ = InterfaceLoads::zeros(1);
   }
   void set_interface_motion(const InterfaceMotion& m) override {
-    calls_.push_back("F.set");
+    record("set");
     x_in_ = m.x[0].x();
   }
   void advance(double, double) override {
-    calls_.push_back("F.advance");
-    state_at_advance.push_back(state_);
-    ++state_;
-    loads_.f[0] = Vec2(0.5 * x_in_ + 1.0, 0.0);
+    count_advance();
+    value_.f[0] = Vec2(0.5 * x_in_ + 1.0, 0.0);
   }
-  const InterfaceLoads& interface_loads() const override { return loads_; }
-  void save_state() override {
-    calls_.push_back("F.save");
-    saved_ = state_;
-    saved_loads_ = loads_;
-  }
-  void restore_state() override {
-    calls_.push_back("F.restore");
-    state_ = saved_;
-    loads_ = saved_loads_;
-  }
-  void finalize() override { calls_.push_back("F.finalize"); }
-  std::vector<int> state_at_advance;
+  const InterfaceLoads& interface_loads() const override { return value_; }
 
 private:
-  Calls& calls_;
   double x_in_ = 0.0;
-  int state_ = 0, saved_ = -1;
-  InterfaceLoads loads_, saved_loads_;
 };
 
 // S: x^{n+1} = x^n + load (x-component); count = number of advances since initialize.
-class CountingStructure : public StructureSolver {
+class CountingStructure : public Counting<StructureSolver, double> {
 public:
-  explicit CountingStructure(Calls& calls) : calls_(calls) {}
-  void initialize() override { calls_.push_back("S.init"); }
+  explicit CountingStructure(Calls& calls) : Counting(calls, "S") {}
+  void initialize() override { record("init"); }
   void set_interface_loads(const InterfaceLoads& l) override {
-    calls_.push_back("S.set");
+    record("set");
     load_ = l.f[0].x();
   }
   void advance(double, double) override {
-    calls_.push_back("S.advance");
-    state_at_advance.push_back(count_);
-    ++count_;
-    x_ += load_;
+    count_advance();
+    value_ += load_;
   }
   InterfaceMotion interface_motion() const override {
     InterfaceMotion m = InterfaceMotion::zeros(1);
-    m.x[0] = Vec2(x_, 0.0);
+    m.x[0] = Vec2(value_, 0.0);
     return m;
   }
-  void save_state() override {
-    calls_.push_back("S.save");
-    saved_count_ = count_;
-    saved_x_ = x_;
-  }
-  void restore_state() override {
-    calls_.push_back("S.restore");
-    count_ = saved_count_;
-    x_ = saved_x_;
-  }
-  void finalize() override { calls_.push_back("S.finalize"); }
-  std::vector<int> state_at_advance;
-  double x() const { return x_; }
+  double x() const { return value_; }
 
 private:
-  Calls& calls_;
-  double load_ = 0.0, x_ = 0.0, saved_x_ = -1.0;
-  int count_ = 0, saved_count_ = -1;
+  double load_ = 0.0;
 };
 
 const Calls evaluation{"F.set", "F.advance", "S.set", "S.advance"};
@@ -155,6 +158,15 @@ private:
   double t_ = 0.0, saved_ = 0.0;
 };
 
+// BGS without acceleration, to `tolerance`.
+CouplingOptions plain_bgs(double tolerance) {
+  CouplingOptions o;
+  o.scheme = "bgs";
+  o.acceleration = "none";
+  o.tolerance = tolerance;
+  return o;
+}
+
 void require_equal(const InterfaceMotion& a, const InterfaceMotion& b, double tol) {
   REQUIRE(a.size() == b.size());
   for (std::size_t i = 0; i < a.size(); ++i) {
@@ -171,10 +183,7 @@ TEST_CASE("BGS saves once per step and restores F and S before every re-evaluati
   Calls calls;
   CountingFluid fluid(calls);
   CountingStructure structure(calls);
-  CouplingOptions o;
-  o.scheme = "bgs";
-  o.acceleration = "none";
-  o.tolerance = 1e-12;
+  CouplingOptions o = plain_bgs(1e-12);
   o.max_iterations = 3;
   auto scheme = make_scheme(o, fluid, structure);
   std::vector<StepStats> log;
@@ -222,10 +231,7 @@ TEST_CASE("unconverged BGS step throws RunError when asked to", "[coupling][sche
   Calls calls;
   CountingFluid fluid(calls);
   CountingStructure structure(calls);
-  CouplingOptions o;
-  o.scheme = "bgs";
-  o.acceleration = "none"; // plain BGS on this map does not reach 1e-12 in 3 evaluations
-  o.tolerance = 1e-12;
+  CouplingOptions o = plain_bgs(1e-12); // on this map it does not reach 1e-12 in 3 evaluations
   o.max_iterations = 3;
   o.stop_on_unconverged = true;
   auto scheme = make_scheme(o, fluid, structure);
@@ -250,10 +256,8 @@ TEST_CASE("BGS with a converging map stops by eq. 69 and counts nothing as uncon
   Calls calls;
   CountingFluid fluid(calls);
   CountingStructure structure(calls);
-  CouplingOptions o;
-  o.scheme = "bgs";
-  o.acceleration = "none";
-  o.tolerance = 1e-3; // factor 0.5 per iteration: 2^-10 < 1e-3 at the 11th evaluation
+  // Factor 0.5 per iteration: 2^-10 < 1e-3 at the 11th evaluation.
+  const CouplingOptions o = plain_bgs(1e-3);
   auto scheme = make_scheme(o, fluid, structure);
   scheme->initialize();
   scheme->advance(0.0, 0.1);

@@ -29,6 +29,11 @@ emps::FluidOptions water(double l0) {
   return o;
 }
 
+/// The walls of an open tank [0, width] x [0, height]: left, bottom and right, fluid inside.
+std::vector<Vec2> open_tank(double width, double height) {
+  return {{0.0, height}, {0.0, 0.0}, {width, 0.0}, {width, height}};
+}
+
 Vec2 momentum(const emps::Particles& p) {
   Vec2 m = Vec2::Zero();
   for (std::size_t i = 0; i < p.size(); ++i) m += Vec2(p.vx[i], p.vy[i]);
@@ -55,8 +60,7 @@ TEST_CASE("emps: a lattice at rest in a tank, corners included, stays at rest wi
   // and in the 90-degree corners the quadrant both faces count is counted once.
   const double l0 = 0.01;
   erp::WallSet walls;
-  const std::vector<Vec2> tank{{0.0, 0.5}, {0.0, 0.0}, {0.4, 0.0}, {0.4, 0.5}};
-  walls.add_polyline(tank, false, 0);
+  walls.add_polyline(open_tank(0.4, 0.5), false, 0);
   const auto positions =
       erp::fill_lattice({0, 0}, l0, {{{0, 0}, {0.4, 0}, {0.4, 0.3}, {0, 0.3}}}, {}, &walls);
   for (const auto density : {emps::WallDensity::added, emps::WallDensity::scaled}) {
@@ -86,7 +90,7 @@ TEST_CASE("emps: a lattice at rest around a block's convex corners has pnd = n0"
   // n0 to round-off; eq. 20 alone over-counts by 17 % of n0 on the corner's diagonal.
   const double l0 = 0.01;
   erp::WallSet walls;
-  walls.add_polyline(std::vector<Vec2>{{0.0, 0.5}, {0.0, 0.0}, {0.5, 0.0}, {0.5, 0.5}}, false, 0);
+  walls.add_polyline(open_tank(0.5, 0.5), false, 0);
   walls.add_polyline(std::vector<Vec2>{{0.2, 0.0}, {0.2, 0.1}, {0.3, 0.1}, {0.3, 0.0}}, false, 1);
   const auto positions =
       erp::fill_lattice({0, 0}, l0, {{{0, 0}, {0.5, 0}, {0.5, 0.3}, {0, 0.3}}},
@@ -123,7 +127,7 @@ TEST_CASE("emps: water at rest around a block settles; the paper's convex corner
   // away from the corner, a jet that never settles; counting the block's lattice settles it.
   const double l0 = 0.025, g = 9.81, H = 0.5;
   erp::WallSet walls;
-  walls.add_polyline(std::vector<Vec2>{{0.0, 0.8}, {0.0, 0.0}, {1.0, 0.0}, {1.0, 0.8}}, false, 0);
+  walls.add_polyline(open_tank(1.0, 0.8), false, 0);
   walls.add_polyline(std::vector<Vec2>{{0.4, 0.0}, {0.4, 0.25}, {0.6, 0.25}, {0.6, 0.0}}, false, 1);
   std::vector<Vec2> positions;
   for (const auto& [lo, hi] : std::vector<std::pair<Vec2, Vec2>>{
@@ -195,8 +199,7 @@ TEST_CASE("emps: what the fluid's momentum loses to the walls, the walls receive
   const auto contact =
       GENERATE(emps::WallContact::paper, emps::WallContact::damped, emps::WallContact::viscous);
   erp::WallSet walls;
-  const std::vector<Vec2> tank{{0.0, 0.4}, {0.0, 0.0}, {0.4, 0.0}, {0.4, 0.4}};
-  walls.add_polyline(tank, false, 0);
+  walls.add_polyline(open_tank(0.4, 0.4), false, 0);
   auto positions =
       erp::fill_lattice({0.2, 0.0}, l0, {{{0.2, 0.0}, {0.35, 0.0}, {0.35, 0.15}, {0.2, 0.15}}});
   auto options = water(l0);
@@ -272,8 +275,7 @@ TEST_CASE("emps: a dam break on two threads is bitwise the sequential one (balan
   // arithmetic, whichever thread takes it.
   const double l0 = 0.01;
   erp::WallSet walls;
-  const std::vector<Vec2> tank{{0.0, 0.6}, {0.0, 0.0}, {0.8, 0.0}, {0.8, 0.6}};
-  walls.add_polyline(tank, false, 0);
+  walls.add_polyline(open_tank(0.8, 0.6), false, 0);
   auto options = water(l0);
   options.viscosity = 1e-6;
   options.artificial_viscosity = 0.1;
@@ -304,8 +306,7 @@ TEST_CASE("emps: an unstable run stops with what, where and when", "[emps]") {
   // the floor or goes non-finite; the run must stop with a message, not write NaN.
   const double l0 = 0.01;
   erp::WallSet walls;
-  const std::vector<Vec2> tank{{0.0, 0.5}, {0.0, 0.0}, {0.3, 0.0}, {0.3, 0.5}};
-  walls.add_polyline(tank, false, 0);
+  walls.add_polyline(open_tank(0.3, 0.5), false, 0);
   auto options = water(l0);
   options.gravity = {0.0, -9.81};
   emps::EmpsFluid fluid(

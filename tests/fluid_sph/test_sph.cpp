@@ -29,6 +29,17 @@ sph::SphOptions base(double dp) {
   return o;
 }
 
+/// The unit square, periodic both ways, internal flow with the transport velocity (eq. 24).
+sph::SphOptions periodic_internal(double dp) {
+  auto o = base(dp);
+  o.domain_min = {0, 0};
+  o.domain_max = {1, 1};
+  o.periodic_x = o.periodic_y = true;
+  o.free_surface = false;
+  o.transport_velocity = true;
+  return o;
+}
+
 std::size_t index_of(const sph::SphFluid& f, std::uint32_t id) {
   const auto& ids = f.particles().id;
   for (std::size_t i = 0; i < ids.size(); ++i)
@@ -240,12 +251,7 @@ TEST_CASE("sph: a wall corner is filled, 4 layers each way", "[sph][wall]") {
 TEST_CASE("sph: transport velocity moves a displaced particle back to its lattice site",
           "[sph][sign]") {
   const double dp = 0.05;
-  auto o = base(dp);
-  o.domain_min = {0, 0};
-  o.domain_max = {1, 1};
-  o.periodic_x = o.periodic_y = true;
-  o.free_surface = false;
-  o.transport_velocity = true;
+  const auto o = periodic_internal(dp);
   auto x = sph::fill_rectangle({0, 0}, {1, 1}, dp);
   const std::uint32_t k = 210;
   const double site = x[k].x();
@@ -259,12 +265,7 @@ TEST_CASE("sph: momentum is conserved to round-off without gravity and walls (eq
           "[sph][momentum]") {
   for (auto corr : {sph::Correction::rkgc, sph::Correction::none}) {
     const double dp = 0.05;
-    auto o = base(dp);
-    o.domain_min = {0, 0};
-    o.domain_max = {1, 1};
-    o.periodic_x = o.periodic_y = true;
-    o.free_surface = false;
-    o.transport_velocity = true;
+    auto o = periodic_internal(dp);
     o.viscosity = 1e-3;
     o.correction = corr;
     o.wkgc_alpha = 0.2;

@@ -21,9 +21,16 @@ struct Beam {
   int layers = 8;            ///< particles through the thickness
   int clamp_layers = 4;      ///< clamped columns at x < 0
   double clamp_length = 0.0; ///< > 0: the clamped length instead of clamp_layers dp
-  GradientCorrection correction = GradientCorrection::linear;
-  bool odd_image = false; ///< the clamp imposes u = 0 on its face x = 0 (Clamp::odd_image)
+  GradientCorrection correction = TlsphOptions{}.gradient_correction; ///< the library default
+  bool odd_image = Clamp{}.odd_image; ///< the library default: u = 0 on the clamp face x = 0
   double dp() const { return H / layers; }
+  /// The paper's form: eqs. 13-14 (GradientCorrection::linear) and the clamped particles held.
+  Beam paper() const {
+    Beam b = *this;
+    b.correction = GradientCorrection::linear, b.odd_image = false;
+    return b;
+  }
+  fsi::materials::MaterialOptions material() const { return {E, nu, rho, plane}; }
   double E_bending() const {
     return plane == fsi::materials::PlaneModel::plane_strain ? E / (1.0 - nu * nu) : E;
   }
@@ -37,10 +44,7 @@ struct Beam {
 
 inline TlsphOptions beam_options(const Beam& b) {
   TlsphOptions o;
-  o.material.youngs_modulus = b.E;
-  o.material.poisson_ratio = b.nu;
-  o.material.density = b.rho;
-  o.material.plane = b.plane;
+  o.material = b.material();
   o.dp = b.dp();
   o.gradient_correction = b.correction;
   Clamp clamp;
@@ -75,6 +79,19 @@ inline Vec2 tip_displacement(const TlsphSolid& s, const Beam& b) {
   return u / n;
 }
 
+/// Displacement of the mid-height point of the free end, (L, y0 + H/2), the point structure_fem's
+/// elastica test measures: x_p + F_p (X - X_p) from each of the one or two tip particles
+/// nearest mid-height (the interface nodes' formula), averaged.
+inline Vec2 end_face_displacement(const TlsphSolid& s, const Beam& b) {
+  Vec2 u = Vec2::Zero();
+  int n = 0;
+  const Vec2 X(b.L, b.y0 + 0.5 * b.H);
+  for (const auto i : tip_column(s, b))
+    if (std::abs(s.reference_position(i).y() - X.y()) < 0.51 * b.dp() + 1e-12)
+      u += s.position(i) + s.deformation_gradient(i) * (X - s.reference_position(i)) - X, ++n;
+  return u / n;
+}
+
 /// Timoshenko cantilever under an end load P: deflection at x,
 /// w(x) = P x^2 (3L - x) / (6 E' I) + P x / (kappa G A), kappa = 5/6.
 inline double timoshenko_deflection(const Beam& b, double P, double x) {
@@ -83,50 +100,45 @@ inline double timoshenko_deflection(const Beam& b, double P, double x) {
          P * x / (5.0 / 6.0 * G * b.H);
 }
 
-/// Elastica of a cantilever (length 1) under a dead end load with k = P L^2 / EI:
-/// theta'' = -k cos(theta), theta(0) = 0, theta'(1) = 0 (shooting, RK4, bisection). Returns the
-/// position (x, y) of arc length s (y downwards positive as deflection).
-inline Vec2 elastica_point(double k, double s) {
-  const int n = 20000;
-  auto integrate = [&](double c, double s_end, Vec2* at) {
-    double th = 0.0, w = c, x = 0.0, y = 0.0;
-    const double ds = 1.0 / n;
-    auto f = [&](double t, double ww) {
-      return std::array<double, 4>{ww, -k * std::cos(t), std::cos(t), std::sin(t)};
-    };
-    for (int i = 0; i < n; ++i) {
-      if (at && (i + 1) * ds > s_end + 1e-15) {
-        // final partial step to s_end
-        const double hs = s_end - i * ds;
-        const auto k1 = f(th, w);
-        const auto k2 = f(th + 0.5 * hs * k1[0], w + 0.5 * hs * k1[1]);
-        const auto k3 = f(th + 0.5 * hs * k2[0], w + 0.5 * hs * k2[1]);
-        const auto k4 = f(th + hs * k3[0], w + hs * k3[1]);
-        x += hs / 6.0 * (k1[2] + 2 * k2[2] + 2 * k3[2] + k4[2]);
-        y += hs / 6.0 * (k1[3] + 2 * k2[3] + 2 * k3[3] + k4[3]);
-        *at = {x, y};
-        return w;
-      }
-      const auto k1 = f(th, w);
-      const auto k2 = f(th + 0.5 * ds * k1[0], w + 0.5 * ds * k1[1]);
-      const auto k3 = f(th + 0.5 * ds * k2[0], w + 0.5 * ds * k2[1]);
-      const auto k4 = f(th + ds * k3[0], w + ds * k3[1]);
-      th += ds / 6.0 * (k1[0] + 2 * k2[0] + 2 * k3[0] + k4[0]);
-      w += ds / 6.0 * (k1[1] + 2 * k2[1] + 2 * k3[1] + k4[1]);
-      x += ds / 6.0 * (k1[2] + 2 * k2[2] + 2 * k3[2] + k4[2]);
-      y += ds / 6.0 * (k1[3] + 2 * k2[3] + 2 * k3[3] + k4[3]);
-    }
-    if (at) *at = {x, y};
-    return w;
+/// Elastica of a cantilever (length 1) under a dead end load with k = P L^2 / EI, at arc length
+/// s; y downwards positive as deflection. theta' = m, m' = -k x', theta(0) = 0, m(1) = 0
+/// (shooting on m(0), RK4, bisection). Euler's elastica (inextensible, shear-rigid) by default;
+/// `axial` = EI / (EA L^2) and `shear` = EI / (kappa G A L^2) make it Reissner's (stretch
+/// eps = k sin(theta) axial, shear strain gamma = k cos(theta) shear):
+/// x' = (1 + eps) cos(theta) - gamma sin(theta), y' = (1 + eps) sin(theta) + gamma cos(theta).
+inline Vec2 elastica_point(double k, double s, double axial = 0.0, double shear = 0.0) {
+  using State = std::array<double, 4>; // theta, m, x, y
+  auto f = [&](const State& z) {
+    const double c = std::cos(z[0]), sn = std::sin(z[0]);
+    const double eps = k * sn * axial, gamma = k * c * shear;
+    const double dx = (1.0 + eps) * c - gamma * sn, dy = (1.0 + eps) * sn + gamma * c;
+    return State{z[1], -k * dx, dx, dy};
   };
-  double lo = 0.0, hi = k;
+  auto step = [&](const State& z, double hs) {
+    auto add = [](const State& a, const State& b, double w) {
+      return State{a[0] + w * b[0], a[1] + w * b[1], a[2] + w * b[2], a[3] + w * b[3]};
+    };
+    const State k1 = f(z), k2 = f(add(z, k1, 0.5 * hs)), k3 = f(add(z, k2, 0.5 * hs)),
+                k4 = f(add(z, k3, hs));
+    State out = z;
+    for (int c = 0; c < 4; ++c) out[c] += hs / 6.0 * (k1[c] + 2 * k2[c] + 2 * k3[c] + k4[c]);
+    return out;
+  };
+  const int n = 20000;
+  auto integrate = [&](double m0, double s_end) {
+    State z{0.0, m0, 0.0, 0.0};
+    const int full = static_cast<int>(std::floor(s_end * n + 1e-9));
+    for (int i = 0; i < full; ++i) z = step(z, 1.0 / n);
+    if (s_end - full / static_cast<double>(n) > 1e-15) z = step(z, s_end - full / double(n));
+    return z;
+  };
+  double lo = 0.0, hi = 2.0 * k; // m(1) < 0 at m0 = 0, > 0 at m0 = 2k
   for (int it = 0; it < 100; ++it) {
     const double mid = 0.5 * (lo + hi);
-    (integrate(mid, 2.0, nullptr) < 0.0 ? lo : hi) = mid;
+    (integrate(mid, 1.0)[1] < 0.0 ? lo : hi) = mid;
   }
-  Vec2 p;
-  integrate(0.5 * (lo + hi), s, &p);
-  return p;
+  const State z = integrate(0.5 * (lo + hi), s);
+  return {z[2], z[3]};
 }
 
 /// First clamped-free mode shape f(x) (Gray, Monaghan & Swift 2001), kL = 1.875.

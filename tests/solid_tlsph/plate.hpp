@@ -8,11 +8,8 @@
 
 namespace tlsph_test {
 
-inline Beam plate(int layers, GradientCorrection c = GradientCorrection::linear,
-                  bool odd_image = false) {
+inline Beam plate(int layers) {
   Beam b;
-  b.correction = c;
-  b.odd_image = odd_image;
   b.L = 0.2, b.H = 0.02, b.y0 = -0.01;
   b.E = 2.0e6, b.nu = 0.3975, b.rho = 1000.0;
   b.layers = layers;

@@ -13,10 +13,11 @@ using Catch::Matchers::Contains;
 
 namespace {
 
-/// 30 x 12 particles on [0, 0.3] x [0, 0.12], no clamp.
+/// 30 x 12 particles on [0, 0.3] x [0, 0.12], no clamp; the paper's B0 (eq. 14) or B0 = I.
 TlsphSolid free_block(bool correction) {
   TlsphOptions o;
   o.dp = 0.01;
+  o.gradient_correction = GradientCorrection::linear;
   o.kernel_correction = correction;
   return TlsphSolid(fill_rectangle({0.0, 0.0}, {0.3, 0.12}, o.dp), o);
 }
@@ -323,6 +324,23 @@ TEST_CASE("tlsph quadratic: linear and quadratic fields give the exact F everywh
   CHECK_THAT(b.energy_ratio, Catch::Matchers::WithinRel(1.0 - 1.0 / 64.0, 1e-4));
 }
 
+namespace {
+/// dPi/dx_k of the strain energy at positions x by a central difference (step 1e-7).
+Vec2 strain_energy_gradient(TlsphSolid& s, const std::vector<Vec2>& x, std::size_t k) {
+  const double d = 1e-7;
+  Vec2 grad;
+  for (int c = 0; c < 2; ++c) {
+    auto xp = x, xm = x;
+    xp[k][c] += d, xm[k][c] -= d;
+    s.set_positions(xp);
+    const double ep = s.energies().strain;
+    s.set_positions(xm);
+    grad[c] = (ep - s.energies().strain) / (2.0 * d);
+  }
+  return grad;
+}
+} // namespace
+
 TEST_CASE("tlsph quadratic: forces conserve momentum and angular momentum, are -dPi/dx",
           "[solid_tlsph][quadratic]") {
   TlsphSolid s = quadratic_block();
@@ -349,16 +367,7 @@ TEST_CASE("tlsph quadratic: forces conserve momentum and angular momentum, are -
   // The force on one particle is minus the gradient of the strain energy (central difference).
   const std::size_t k = s.nearest_particle({0.005, 0.115}); // a corner particle
   const Vec2 f = rho * s.volume(k) * s.acceleration(k);
-  const double d = 1e-7;
-  Vec2 grad;
-  for (int c = 0; c < 2; ++c) {
-    auto xp = x, xm = x;
-    xp[k][c] += d, xm[k][c] -= d;
-    s.set_positions(xp);
-    const double ep = s.energies().strain;
-    s.set_positions(xm);
-    grad[c] = (ep - s.energies().strain) / (2.0 * d);
-  }
+  const Vec2 grad = strain_energy_gradient(s, x, k);
   INFO("corner particle: f = " << f.transpose() << ", -dPi/dx = " << -grad.transpose());
   CHECK((f + grad).norm() < 1e-5 * f.norm());
 }
@@ -395,18 +404,54 @@ TEST_CASE("tlsph odd-image clamp: images mirror their partners, forces are -dPi/
     const std::size_t k = s.nearest_particle({0.005, 0.075});
     const double rho = o.material.density;
     const Vec2 f = rho * s.volume(k) * s.acceleration(k);
-    const double d = 1e-7;
-    Vec2 grad;
-    for (int q = 0; q < 2; ++q) {
-      auto xp = x, xm = x;
-      xp[k][q] += d, xm[k][q] -= d;
-      s.set_positions(xp);
-      const double ep = s.energies().strain;
-      s.set_positions(xm);
-      grad[q] = (ep - s.energies().strain) / (2.0 * d);
-    }
+    const Vec2 grad = strain_energy_gradient(s, x, k);
     INFO("correction " << static_cast<int>(c) << ": f = " << f.transpose()
                        << ", -dPi/dx = " << -grad.transpose());
     CHECK((f + grad).norm() < 1e-5 * f.norm());
   }
+}
+
+TEST_CASE("tlsph odd-image clamp: the face from the lattice, a deep clamp, the errors",
+          "[solid_tlsph][image]") {
+  TlsphOptions o;
+  o.dp = 0.01;
+  auto solid = [&](const Vec2& lo, const Vec2& hi, std::function<bool(const Vec2&)> in) {
+    o.clamps = {Clamp{}};
+    o.clamps[0].contains = std::move(in);
+    return std::make_unique<TlsphSolid>(fill_rectangle(lo, hi, o.dp), o);
+  };
+  // A clamp 6 dp deep behind 4 free columns: the images mirror across x = 0, found from the
+  // lattice; the particles without a partner stay at X0.
+  auto s = solid({-0.06, 0.0}, {0.04, 0.08}, [](const Vec2& X) { return X.x() < 0.0; });
+  std::vector<Vec2> x(s->size());
+  for (std::size_t i = 0; i < s->size(); ++i) {
+    const Vec2 X = s->reference_position(i);
+    x[i] = X + Vec2(0.001 * X.x() * X.y(), 0.002 * X.x() * X.x());
+  }
+  s->set_positions(x);
+  double err = 0.0;
+  int images = 0, held = 0;
+  for (std::size_t i = 0; i < s->size(); ++i) {
+    if (!s->clamped(i)) continue;
+    const Vec2 X = s->reference_position(i);
+    if (X.x() > -0.04) {
+      err = std::max(
+          err, (s->displacement(i) + s->displacement(s->nearest_particle({-X.x(), X.y()}))).norm());
+      ++images;
+    } else {
+      err = std::max(err, s->displacement(i).norm());
+      ++held;
+    }
+  }
+  CHECK(images == 32);
+  CHECK(held == 16);
+  CHECK(err == 0.0);
+  // A clamp that meets the free particles on two faces (an L) has no single face.
+  CHECK_THROWS_WITH(
+      solid({-0.04, 0.0}, {0.2, 0.08}, [](const Vec2& X) { return X.x() < 0.0 || X.y() < 0.01; }),
+      Contains("clamps[0]") && Contains("one straight face"));
+  // One free column: the clamped particle 1.5 dp behind the face has no partner but is a
+  // neighbour of a free particle.
+  CHECK_THROWS_WITH(solid({-0.04, 0.0}, {0.01, 0.08}, [](const Vec2& X) { return X.x() < 0.0; }),
+                    Contains("within 2h of free particle") && Contains("mirror position"));
 }

@@ -4,6 +4,7 @@
 #include "fsi_app/scene.hpp"
 
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <ostream>
 #include <vector>
@@ -21,6 +22,8 @@ struct RunOptions {
   /// (fields.h5, fields.xmf, probes.csv, run.json, coupling.csv, interface.h5,
   /// checkpoint_*.h5, failed_state.h5); without it such a folder is refused (InputError).
   bool overwrite = false;
+  /// Called after every step with (time, step), e.g. the Python module's progress callback.
+  std::function<void(double, long)> on_step = nullptr;
 };
 
 /// How a run that did not throw ended.

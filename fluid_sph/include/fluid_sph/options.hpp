@@ -19,6 +19,10 @@ struct SphOptions {
   double viscosity = 0.0; ///< kinematic nu, m^2/s (eq. 3's viscous term; 0 skips it)
   Vec2 gravity = Vec2::Zero();
   Correction correction = Correction::rkgc;
+  /// true: the low-dissipation limiter of eq. 5, beta = min(3 max(u / c0, 0), 1). false: beta = 1,
+  /// the full linearised Riemann dissipation (settling runs: with the limiter a hydrostatic tank
+  /// keeps its noise, docs/fluid_sph.md).
+  bool riemann_limiter = true;
   double wkgc_alpha = 0.0; ///< alpha of eq. 22 (0: B unweighted), in [0, 1]
   /// true: free-surface flow, rho = max(rho_sum, rho0) and V = dp^2 at each re-initialisation.
   /// false: internal flow, rho = rho_sum and V = m / rho.

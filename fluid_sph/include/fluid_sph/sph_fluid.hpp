@@ -48,6 +48,13 @@ struct RigidMotion {
 };
 using WallMotion = std::function<RigidMotion(double t)>;
 
+/// A wall particle given directly (e.g. a boundary point of a structure's interface,
+/// fluid_sph/interface_boundary.hpp): reference position, unit normal into the fluid, group.
+struct WallPoint {
+  Vec2 x = Vec2::Zero(), n = Vec2::Zero();
+  int group = 0;
+};
+
 /// The fluid's struct-of-arrays particles (registered in one FieldSet).
 struct FluidParticles {
   particles::FieldSet fields;
@@ -70,6 +77,7 @@ struct WallParticles {
   std::vector<double>&nx, &ny, &nx0, &ny0; ///< unit normal into the fluid, current and reference
   std::vector<double>&vx, &vy, &ax, &ay;   ///< velocity and acceleration averaged over the step
   std::vector<double>&xb, &yb;             ///< positions at the last pair build
+  std::vector<double>&fvx, &fvy; ///< tracked walls: viscous force of the fluid on them, per Dt
   WallParticles();
   std::size_t size() const { return fields.size(); }
 };
@@ -78,14 +86,24 @@ class SphFluid {
 public:
   /// Fluid particles start at rest at `positions`; walls are filled with dummy particles.
   /// Throws fsi::InputError on invalid options or positions outside the domain.
+  /// `points` are appended to the walls' dummies as further wall particles (in order).
   SphFluid(const SphOptions& options, const std::vector<Vec2>& positions,
-           const std::vector<WallPolyline>& walls = {});
+           const std::vector<WallPolyline>& walls = {}, const std::vector<WallPoint>& points = {});
 
   /// Initial velocities (before the first advance), one per particle in the order of the
   /// constructor's positions (particle id; the particles themselves are sorted by cell).
   void set_velocities(const std::vector<Vec2>& v);
   /// Motion of a wall group from now on (its dummies follow it from the next acoustic step).
   void set_wall_motion(int group, WallMotion motion);
+  /// Wall particles the caller moves (groups without a WallMotion, e.g. a structure's boundary
+  /// points): before each advance set x, y, nx, ny at the step's end and vx, vy, ax, ay averaged
+  /// over it (eq. 17); the pairs follow at the next advection step, as for a WallMotion.
+  WallParticles& moved_walls() { return walls_; }
+  /// From now on the force of the fluid on each wall particle a >= first is kept: wall_force(a)
+  /// after each advance, N/m, the exact reaction of the wall terms the fluid particles felt in
+  /// that acoustic step (eqs. 15-17 and the no-slip viscous term frozen over Dt).
+  void track_wall_forces(std::size_t first);
+  Vec2 wall_force(std::size_t a) const { return {wfx_[a - tracked_], wfy_[a - tracked_]}; }
 
   /// The acoustic step allowed now: min(acoustic criterion, what is left of the current Dt), or
   /// fixed_dt.
@@ -144,6 +162,11 @@ public:
 
 private:
   void fill_walls(const std::vector<WallPolyline>& walls);
+  void append_wall_points(const std::vector<WallPoint>& points);
+
+  void wall_reaction();         // tracked walls: the wall terms of first_half, reversed
+  void wall_viscous_reaction(); // tracked walls: the viscous wall term of prior_acceleration
+
   void per_advection_step(); // wrap, remove, sort, pairs, density, B, viscous, transport, Dt
   void build_pairs();        // from xb, yb (fluid) and xb, yb (walls)
   void reinitialise_density();
@@ -175,6 +198,8 @@ private:
   double t_ = 0.0, Dt_ = 0.0, elapsed_ = 0.0, dt_acoustic_ = 0.0;
   long step_ = 0, builds_ = 0, sub_ = 0, subs_ = 0; // fixed dt: subs_ acoustic steps per Dt
   std::size_t removed_ = 0;
+  std::size_t tracked_ = static_cast<std::size_t>(-1); // first tracked wall particle
+  std::vector<double> wfx_, wfy_;                      // their force, last acoustic step
 };
 
 /// Lattice points (x0 + (i + 1/2) dp, y0 + (j + 1/2) dp) inside the rectangle [lo, hi].

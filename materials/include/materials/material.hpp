@@ -55,6 +55,11 @@ public:
   virtual double density() const = 0;
 };
 
+/// Von Mises equivalent of the Cauchy stress sigma = F S(E) F^T / J, with sigma_33 = S33 / J
+/// (F33 = 1), for the deformation gradient F and its Green–Lagrange strain E (passed in: callers
+/// compute E in their own form).
+double von_mises(const Material& law, const Mat2& F, const Mat2& E);
+
 /// Saint Venant–Kirchhoff, W = lambda/2 (tr E)^2 + mu tr(E^2) (eq. 35). Plane stress replaces
 /// lambda by lambda* = 2 lambda mu / (lambda + 2 mu).
 class StVenantKirchhoff final : public Material {

@@ -31,21 +31,11 @@ public:
     for (int dy = -1; dy <= 1; ++dy) {
       int ry = cy + dy;
       double sy = 0.0;
-      if (periodic_y_) {
-        if (ry < 0) ry += ny_, sy = -period_.y();
-        if (ry >= ny_) ry -= ny_, sy = period_.y();
-      } else if (ry < 0 || ry >= ny_) {
-        continue;
-      }
+      if (!wrap_cell(ry, sy, ny_, period_.y(), periodic_y_)) continue;
       for (int dx = -1; dx <= 1; ++dx) {
         int rx = cx + dx;
         double sx = 0.0;
-        if (periodic_x_) {
-          if (rx < 0) rx += nx_, sx = -period_.x();
-          if (rx >= nx_) rx -= nx_, sx = period_.x();
-        } else if (rx < 0 || rx >= nx_) {
-          continue;
-        }
+        if (!wrap_cell(rx, sx, nx_, period_.x(), periodic_x_)) continue;
         const std::size_t c = static_cast<std::size_t>(ry * nx_ + rx);
         for (std::uint32_t k = start_[c]; k < start_[c + 1]; ++k) f(order_[k], sx, sy);
       }
@@ -59,6 +49,15 @@ public:
   const std::vector<std::uint32_t>& order() const { return order_; }
 
 private:
+  /// Cell index r along an axis of n cells: wrapped into [0, n) with the image shift s (-L, 0 or
+  /// L) if the axis is periodic; false if r is off a non-periodic axis.
+  static bool wrap_cell(int& r, double& s, int n, double L, bool periodic) {
+    if (!periodic) return r >= 0 && r < n;
+    if (r < 0) r += n, s = -L;
+    if (r >= n) r -= n, s = L;
+    return true;
+  }
+
   Vec2 lo_ = Vec2::Zero(), period_ = Vec2::Zero(), inv_cell_ = Vec2::Zero();
   int nx_ = 1, ny_ = 1;
   bool periodic_x_ = false, periodic_y_ = false;

@@ -24,22 +24,28 @@ class StateArchive;
 namespace fsi::tlsph {
 
 /// A clamped region: particles whose reference position satisfies `contains` have their
-/// position and velocity prescribed. Without `position`/`velocity` they stay at X0 with v = 0;
-/// with them (a rigid motion such as a rolling tank's clamp) x = position(X0, t),
+/// position and velocity prescribed. Without `position`/`velocity` (a fixed clamp) they stay at
+/// X0 with v = 0; with them (a rigid motion such as a rolling tank's clamp) x = position(X0, t),
 /// v = velocity(X0, t). Both or neither must be set.
 struct Clamp {
   std::function<bool(const Vec2& X0)> contains;
   std::function<Vec2(const Vec2& X0, double t)> position;
   std::function<Vec2(const Vec2& X0, double t)> velocity;
-  /// Fixed clamps only: impose u = 0 on the clamp's face, the plane through `face_point` with
-  /// normal `face_normal`, instead of at the clamped particles: each clamped particle moves as
-  /// the odd image of the free particle at its mirror position, u_g = -u_p (so u = 0 on the
-  /// plane), carries no strain energy, and the force on p gains minus the force on its image
-  /// (f_p = -dPi/dx_p with x_g(x_p)). A clamped particle whose mirror position holds no free
-  /// particle (to 1e-6 dp) is an InputError.
-  bool odd_image = false;
+  /// Fixed clamps (the default form; a moving clamp always holds its particles): u = 0 on the
+  /// clamp's face, the line through `face_point` with normal `face_normal`, instead of at the
+  /// clamped particles. Each clamped particle at the mirror position of a free particle moves
+  /// as its odd image, u_g = -u_p (so u = 0 on the face); every clamped particle carries no
+  /// strain energy, those without a partner stay at X0, and the force on p gains minus the
+  /// force on its image (f_p = -dPi/dx_p with x_g(x_p)). A clamped particle within 2h of a free
+  /// one without a partner is an InputError. false: the paper's clamp (the clamped particles
+  /// held, with their own F and stress; the beams are then soft by ~ 3 dp / L,
+  /// docs/solid_tlsph.md).
+  bool odd_image = true;
+  /// The face; when unset (face_normal = 0) it is found from the reference lattice: the line
+  /// through the midpoints of the clamped-free particle pairs dp apart, which must all be
+  /// perpendicular to it and on it (InputError otherwise: set the face, or odd_image = false).
   Vec2 face_point{0.0, 0.0};
-  Vec2 face_normal{1.0, 0.0};
+  Vec2 face_normal{0.0, 0.0};
 };
 
 /// How the reference kernel gradient is corrected (eq. 14 or its second-order extension).
@@ -64,8 +70,10 @@ struct TlsphOptions {
   Vec2 gravity{0.0, 0.0};        ///< g [m/s^2]
   double cfl = 0.6;              ///< dt_s = cfl min(sqrt(h/|a|), h/(c_s + |v|)), in (0, 1]
   bool kernel_correction = true; ///< B0 of eq. 14; false: B0 = I (standard SPH, for tests)
-  /// Order of the gradient correction (needs kernel_correction); `linear` is the paper's.
-  GradientCorrection gradient_correction = GradientCorrection::linear;
+  /// Order of the gradient correction (needs kernel_correction); `linear` is the paper's form,
+  /// `quadratic` (the default) takes ~ 2.6 x its sub-steps (dt_scale()) and meets the beam
+  /// targets of docs/solid_tlsph.md with the default clamp.
+  GradientCorrection gradient_correction = GradientCorrection::quadratic;
   /// Pairwise artificial viscosity, a_a += sum_b 2 nu_d (v_b - v_a) |dW_ab| / r_ab V_b with
   /// nu_d = pair_damping * c_s h / 2 (Morris form in the reference configuration; conserves
   /// momentum, dissipates the relative motion of neighbours). >= 0; 0 = off (default).
@@ -194,11 +202,20 @@ private:
   void build_interface(const SolidGeometry& geometry);
   /// Partners of the Clamp::odd_image particles.
   void build_images();
+  /// The face of fixed clamp k (its given one, or found from the lattice), oriented outwards
+  /// from the clamp.
+  void clamp_face(std::size_t k, Vec2& point, Vec2& normal) const;
+  /// True for a particle of a fixed odd-image clamp (no strain energy, not integrated).
+  bool imaged(std::size_t i) const { return clamped_[i] && imaged_[clamped_[i] - 1u]; }
   /// F (eq. 13) and P B0 per particle; throws RunError on det F <= 0 or NaN.
   void compute_stress();
   /// a = eq. 12 + gravity + external + damping (needs compute_stress()).
   void compute_acceleration();
   void prescribe(double t);
+  /// Copies `values` (size() entries, else InputError naming `what`) into (ex, ey) at the free
+  /// particles, then moves the odd images.
+  void set_free(const std::vector<Vec2>& values, std::vector<double>& ex, std::vector<double>& ey,
+                const char* what);
   void substep(double dt);
   void update_loaded();
 
@@ -229,6 +246,7 @@ private:
   // image of each free particle; scratch force per unit mass of the images.
   std::vector<std::size_t> image_partner_, image_of_;
   std::vector<double> image_ax_, image_ay_;
+  std::vector<std::uint8_t> imaged_; // per clamp: a fixed clamp with odd_image
   bool images_ = false;
   double dt_scale_ = 1.0; // stable-step factor of the quadratic correction (build_quadratic)
 

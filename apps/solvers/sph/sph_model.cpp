@@ -1,0 +1,347 @@
+#include "sph/sph_model.hpp"
+
+#include "fsi/core/error.hpp"
+#include "fsi/core/state_archive.hpp"
+#include "fsi_app/wall_motion.hpp"
+#include "geometry_erp/fill.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace fsi::app::sph_plugin {
+
+sph::SphOptions sph_options(const Scene& scene) {
+  const SphSpec& f = scene.fluid->as<SphSpec>();
+  sph::SphOptions o;
+  o.rho0 = f.density;
+  o.c0 = f.sound_speed;
+  o.dp = f.l0;
+  o.h_over_dp = f.h_over_dp;
+  o.viscosity = f.viscosity;
+  o.gravity = scene.gravity;
+  o.correction = f.correction == "none" ? sph::Correction::none : sph::Correction::rkgc;
+  o.wkgc_alpha = f.wkgc_alpha;
+  o.free_surface = f.free_surface;
+  o.transport_velocity = f.transport_velocity;
+  o.u_ref = f.u_ref > 0.0 ? f.u_ref : 0.1 * f.sound_speed; // c0 = 10 U_ref
+  o.advection_cfl = f.advection_cfl;
+  o.acoustic_cfl = f.acoustic_cfl;
+  o.damping_time = f.damping_time;
+  o.domain_min = f.domain_min;
+  o.domain_max = f.domain_max;
+  if (f.domain_max.x() <= f.domain_min.x()) { // no domain given: walls and regions, with margin
+    Vec2 lo = Vec2::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+    for (const auto& w : scene.walls)
+      for (const auto& p : w.polyline) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+    for (const auto& r : f.regions)
+      for (const auto& p : r) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+    const double margin = 8.0 * f.l0;
+    o.domain_min = lo - Vec2(margin, margin);
+    o.domain_max = hi + Vec2(margin, margin);
+  }
+  return o;
+}
+
+// F (eq. 66) with sub-cycling: one coupler step of the interface motion from its state at the
+// fluid's time (start_) to the one given (end_), crossed by the fluid's own acoustic steps. Per
+// acoustic step the nodes move on the line between the two, the boundary points follow them
+// (edge_point), with the step's mean velocity and the coupler step's mean acceleration
+// (v_end - v_start) / Dt (fluid.interface_acceleration; else zero) as the wall's time-averaged
+// velocity and acceleration (eq. 17). The
+// loads are the points' impulse over the coupler step / Dt, distributed to the nodes: the
+// structure receives exactly the momentum the fluid lost to it.
+class SphModel::Adapter final : public coupling::FluidSolver {
+public:
+  explicit Adapter(SphModel& model) : model_(model) {
+    for (const auto& b : model.boundaries_) {
+      offset_.push_back(nodes_);
+      nodes_ += b.mesh().node_count();
+      points_ += b.size();
+    }
+    start_.x.clear();
+    for (const auto& b : model.boundaries_)
+      start_.x.insert(start_.x.end(), b.mesh().X0.begin(), b.mesh().X0.end());
+    start_.v.assign(nodes_, Vec2::Zero());
+    start_.a.assign(nodes_, Vec2::Zero());
+    end_ = start_;
+    loads_ = coupling::InterfaceLoads::zeros(nodes_);
+    x_.resize(model.boundaries_.size());
+    a_.resize(model.boundaries_.size());
+  }
+  void initialize() override {}
+  void set_interface_motion(const coupling::InterfaceMotion& m) override {
+    if (m.size() != nodes_)
+      throw RunError("fluid_sph: interface motion of " + std::to_string(m.size()) +
+                     " nodes, the fluid's interfaces have " + std::to_string(nodes_));
+    end_ = m;
+  }
+  void advance(double t, double dt) override;
+  const coupling::InterfaceLoads& interface_loads() const override { return loads_; }
+  void save_state() override {
+    model_.fluid_->save(saved_);
+    saved_start_ = start_;
+  }
+  void restore_state() override {
+    model_.fluid_->restore(saved_);
+    start_ = saved_start_;
+  }
+  std::optional<double> stable_dt() const override { return model_.fluid_->advection_dt(); }
+  void write_state(StateArchive& archive) const override {
+    model_.fluid_->write_state(archive, "fluid/");
+    if (nodes_ == 0) return;
+    archive.put("fluid/interface/motion", flatten(start_));
+  }
+  void read_state(const StateArchive& archive) override {
+    model_.fluid_->read_state(archive, "fluid/");
+    if (nodes_ == 0) return;
+    const auto& m = archive.reals("fluid/interface/motion", 6 * nodes_);
+    for (std::size_t k = 0; k < nodes_; ++k) {
+      start_.x[k] = {m[6 * k], m[6 * k + 1]};
+      start_.v[k] = {m[6 * k + 2], m[6 * k + 3]};
+      start_.a[k] = {m[6 * k + 4], m[6 * k + 5]};
+    }
+  }
+
+private:
+  static std::vector<double> flatten(const coupling::InterfaceMotion& m) {
+    std::vector<double> out;
+    out.reserve(6 * m.size());
+    for (std::size_t k = 0; k < m.size(); ++k)
+      out.insert(out.end(),
+                 {m.x[k].x(), m.x[k].y(), m.v[k].x(), m.v[k].y(), m.a[k].x(), m.a[k].y()});
+    return out;
+  }
+
+  SphModel& model_;
+  std::vector<std::size_t> offset_; ///< first coupler node of each interface
+  std::size_t nodes_ = 0, points_ = 0;
+  coupling::InterfaceMotion start_, end_, saved_start_;
+  coupling::InterfaceLoads loads_;
+  sph::SphFluid::State saved_;
+  // Work arrays, sized once.
+  std::vector<std::vector<Vec2>> x_, a_;
+  std::vector<Vec2> nodal_a_, position_, normal_, point_a_, impulse_, nodal_f_;
+};
+
+void SphModel::Adapter::advance(double t, double dt) {
+  sph::SphFluid& f = *model_.fluid_;
+  const auto& bs = model_.boundaries_;
+  const double t_end = t + dt, inv_dt = 1.0 / dt;
+  nodal_a_.resize(nodes_);
+  // The wall acceleration of eq. 16's dummy pressure: the step's mean (v_end - v_start) / Dt
+  // with fluid.interface_acceleration, else zero (docs/fluid_sph.md: explicit coupling with a
+  // light structure feeds it back unstably).
+  const bool mean_a = model_.interface_acceleration_;
+  for (std::size_t k = 0; k < nodes_; ++k)
+    nodal_a_[k] = mean_a ? Vec2((end_.v[k] - start_.v[k]) * inv_dt) : Vec2::Zero();
+  for (std::size_t j = 0; j < bs.size(); ++j) {
+    const auto first = nodal_a_.begin() + static_cast<std::ptrdiff_t>(offset_[j]);
+    a_[j].assign(first, first + static_cast<std::ptrdiff_t>(bs[j].mesh().node_count()));
+  }
+  impulse_.assign(points_, Vec2::Zero());
+  sph::WallParticles& w = f.moved_walls();
+  while (f.time() < t_end - 1e-12 * std::max(1.0, std::abs(t_end))) {
+    const double h = std::min(f.next_dt(), t_end - f.time());
+    const double s = std::min(1.0, (f.time() + h - t) * inv_dt), inv_h = 1.0 / h;
+    std::size_t a = model_.first_point_;
+    for (std::size_t j = 0; j < bs.size(); ++j) {
+      const std::size_t n = bs[j].mesh().node_count();
+      x_[j].resize(n);
+      for (std::size_t k = 0; k < n; ++k)
+        x_[j][k] = (1.0 - s) * start_.x[offset_[j] + k] + s * end_.x[offset_[j] + k];
+      bs[j].place(x_[j], position_, normal_);
+      bs[j].interpolate(a_[j], point_a_);
+      for (std::size_t p = 0; p < bs[j].size(); ++p, ++a) {
+        w.vx[a] = (position_[p].x() - w.x[a]) * inv_h; // mean over the acoustic step (eq. 17)
+        w.vy[a] = (position_[p].y() - w.y[a]) * inv_h;
+        w.ax[a] = point_a_[p].x();
+        w.ay[a] = point_a_[p].y();
+        w.x[a] = position_[p].x();
+        w.y[a] = position_[p].y();
+        w.nx[a] = normal_[p].x();
+        w.ny[a] = normal_[p].y();
+      }
+    }
+    f.advance(h);
+    for (std::size_t p = 0; p < points_; ++p)
+      impulse_[p] += f.wall_force(model_.first_point_ + p) * h;
+  }
+  std::size_t first = 0;
+  for (std::size_t j = 0; j < bs.size(); ++j) {
+    position_.assign(impulse_.begin() + static_cast<std::ptrdiff_t>(first),
+                     impulse_.begin() + static_cast<std::ptrdiff_t>(first + bs[j].size()));
+    for (auto& q : position_) q *= inv_dt; // mean force over the coupler step
+    bs[j].distribute(position_, nodal_f_);
+    std::copy(nodal_f_.begin(), nodal_f_.end(),
+              loads_.f.begin() + static_cast<std::ptrdiff_t>(offset_[j]));
+    first += bs[j].size();
+  }
+  start_ = end_;
+}
+
+namespace {
+
+sph::WallMotion wall_motion(const WallSpec& wall) {
+  std::shared_ptr<const erp::Motion> motion = make_motion(wall);
+  const Vec2 pivot = wall.motion->pivot;
+  return [motion, pivot](double t) {
+    const erp::RigidKinematics k = motion->at(t);
+    sph::RigidMotion m;
+    m.centre = pivot;
+    m.d = k.d, m.v = k.d_dot, m.a = k.d_ddot;
+    m.theta = k.theta, m.omega = k.omega, m.alpha = k.alpha;
+    return m;
+  };
+}
+
+bool has_wall_force_probe(const Scene& scene) {
+  return std::any_of(scene.output.probes.begin(), scene.output.probes.end(), [](const auto& p) {
+    return p.quantity == "wall_force_x" || p.quantity == "wall_force_y";
+  });
+}
+
+} // namespace
+
+SphModel::SphModel(const Scene& scene, const std::vector<InterfaceMesh>& interfaces,
+                   const std::vector<Polygon>& solid) {
+  const SphSpec& f = scene.fluid->as<SphSpec>();
+  std::vector<sph::WallPolyline> walls;
+  erp::WallSet reference; // the walls as written: the fill keeps l0/2 from them
+  for (std::size_t w = 0; w < scene.walls.size(); ++w) {
+    walls.push_back({scene.walls[w].polyline, scene.walls[w].closed, static_cast<int>(w)});
+    reference.add_polyline(scene.walls[w].polyline, scene.walls[w].closed, static_cast<int>(w));
+  }
+  std::vector<sph::WallPoint> points;
+  try {
+    for (std::size_t j = 0; j < interfaces.size(); ++j) {
+      boundaries_.emplace_back(interfaces[j], f.l0, f.interface_layers);
+      const auto p = boundaries_.back().wall_points(static_cast<int>(walls.size() + j));
+      points.insert(points.end(), p.begin(), p.end());
+    }
+  } catch (const InputError& e) {
+    fail_at(scene, scene.fluid->line, "fluid", e.what());
+  }
+  std::vector<erp::Polygon> holes = solid;
+  std::vector<Vec2> positions;
+  for (const auto& region : f.regions) { // each region on its own lattice, as the EMPS fluid
+    Vec2 origin = region.front();
+    for (const auto& p : region) origin = origin.cwiseMin(p);
+    const auto filled = erp::fill_lattice(origin, f.l0, {region}, holes, &reference);
+    positions.insert(positions.end(), filled.begin(), filled.end());
+    holes.push_back(region);
+  }
+  if (positions.empty())
+    fail_at(scene, scene.fluid->line, "fluid.regions",
+            "no particle fits in the regions at this l0");
+  initial_count_ = positions.size();
+  try {
+    fluid_ = std::make_unique<sph::SphFluid>(sph_options(scene), positions, walls, points);
+  } catch (const InputError& e) {
+    fail_at(scene, scene.fluid->line, "fluid", e.what());
+  }
+  for (std::size_t w = 0; w < scene.walls.size(); ++w)
+    if (scene.walls[w].motion)
+      fluid_->set_wall_motion(static_cast<int>(w), wall_motion(scene.walls[w]));
+  first_point_ = fluid_->walls().size() - points.size();
+  tracked_ = !interfaces.empty() || has_wall_force_probe(scene);
+  interface_acceleration_ = f.interface_acceleration;
+  if (tracked_) fluid_->track_wall_forces(interfaces.empty() ? 0 : first_point_);
+  adapter_ = std::make_unique<Adapter>(*this);
+}
+
+SphModel::~SphModel() = default;
+
+coupling::FluidSolver& SphModel::coupling_solver() {
+  return *adapter_;
+}
+
+void SphModel::advance(double time, double dt) {
+  if (!tracked_) return fluid_->advance_to(time + dt);
+  // As advance_to, with the tracked walls' mean force over the step (the wall_force probes).
+  const double t_end = time + dt;
+  Vec2 impulse = Vec2::Zero();
+  while (fluid_->time() < t_end - 1e-12 * std::max(1.0, std::abs(t_end))) {
+    const double h = std::min(fluid_->next_dt(), t_end - fluid_->time());
+    fluid_->advance(h);
+    Vec2 f = Vec2::Zero();
+    for (std::size_t a = 0; a < fluid_->walls().size(); ++a) f += fluid_->wall_force(a);
+    impulse += f * h;
+  }
+  wall_force_ = impulse / dt;
+}
+
+std::optional<double> SphModel::stable_dt(double) const {
+  return fluid_->advection_dt();
+}
+
+void SphModel::write_frame(FieldsFile& file, const std::vector<std::string>& fields) const {
+  const sph::FluidParticles& p = fluid_->particles();
+  const std::size_t n = p.size();
+  xy_.resize(2 * n);
+  v_.resize(2 * n);
+  for (std::size_t i = 0; i < n; ++i) {
+    xy_[2 * i] = p.x[i], xy_[2 * i + 1] = p.y[i];
+    v_[2 * i] = p.vx[i], v_[2 * i + 1] = p.vy[i];
+  }
+  auto wanted = [&](const char* f) {
+    return std::find(fields.begin(), fields.end(), f) != fields.end();
+  };
+  std::vector<GridField> out;
+  if (wanted("velocity")) out.push_back({"velocity", 2, v_.data()});
+  if (wanted("pressure")) out.push_back({"pressure", 1, p.p.data()});
+  if (wanted("density")) out.push_back({"density", 1, p.rho.data()});
+  if (wanted("wkgc_indicator")) out.push_back({"wkgc_indicator", 1, p.det_a.data()});
+  file.write_grid("particles", xy_, out);
+}
+
+Vec2 SphModel::wall_force() const {
+  if (!boundaries_.empty()) {
+    Vec2 total = Vec2::Zero();
+    for (const Vec2& q : adapter_->interface_loads().f) total += q;
+    return total;
+  }
+  return wall_force_;
+}
+
+std::optional<double> SphModel::probe(const ProbeSpec& probe) const {
+  const sph::FluidParticles& p = fluid_->particles();
+  if (probe.quantity == "surge_front") return fluid_->surge_front();
+  if (probe.quantity == "pressure") return fluid_->pressure_at(*probe.point);
+  if (probe.quantity == "kinetic_energy") return fluid_->kinetic_energy(); // J per m of depth
+  if (probe.quantity == "mean_speed") {
+    double speeds = 0.0;
+    for (std::size_t i = 0; i < p.size(); ++i) speeds += std::hypot(p.vx[i], p.vy[i]);
+    return p.size() ? speeds / static_cast<double>(p.size()) : 0.0;
+  }
+  if (probe.quantity == "wall_force_x") return wall_force().x();
+  if (probe.quantity == "wall_force_y") return wall_force().y();
+  return std::nullopt;
+}
+
+std::vector<std::pair<std::string, Vec2>> SphModel::force_parts() const {
+  return {{"total", wall_force()}};
+}
+
+void SphModel::report(JsonObject& run) const {
+  JsonObject f;
+  f.add("particles_initial", static_cast<long long>(initial_count_))
+      .add("particles", static_cast<long long>(fluid_->particles().size()))
+      .add("removed_particles", static_cast<long long>(fluid_->removed()))
+      .add("wall_particles", static_cast<long long>(fluid_->walls().size()))
+      .add("interface_points", static_cast<long long>(fluid_->walls().size() - first_point_))
+      .add("mean_neighbours", fluid_->mean_neighbours())
+      .add("acoustic_steps", static_cast<long long>(fluid_->steps()))
+      .add("advection_steps", static_cast<long long>(fluid_->advection_steps()));
+  run.add("fluid", f);
+}
+
+void SphModel::write_state(StateArchive& archive) const {
+  adapter_->write_state(archive);
+}
+
+void SphModel::read_state(const StateArchive& archive) {
+  adapter_->read_state(archive);
+}
+
+} // namespace fsi::app::sph_plugin

@@ -1,0 +1,61 @@
+#pragma once
+// The SPH fluid of a scene (fluid.type: sph) on the scene's walls (dummy particles, static or
+// with the walls' prescribed motion) and, coupled, on boundary points of each structure's
+// interface mesh (fluid_sph/interface_boundary.hpp), whose forces return to the interface nodes.
+#include "fluid_sph/interface_boundary.hpp"
+#include "fluid_sph/sph_fluid.hpp"
+#include "fsi_app/solver_plugin.hpp"
+#include "sph/sph_spec.hpp"
+
+#include <memory>
+
+namespace fsi::app::sph_plugin {
+
+/// The solver options of the scene's fluid block; without a domain, the box around walls and
+/// regions with a margin of 8 l0 (the walls' 4 dummy layers and a kernel support).
+sph::SphOptions sph_options(const Scene& scene);
+
+class SphModel final : public FluidPart {
+public:
+  /// Fills the regions (l0/2 from walls and edges, the structures' areas `solid` kept free),
+  /// builds the wall dummies and the interfaces' boundary points. Throws InputError (scene file
+  /// and line) for options or regions the fluid refuses.
+  SphModel(const Scene& scene, const std::vector<InterfaceMesh>& interfaces = {},
+           const std::vector<Polygon>& solid = {});
+  ~SphModel() override;
+  /// Acoustic steps of the fluid's own criteria up to time + dt (the last one shortened).
+  void advance(double time, double dt) override;
+  /// The fluid's advection step Dt (its dual criteria; the Courant number is not used): the
+  /// run's step holds the acoustic steps that cross it.
+  std::optional<double> stable_dt(double courant) const override;
+  void declare(FieldsFile&) const override {}
+  void write_frame(FieldsFile& file, const std::vector<std::string>& fields) const override;
+  std::optional<double> probe(const ProbeSpec& probe) const override;
+  void report(JsonObject& run) const override;
+  /// The fluid under "fluid/", the interface motion at the fluid's time under "fluid/interface/".
+  void write_state(StateArchive& archive) const override;
+  void read_state(const StateArchive& archive) override;
+  coupling::FluidSolver& coupling_solver() override;
+  /// The fluid's force on the coupled structures (on all walls without one), N/m.
+  std::vector<std::pair<std::string, Vec2>> force_parts() const override;
+
+  sph::SphFluid& fluid() { return *fluid_; }
+  const sph::SphFluid& fluid() const { return *fluid_; }
+  /// Boundary points of each coupled interface, in order.
+  const std::vector<sph::InterfaceBoundary>& boundaries() const { return boundaries_; }
+  /// Mean force of the fluid on the coupled structures (on all walls without one) over the last
+  /// advance, N/m.
+  Vec2 wall_force() const;
+
+private:
+  class Adapter;
+  std::vector<sph::InterfaceBoundary> boundaries_;
+  std::unique_ptr<sph::SphFluid> fluid_;
+  std::unique_ptr<Adapter> adapter_;
+  std::size_t initial_count_ = 0, first_point_ = 0;
+  bool tracked_ = false, interface_acceleration_ = false;
+  Vec2 wall_force_ = Vec2::Zero();     // uncoupled: the walls' mean force over the last advance
+  mutable std::vector<double> xy_, v_; // output buffers
+};
+
+} // namespace fsi::app::sph_plugin

@@ -1,0 +1,127 @@
+// The SPH fluid's scene keys, each declared once where it is read.
+#include "sph/sph_spec.hpp"
+
+#include "fsi_app/solver_plugin.hpp"
+
+#include <set>
+#include <sstream>
+
+namespace fsi::app::sph_plugin {
+
+namespace {
+
+std::vector<Vec2> read_region(Section s) {
+  const bool doc = s.context().documenting();
+  std::vector<Vec2> polygon;
+  if (doc || s.has("polygon")) polygon = s.points("polygon", 3, "closed polygon to fill, m");
+  if (doc || !s.has("polygon")) {
+    const Vec2 lo = s.vec2("min", "lower-left corner of a rectangle to fill, m");
+    const Vec2 hi = s.vec2("max", "upper-right corner, m");
+    if (!doc && (hi.x() <= lo.x() || hi.y() <= lo.y()))
+      s.fail("max", "must lie above and right of min");
+    if (!doc) polygon = {lo, {hi.x(), lo.y()}, hi, {lo.x(), hi.y()}};
+  }
+  s.finish();
+  return polygon;
+}
+
+// The top-level keys a fluid plug-in declares (its read in documentation mode).
+std::set<std::string> declared_keys(const FluidPlugin& plugin) {
+  ReadContext ctx;
+  ctx.collector = std::make_unique<std::vector<KeyDoc>>();
+  Section doc(YAML::Node(), "", ctx);
+  plugin.read(doc);
+  std::set<std::string> keys;
+  for (const KeyDoc& k : *ctx.collector) keys.insert(k.path.substr(0, k.path.find_first_of(".[")));
+  return keys;
+}
+
+// A key of another fluid type (e.g. emps' alpha_rep) given to sph: name it and its type.
+void refuse_foreign_keys(Section& s) {
+  const std::set<std::string> own = declared_keys(*find_fluid_plugin("sph"));
+  for (const FluidPlugin& p : fluid_plugins()) {
+    if (p.name == "sph") continue;
+    for (const std::string& key : declared_keys(p))
+      if (!own.count(key) && s.has(key))
+        s.fail(key, "is a key of fluid type " + p.name + ", not of sph (remove it to run sph)");
+  }
+}
+
+} // namespace
+
+std::shared_ptr<const SolverSpec> read_sph(Section& s) {
+  const bool doc = s.context().documenting();
+  if (!doc) refuse_foreign_keys(s);
+  auto spec = std::make_shared<SphSpec>();
+  SphSpec& f = *spec;
+  f.density = s.real("density", Range::positive(), "rho, kg/m^3");
+  f.viscosity = s.real("viscosity", 0.0, Range::non_negative(),
+                       "kinematic viscosity nu, m^2/s; 0 skips the viscous loop");
+  f.l0 = s.real("l0", Range::positive(), "initial particle spacing, m (sph: dp)");
+  f.sound_speed = s.real("sound_speed", Range::positive(),
+                         "artificial sound speed, m/s (sph: c0 of p = c0^2 (rho - rho0), eq. 2)");
+  f.h_over_dp = s.real("h_over_dp", 1.3, Range::closed(1.0, 2.0),
+                       "smoothing length h / dp (Wendland C2, support 2h)");
+  f.correction = s.choice("correction", {"none", "rkgc"}, "rkgc",
+                          "none: standard Riemann-SPH; rkgc: reverse kernel gradient correction on "
+                          "the central pressure term (eqs. 18-20)");
+  f.wkgc_alpha = s.real("wkgc_alpha", 0.3, Range::closed(0.0, 1.0),
+                        "alpha of the WKGC weighting (eqs. 21-22); 0: B unweighted");
+  f.free_surface = s.boolean("free_surface", true,
+                             "true: rho = max(rho_sum, rho0) at re-initialisation (free-surface "
+                             "flows); false: rho = rho_sum (internal flows)");
+  f.transport_velocity =
+      s.boolean("transport_velocity", false,
+                "transport-velocity shift once per advection step (eqs. 23-24; internal flows, "
+                "needs free_surface: false)");
+  f.u_ref = s.real("u_ref", 0.0, Range::non_negative(),
+                   "reference speed of the advection criterion, m/s (0: sound_speed / 10)");
+  f.advection_cfl = s.real("advection_cfl", 0.25, Range::left_open(0.0, 1.0),
+                           "advection step Dt = advection_cfl h / max(|v|, sqrt(4 h |a|), u_ref, "
+                           "nu / h)");
+  f.acoustic_cfl = s.real("acoustic_cfl", 0.6, Range::left_open(0.0, 1.0),
+                          "acoustic step dt = acoustic_cfl h / max(c0 + |v|, sqrt(4 h |a|)) "
+                          "(sph steps by its own criteria: time.courant is not used)");
+  f.interface_layers = s.integer("interface_layers", 4, Range::closed(1.0, 8.0),
+                                 "boundary points fill a coupled structure within "
+                                 "interface_layers l0 of its interface (lattice at l0)");
+  f.interface_acceleration = s.boolean(
+      "interface_acceleration", false,
+      "a coupled interface's mean acceleration over the coupling step in the wall's dummy "
+      "pressure (eqs. 16-17); false: zero (explicit coupling with a light structure feeds it "
+      "back unstably)");
+  f.damping_time =
+      s.real("damping_time", 0.0, Range::non_negative(),
+             "initial damping phase T_d: velocities damped at a rate 20/T_d (1 - t/T_d) "
+             "(quiet hydrostatic starts), s");
+  for (auto& region :
+       s.list("regions", "areas filled with particles at spacing l0, each on its own "
+                         "lattice from its lower-left corner (l0/2 from its edges)"))
+    f.regions.push_back(read_region(region));
+  if (!doc && f.regions.empty()) s.fail("regions", "at least one region is required");
+  if (auto d = s.block("domain", "particles leaving this box are removed and counted")) {
+    f.domain_min = d->vec2("min", "lower-left corner, m");
+    f.domain_max = d->vec2("max", "upper-right corner, m");
+    if (!doc && (f.domain_max.x() <= f.domain_min.x() || f.domain_max.y() <= f.domain_min.y()))
+      d->fail("max", "must lie above and right of min");
+    d->finish();
+  }
+  if (!doc) {
+    if (f.transport_velocity && f.free_surface)
+      s.fail("transport_velocity", "needs free_surface: false (eq. 24 is for internal flows)");
+    for (std::size_t i = 0; i < f.regions.size(); ++i) {
+      Vec2 lo = f.regions[i][0], hi = f.regions[i][0];
+      for (const auto& p : f.regions[i]) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+      const Vec2 size = hi - lo;
+      if (f.l0 > size.minCoeff()) {
+        std::ostringstream msg;
+        msg << "particle spacing " << f.l0 << " m is larger than fluid region " << i << " ("
+            << size.x() << " x " << size.y() << " m)";
+        s.fail("l0", msg.str());
+      }
+    }
+  }
+  return spec;
+}
+
+} // namespace fsi::app::sph_plugin

@@ -1,0 +1,51 @@
+#pragma once
+// The SPH fluid's moving boundary on a structure's interface mesh (RKGC paper, sec. 2.3; issue
+// 18): boundary points at spacing dp inside the solid (on the LEFT of a -> b) within `layers`
+// dp of the interface, each anchored at the nearest point x(xi) of its nearest edge with its
+// offset in that edge chord's frame, so that it moves with the edge's shape functions
+// (edge_point) and turns with the chord. The fluid treats them as moving wall particles (the
+// one-sided Riemann wall, eqs. 15-17); their forces go back to the edge nodes with the same shape
+// functions N(xi), so the nodal loads sum exactly to the points' forces and their moment equals
+// that of the forces placed at the anchors x(xi).
+#include "fluid_sph/sph_fluid.hpp"
+#include "fsi/core/interface_mesh.hpp"
+
+#include <vector>
+
+namespace fsi::sph {
+
+class InterfaceBoundary {
+public:
+  /// Lattice points origin + ((i + 1/2) dp, (j + 1/2) dp) from the first edge's node a, kept
+  /// when on the solid side of their nearest edge (at a vertex shared by two edges: of the mean
+  /// of their normals) and nearer than layers dp to it; none behind an open end of the interface
+  /// (4 layers along a straight edge, as the dummies of a wall). Throws InputError for an empty
+  /// mesh, layers < 1 or no point.
+  InterfaceBoundary(const InterfaceMesh& mesh, double dp, int layers = 4);
+
+  std::size_t size() const { return xi_.size(); }
+  const InterfaceMesh& mesh() const { return mesh_; }
+  /// Point p's edge, parent coordinate of its anchor, offset along the chord and depth behind it.
+  std::size_t edge(std::size_t p) const { return edge_[p]; }
+  double xi(std::size_t p) const { return xi_[p]; }
+  double along(std::size_t p) const { return along_[p]; }
+  double depth(std::size_t p) const { return depth_[p]; }
+  /// The points at the reference positions X0, as wall particles of `group`.
+  std::vector<WallPoint> wall_points(int group) const;
+  /// Positions and unit normals (into the fluid) of the points for node positions `x`:
+  /// x(xi) + along t - depth n with (t, n) the chord's tangent and fluid-side normal; the normal
+  /// of a point as near to two edges (a corner's bisector) is the mean of theirs.
+  void place(const std::vector<Vec2>& x, std::vector<Vec2>& position,
+             std::vector<Vec2>& normal) const;
+  /// Per point: sum_k N_k(xi) value_k over its edge's nodes (e.g. nodal accelerations).
+  void interpolate(const std::vector<Vec2>& nodal, std::vector<Vec2>& at_points) const;
+  /// Nodal forces f_k += sum_p N_k(xi_p) F_p (f sized to the node count first, zeroed).
+  void distribute(const std::vector<Vec2>& point_force, std::vector<Vec2>& nodal) const;
+
+private:
+  InterfaceMesh mesh_;
+  std::vector<std::size_t> edge_, tie_; ///< nearest edge; an edge as near (or none)
+  std::vector<double> xi_, along_, depth_;
+};
+
+} // namespace fsi::sph
