@@ -1,5 +1,7 @@
 #include "fluid_sph/sph_fluid.hpp"
 
+#include "wall_terms.hpp"
+
 #include "fsi/core/error.hpp"
 #include "fsi/core/parallel.hpp"
 #include "fsi/core/state_archive.hpp"
@@ -14,20 +16,6 @@ namespace fsi::sph {
 namespace {
 
 constexpr std::size_t none = std::numeric_limits<std::size_t>::max();
-
-/// Low-dissipation limiter (eq. 5, reference code's argument): beta = min(3 max(u / c0, 0), 1)
-/// with u = (v_i - v_j) . e_ij, positive when the pair separates; beta = 1 when it is off.
-inline double limiter(double u, double inv_c0, bool on) {
-  return on ? std::min(3.0 * std::max(u * inv_c0, 0.0), 1.0) : 1.0;
-}
-
-/// The dummy wall particle's pressure jump p_d - p_i = rho_i r (a_prior - a_w) . (-e_ia) (eq. 16),
-/// extrapolated towards every dummy: the reference code's max(0, .) leaves p_d = p_i above the
-/// particle, a vertical force on the side-wall columns that no pressure field balances (it drove a
-/// circulation along the side walls, docs/fluid_sph.md).
-inline double dummy_jump(double rho_i, double r, double dax, double day, double ex, double ey) {
-  return -rho_i * r * (dax * ex + day * ey);
-}
 
 /// Neighbour j at (dx, dy) = x_i - x_j into slot k of a pair set: e_ij, dW_ij, r_ij.
 inline void store_pair(std::uint32_t k, std::uint32_t j, double dx, double dy,
@@ -352,19 +340,12 @@ void SphFluid::first_half(double dt) {
     const double apx = f.apx[i], apy = f.apy[i], rho_i = f.rho[i];
     for (std::uint32_t k = wstart_[i]; k < wstart_[i + 1]; ++k) {
       const std::uint32_t a = wj_[k];
-      const double ex = wex_[k], ey = wey_[k], dWV = wdw_[k] * options_.dp * options_.dp;
-      const double p_d =
-          p_i + dummy_jump(rho_i, wr_[k], apx - walls_.ax[a], apy - walls_.ay[a], ex, ey);
-      // A wall pushes, never pulls: p_i + p_d >= 0 (p_d < 0 above a particle near the surface).
-      const double gx = dWV * ex, gy = dWV * ey, ps = std::max(p_i + p_d, 0.0);
-      fx -= ps * (b00 * gx + b01 * gy);
-      fy -= ps * (b01 * gx + b11 * gy);
-      // Dissipation along the wall normal with u = 2 (v_i - v_w) . n_w.
-      const double nx = walls_.nx[a], ny = walls_.ny[a];
-      const double u = 2.0 * ((vx_i - walls_.vx[a]) * nx + (vy_i - walls_.vy[a]) * ny);
-      const double d = rho0c0 * limiter(u, inv_c0, lim) * u * dWV;
-      fx += d * nx;
-      fy += d * ny;
+      const Vec2 t =
+          wall_term({p_i, rho_i, wr_[k], apx - walls_.ax[a], apy - walls_.ay[a], wex_[k], wey_[k],
+                     wdw_[k] * options_.dp * options_.dp, b00, b01, b11, vx_i - walls_.vx[a],
+                     vy_i - walls_.vy[a], walls_.nx[a], walls_.ny[a], rho0c0, inv_c0, lim});
+      fx += t.x();
+      fy += t.y();
     }
     const double s = f.vol[i] * inv_m;
     f.ax[i] = fx * s + apx;

@@ -3,18 +3,14 @@
 // momentum the fluid gains from them is exactly what they lose (action = -reaction).
 #include "fluid_sph/sph_fluid.hpp"
 
+#include "wall_terms.hpp"
+
 #include "fsi/core/error.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 namespace fsi::sph {
-
-namespace {
-inline double limiter(double u, double inv_c0) { // eq. 5, as first_half
-  return std::min(3.0 * std::max(u * inv_c0, 0.0), 1.0);
-}
-} // namespace
 
 void SphFluid::append_wall_points(const std::vector<WallPoint>& points) {
   const std::size_t first = walls_.size();
@@ -61,15 +57,12 @@ void SphFluid::wall_reaction() {
     for (std::uint32_t k = wstart_[i]; k < wstart_[i + 1]; ++k) {
       const std::uint32_t a = wj_[k];
       if (a < tracked_) continue;
-      const double ex = wex_[k], ey = wey_[k], dWV = wdw_[k] * vw;
-      const double face = -((f.apx[i] - walls_.ax[a]) * ex + (f.apy[i] - walls_.ay[a]) * ey);
-      const double p_d = p_i + rho_i * wr_[k] * std::max(0.0, face); // eq. 16
-      const double gx = dWV * ex, gy = dWV * ey, ps = p_i + p_d;
-      const double nx = walls_.nx[a], ny = walls_.ny[a];
-      const double u = 2.0 * ((vx_i - walls_.vx[a]) * nx + (vy_i - walls_.vy[a]) * ny);
-      const double d = rho0c0 * limiter(u, inv_c0) * u * dWV;
-      wfx_[a - tracked_] -= V_i * (d * nx - ps * (b00 * gx + b01 * gy));
-      wfy_[a - tracked_] -= V_i * (d * ny - ps * (b01 * gx + b11 * gy));
+      const Vec2 t =
+          wall_term({p_i, rho_i, wr_[k], f.apx[i] - walls_.ax[a], f.apy[i] - walls_.ay[a], wex_[k],
+                     wey_[k], wdw_[k] * vw, b00, b01, b11, vx_i - walls_.vx[a], vy_i - walls_.vy[a],
+                     walls_.nx[a], walls_.ny[a], rho0c0, inv_c0, options_.riemann_limiter});
+      wfx_[a - tracked_] -= V_i * t.x();
+      wfy_[a - tracked_] -= V_i * t.y();
     }
   }
 }

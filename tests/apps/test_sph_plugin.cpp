@@ -322,8 +322,10 @@ TEST_CASE("sph interface boundary: fluid thrown at a free rigid body conserves t
 TEST_CASE("sph + fem: the tiny obstacle under the SPH fluid follows it under the EMPS fluid",
           "[apps][sph][coupled]") {
   // Any fluid with any structure: SPH + FEM against EMPS + FEM, CSS at 2e-5 s, to 0.06 s.
-  // Measured corner x at 0.02 .. 0.06 s: SPH +8.1, +6.6, +7.2, -0.6, -3.6 % from EMPS; held to
-  // 10 % (a regression bound, not an accuracy claim).
+  // Measured corner x at 0.02 .. 0.06 s: SPH +12.8, +11.9, +9.6, +4.4, +3.0 % from EMPS with the
+  // dummy pressure of eq. 16 extrapolated to every dummy (the side-wall fix; before it +8.1, +6.6,
+  // +7.2, -0.6, -3.6 %); held to 15 % (a regression bound between two methods, not an accuracy
+  // claim).
   const auto corner = [](const Scene& scene) {
     CoupledModel model(scene);
     const double dt = *scene.time.dt;
@@ -343,6 +345,6 @@ TEST_CASE("sph + fem: the tiny obstacle under the SPH fluid follows it under the
     INFO("t = " << 0.01 * static_cast<double>(i + 1) << " s: emps " << emps[i] << ", sph "
                 << sph[i]);
     CHECK(sph[i] > 1e-3); // the water pushes the obstacle in +x
-    CHECK(std::abs(sph[i] - emps[i]) < 0.10 * emps[i]);
+    CHECK(std::abs(sph[i] - emps[i]) < 0.15 * emps[i]);
   }
 }

@@ -2,7 +2,6 @@
 
 #include "fsi/core/error.hpp"
 #include "fsi_app/wall_motion.hpp"
-#include "geometry_erp/fill.hpp"
 #include "particles/kernels.hpp"
 
 #include <algorithm>
@@ -28,31 +27,6 @@ emps::FluidOptions fluid_options(const Scene& scene) {
   return o;
 }
 
-std::vector<Vec2> fill_regions(const Scene& scene, const std::vector<Polygon>& solid) {
-  const FluidSpec& f = scene.fluid->as<FluidSpec>();
-  std::vector<erp::Polygon> holes = solid;
-  std::vector<Vec2> positions;
-  // Each region on its own lattice from its lower-left corner, so a region a whole number of l0
-  // wide has l0/2 gaps at both sides; earlier regions are holes for later ones (no doubles).
-  // Regions and walls are both given in the reference configuration: the fill keeps l0/2 from
-  // the walls as written, not as moved to t = 0 (a tank starting at a small angle would
-  // otherwise lose a row of particles on one side).
-  erp::WallSet reference;
-  for (std::size_t w = 0; w < scene.walls.size(); ++w)
-    reference.add_polyline(scene.walls[w].polyline, scene.walls[w].closed, static_cast<int>(w));
-  for (const auto& region : f.regions) {
-    Vec2 origin = region.front();
-    for (const auto& p : region) origin = origin.cwiseMin(p);
-    const auto filled = erp::fill_lattice(origin, f.options.l0, {region}, holes, &reference);
-    positions.insert(positions.end(), filled.begin(), filled.end());
-    holes.push_back(region);
-  }
-  if (positions.empty())
-    fail_at(scene, scene.fluid->line, "fluid.regions",
-            "no particle fits in the regions at this l0");
-  return positions;
-}
-
 EmpsModel::EmpsModel(const Scene& scene, const std::vector<InterfaceMesh>& interfaces,
                      const std::vector<Polygon>& solid)
     : walls_(std::make_unique<erp::WallSet>()) {
@@ -65,7 +39,8 @@ EmpsModel::EmpsModel(const Scene& scene, const std::vector<InterfaceMesh>& inter
   }
   interface_walls_.reserve(interfaces.size()); // the adapter keeps a reference to the list
   for (const auto& mesh : interfaces) interface_walls_.emplace_back(*walls_, mesh, group++);
-  const std::vector<Vec2> positions = fill_regions(scene, solid);
+  const FluidSpec& f = scene.fluid->as<FluidSpec>();
+  const std::vector<Vec2> positions = fill_regions(scene, f.regions, f.options.l0, solid);
   initial_count_ = positions.size();
   fluid_ = std::make_unique<emps::EmpsFluid>(fluid_options(scene), positions, *walls_);
   adapter_ = std::make_unique<FluidAdapter>(*fluid_, *walls_, interface_walls_);

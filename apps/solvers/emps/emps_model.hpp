@@ -5,6 +5,7 @@
 #include "emps/emps_spec.hpp"
 #include "fluid_emps/emps_fluid.hpp"
 #include "fsi/core/interface_mesh.hpp"
+#include "fsi_app/fluid_regions.hpp"
 #include "fsi_app/solver_plugin.hpp"
 #include "geometry_erp/interface_walls.hpp"
 #include "geometry_erp/wall_set.hpp"
@@ -16,10 +17,6 @@ namespace fsi::app::emps_plugin {
 /// The solver options of the scene's fluid block; without a domain, the box around walls and
 /// regions with a margin of 4 r_e.
 emps::FluidOptions fluid_options(const Scene& scene);
-
-/// The fluid regions filled with particles on their lattices, the walls and the `solid` areas
-/// kept free. InputError (scene file and line) when no particle fits.
-std::vector<Vec2> fill_regions(const Scene& scene, const std::vector<Polygon>& solid);
 
 class EmpsModel final : public FluidPart {
 public:

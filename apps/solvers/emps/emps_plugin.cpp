@@ -88,7 +88,8 @@ FluidPlugin plugin() {
                   const std::vector<Polygon>& solid) {
     erp::WallSet walls; // the interfaces as ERP walls (eqs. 47-51) check their meshes
     for (const auto& mesh : interfaces) erp::InterfaceWalls(walls, mesh, 0);
-    fill_regions(scene, solid);
+    const FluidSpec& f = scene.fluid->as<FluidSpec>();
+    fill_regions(scene, f.regions, f.options.l0, solid);
   };
   p.footprint = footprint;
   p.fields = {"velocity", "pressure", "pnd", "free_surface"};

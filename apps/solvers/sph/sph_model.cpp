@@ -2,8 +2,8 @@
 
 #include "fsi/core/error.hpp"
 #include "fsi/core/state_archive.hpp"
+#include "fsi_app/fluid_regions.hpp"
 #include "fsi_app/wall_motion.hpp"
-#include "geometry_erp/fill.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -207,10 +207,8 @@ SphModel::SphModel(const Scene& scene, const std::vector<InterfaceMesh>& interfa
                    const std::vector<Polygon>& solid) {
   const SphSpec& f = scene.fluid->as<SphSpec>();
   std::vector<sph::WallPolyline> walls;
-  erp::WallSet reference; // the walls as written: the fill keeps l0/2 from them
   for (std::size_t w = 0; w < scene.walls.size(); ++w) {
     walls.push_back({scene.walls[w].polyline, scene.walls[w].closed, static_cast<int>(w)});
-    reference.add_polyline(scene.walls[w].polyline, scene.walls[w].closed, static_cast<int>(w));
   }
   std::vector<sph::WallPoint> points;
   try {
@@ -222,18 +220,7 @@ SphModel::SphModel(const Scene& scene, const std::vector<InterfaceMesh>& interfa
   } catch (const InputError& e) {
     fail_at(scene, scene.fluid->line, "fluid", e.what());
   }
-  std::vector<erp::Polygon> holes = solid;
-  std::vector<Vec2> positions;
-  for (const auto& region : f.regions) { // each region on its own lattice, as the EMPS fluid
-    Vec2 origin = region.front();
-    for (const auto& p : region) origin = origin.cwiseMin(p);
-    const auto filled = erp::fill_lattice(origin, f.l0, {region}, holes, &reference);
-    positions.insert(positions.end(), filled.begin(), filled.end());
-    holes.push_back(region);
-  }
-  if (positions.empty())
-    fail_at(scene, scene.fluid->line, "fluid.regions",
-            "no particle fits in the regions at this l0");
+  const std::vector<Vec2> positions = fill_regions(scene, f.regions, f.l0, solid);
   initial_count_ = positions.size();
   try {
     fluid_ = std::make_unique<sph::SphFluid>(sph_options(scene), positions, walls, points);

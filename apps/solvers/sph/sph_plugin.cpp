@@ -4,6 +4,9 @@
 
 #include "sph/sph_model.hpp"
 
+#include "fsi/core/error.hpp"
+#include "fsi_app/fluid_regions.hpp"
+
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -92,6 +95,17 @@ FluidPlugin plugin() {
   p.build = [](const Scene& scene, const std::vector<InterfaceMesh>& interfaces,
                const std::vector<Polygon>& solid) -> std::unique_ptr<FluidPart> {
     return std::make_unique<SphModel>(scene, interfaces, solid);
+  };
+  p.validate = [](const Scene& scene, const std::vector<InterfaceMesh>& interfaces,
+                  const std::vector<Polygon>& solid) {
+    const SphSpec& f = scene.fluid->as<SphSpec>();
+    try {
+      sph_options(scene).validate();
+      for (const auto& mesh : interfaces) sph::InterfaceBoundary(mesh, f.l0, f.interface_layers);
+    } catch (const InputError& e) {
+      fail_at(scene, scene.fluid->line, "fluid", e.what());
+    }
+    fill_regions(scene, f.regions, f.l0, solid);
   };
   p.footprint = footprint;
   p.fields = {"velocity", "pressure", "density", "wkgc_indicator"};

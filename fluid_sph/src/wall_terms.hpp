@@ -1,0 +1,47 @@
+#pragma once
+// The one copy of the wall terms of eqs. 15-17 for a fluid particle i and a wall particle a: the
+// fluid's step (first_half) adds them to i, the tracked walls' reaction takes them off a.
+#include "fsi/core/types.hpp"
+
+#include <algorithm>
+
+namespace fsi::sph {
+
+/// Low-dissipation limiter (eq. 5, reference code's argument): beta = min(3 max(u / c0, 0), 1)
+/// with u = (v_i - v_j) . e_ij, positive when the pair separates; beta = 1 when it is off.
+inline double limiter(double u, double inv_c0, bool on) {
+  return on ? std::min(3.0 * std::max(u * inv_c0, 0.0), 1.0) : 1.0;
+}
+
+/// The dummy wall particle's pressure jump p_d - p_i = rho_i r (a_prior - a_w) . (-e_ia) (eq. 16),
+/// extrapolated towards every dummy: the reference code's max(0, .) leaves p_d = p_i above the
+/// particle, a vertical force on the side-wall columns that no pressure field balances (it drove a
+/// circulation along the side walls, docs/fluid_sph.md).
+inline double dummy_jump(double rho_i, double r, double dax, double day, double ex, double ey) {
+  return -rho_i * r * (dax * ex + day * ey);
+}
+
+/// What the wall term of a pair (i, a) needs.
+struct WallPair {
+  double p_i, rho_i, r; ///< pressure and density of i, distance r_ia
+  double dax, day;      ///< a_prior,i - a_w
+  double ex, ey, dWV;   ///< e_ia and dW V_a
+  double b00, b01, b11; ///< B_i (eq. 18)
+  double dvx, dvy;      ///< v_i - v_w
+  double nx, ny;        ///< wall normal
+  double rho0c0, inv_c0;
+  bool limiter_on;
+};
+
+/// The force per unit volume on i from wall particle a: the dummy pressure (eq. 16), pushing only,
+/// and the Riemann dissipation along the wall normal with u = 2 (v_i - v_w) . n_w (eqs. 15, 17).
+inline Vec2 wall_term(const WallPair& w) {
+  const double p_d = w.p_i + dummy_jump(w.rho_i, w.r, w.dax, w.day, w.ex, w.ey);
+  // A wall pushes, never pulls: p_i + p_d >= 0 (p_d < 0 above a particle near the surface).
+  const double gx = w.dWV * w.ex, gy = w.dWV * w.ey, ps = std::max(w.p_i + p_d, 0.0);
+  const double u = 2.0 * (w.dvx * w.nx + w.dvy * w.ny);
+  const double d = w.rho0c0 * limiter(u, w.inv_c0, w.limiter_on) * u * w.dWV;
+  return {-ps * (w.b00 * gx + w.b01 * gy) + d * w.nx, -ps * (w.b01 * gx + w.b11 * gy) + d * w.ny};
+}
+
+} // namespace fsi::sph
