@@ -290,7 +290,8 @@ void cross_check(Section& top, const Scene& scene, std::optional<Section>& fluid
     top.fail("", "the scene has neither a fluid nor a structure: nothing to simulate");
   if (scene.time.courant && !scene.fluid)
     top.fail("time", "courant needs a fluid block (give dt for structure-only scenes)");
-  if (scene.fluid) find_fluid_plugin(scene.fluid->type)->check(scene, *fluid_section);
+  if (scene.fluid)
+    find_fluid_plugin(scene.fluid->type)->check(scene, *fluid_section, probe_sections);
   for (std::size_t i = 0; i < scene.structures.size(); ++i)
     find_structure_plugin(scene.structures[i].type)
         ->check(scene, i, structure_sections[i], probe_sections);

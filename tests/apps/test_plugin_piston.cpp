@@ -173,7 +173,7 @@ void register_pair() {
       spec->pressure = s.real("pressure", Range::any(), "Pa");
       return spec;
     };
-    f.check = [](const Scene&, Section&) {};
+    f.check = [](const Scene&, Section&, std::vector<Section>&) {};
     f.build = [](const Scene& scene, const std::vector<InterfaceMesh>& interfaces,
                  const std::vector<Polygon>&) -> std::unique_ptr<FluidPart> {
       return std::make_unique<PressureFluid>(scene.fluid->as<PressureSpec>().pressure, interfaces);

@@ -64,8 +64,9 @@ struct FluidPlugin {
   std::string name, doc;
   /// Reads the solver's own keys of the fluid block (every key declared there, once).
   std::function<std::shared_ptr<const SolverSpec>(Section&)> read;
-  /// Cross-checks against the whole scene (after every block is read).
-  std::function<void(const Scene&, Section&)> check;
+  /// Cross-checks against the whole scene (after every block is read); `probes` are the probes'
+  /// blocks, for messages about them.
+  std::function<void(const Scene&, Section&, std::vector<Section>& probes)> check;
   /// interfaces: the coupled structures' interfaces (empty for a fluid alone); solid: the areas
   /// they occupy.
   std::function<std::unique_ptr<FluidPart>(const Scene&, const std::vector<InterfaceMesh>&,

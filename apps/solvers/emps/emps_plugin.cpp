@@ -79,7 +79,8 @@ FluidPlugin plugin() {
   p.name = "emps";
   p.doc = "explicit MPS with ERP polygon walls (Mitsume 2023)";
   p.read = read_fluid;
-  p.check = [](const Scene&, Section&) {}; // every rule is local to the block (read_fluid)
+  p.check = [](const Scene&, Section&, std::vector<Section>&) {
+  }; // every rule is local to the block (read_fluid)
   p.build = [](const Scene& scene, const std::vector<InterfaceMesh>& interfaces,
                const std::vector<Polygon>& solid) -> std::unique_ptr<FluidPart> {
     return std::make_unique<EmpsModel>(scene, interfaces, solid);

@@ -30,7 +30,7 @@ bool inside(const sph::SphOptions& o, const Vec2& p) {
 
 // Against the scene: the regions and pressure probes lie in the domain (given or derived), a
 // wall_force probe gives the total only.
-void check(const Scene& scene, Section& s) {
+void check(const Scene& scene, Section& s, std::vector<Section>& probes) {
   const SphSpec& f = scene.fluid->as<SphSpec>();
   const sph::SphOptions o = sph_options(scene);
   for (std::size_t i = 0; i < f.regions.size(); ++i)
@@ -38,13 +38,12 @@ void check(const Scene& scene, Section& s) {
       if (!inside(o, p))
         s.fail(f.domain_max.x() > f.domain_min.x() ? "domain" : "regions",
                "fluid region " + std::to_string(i) + " reaches outside the domain");
-  for (const ProbeSpec& p : scene.output.probes) {
+  for (std::size_t i = 0; i < scene.output.probes.size(); ++i) {
+    const ProbeSpec& p = scene.output.probes[i];
     if (p.quantity == "pressure" && p.point && !inside(o, *p.point))
-      fail_at(scene, p.line, "output.probes.point",
-              "the pressure point is outside the fluid domain");
+      probes[i].fail("point", "the pressure point is outside the fluid domain");
     if ((p.quantity == "wall_force_x" || p.quantity == "wall_force_y") && p.part != "total")
-      fail_at(scene, p.line, "output.probes.part",
-              "fluid type sph gives the total wall force only (part: total)");
+      probes[i].fail("part", "fluid type sph gives the total wall force only (part: total)");
   }
   try {
     o.validate();
