@@ -11,12 +11,11 @@ timeout marker is not run again, so the script resumes. The stability map goes t
 with --doc, into a `<!-- sweep:NAME begin/end -->` block of a Markdown file.
 """
 import argparse
-import concurrent.futures
 import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from sweep import ROOT, SCHEMES, read_probe, run_in_child, status, write_doc  # noqa: E402
+from sweep import ROOT, SCHEMES, read_probe, run_in_child, run_plan, status, write_doc  # noqa: E402
 
 SCENE = "data/scenes/dam_break_elastic_obstacle.yaml"
 SOUND_SPEED = 17.1  # m/s, the scene's c: Courant number C = c dt / l0
@@ -130,16 +129,8 @@ def main():
             plan.append((f"{cond}_{scheme}",
                          [f"time.end={args.end}", "output.interval=0.005"] + overrides +
                          SCHEMES[scheme]))
-    if args.dry_run:
-        for name, overrides in plan:
-            print(name, " ".join(overrides))
+    if not run_plan(plan, args, lambda n, o: run_case(args.out, n, o, args.timeout), "extremes"):
         return
-    os.makedirs(args.out, exist_ok=True)
-    with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
-        jobs = [pool.submit(run_case, args.out, n, o, args.timeout) for n, o in plan]
-        for job in concurrent.futures.as_completed(jobs):
-            name, what = job.result()
-            print(f"extremes: {name}: {what}", flush=True)
     lines = ["| case | settings | result | wall s | steps | iterations mean / max | "
              "corner_x max / min (m) |", "|---|---|---|---|---|---|---|"]
     lines += [row(args.out, n, o, args.timeout) for n, o in plan]

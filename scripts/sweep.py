@@ -211,6 +211,21 @@ def write_doc(path, section, text):
         f.write(doc)
 
 
+def run_plan(plan, args, run, label):
+    """Lists the plan's cases (--dry-run, returns False) or runs them, args.jobs at once."""
+    if args.dry_run:
+        for name, overrides in plan:
+            print(name, " ".join(overrides))
+        return False
+    os.makedirs(args.out, exist_ok=True)
+    with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
+        jobs = [pool.submit(run, name, overrides) for name, overrides in plan]
+        for job in concurrent.futures.as_completed(jobs):
+            name, what = job.result()
+            print(f"{label}: {name}: {what}", flush=True)
+    return True
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__,
                                 formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -231,16 +246,8 @@ def main():
 
     scene = SCENES[args.scene]
     plan = cases(args)
-    if args.dry_run:
-        for name, overrides in plan:
-            print(name, " ".join(overrides))
+    if not run_plan(plan, args, lambda n, o: run_case(scene["file"], args.out, n, o), "sweep"):
         return
-    os.makedirs(args.out, exist_ok=True)
-    with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
-        jobs = [pool.submit(run_case, scene["file"], args.out, n, o) for n, o in plan]
-        for job in concurrent.futures.as_completed(jobs):
-            name, what = job.result()
-            print(f"sweep: {name}: {what}", flush=True)
 
     lines = ["| case | settings | result | wall s | steps | iterations mean / max | "
              f"figure | error |", "|---|---|---|---|---|---|---|---|"]

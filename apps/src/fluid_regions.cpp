@@ -1,9 +1,107 @@
 #include "fsi_app/fluid_regions.hpp"
 
+#include "fsi/core/format.hpp"
 #include "geometry_erp/fill.hpp"
 #include "geometry_erp/wall_set.hpp"
 
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <sstream>
+
 namespace fsi::app {
+
+namespace {
+
+std::vector<Vec2> read_region(Section s) {
+  const bool doc = s.context().documenting();
+  std::vector<Vec2> polygon;
+  if (doc || s.has("polygon")) polygon = s.points("polygon", 3, "closed polygon to fill, m");
+  if (doc || !s.has("polygon")) {
+    const Vec2 lo = s.vec2("min", "lower-left corner of a rectangle to fill, m");
+    const Vec2 hi = s.vec2("max", "upper-right corner, m");
+    if (!doc && (hi.x() <= lo.x() || hi.y() <= lo.y()))
+      s.fail("max", "must lie above and right of min");
+    if (!doc) polygon = {lo, {hi.x(), lo.y()}, hi, {lo.x(), hi.y()}};
+  }
+  s.finish();
+  return polygon;
+}
+
+// Shoelace area of a closed polygon.
+double polygon_area(const Polygon& p) {
+  double twice = 0.0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const Vec2& a = p[i];
+    const Vec2& b = p[(i + 1) % p.size()];
+    twice += a.x() * b.y() - b.x() * a.y();
+  }
+  return 0.5 * std::abs(twice);
+}
+
+} // namespace
+
+ParticleArea read_particle_area(Section& s, double l0) {
+  const bool doc = s.context().documenting();
+  ParticleArea a;
+  for (auto& region :
+       s.list("regions", "areas filled with particles at spacing l0, each on its own "
+                         "lattice from its lower-left corner (l0/2 from its edges)"))
+    a.regions.push_back(read_region(region));
+  if (!doc && a.regions.empty()) s.fail("regions", "at least one region is required");
+  if (auto d = s.block("domain", "particles leaving this box are removed and counted")) {
+    const Vec2 lo = d->vec2("min", "lower-left corner, m");
+    const Vec2 hi = d->vec2("max", "upper-right corner, m");
+    if (!doc && (hi.x() <= lo.x() || hi.y() <= lo.y()))
+      d->fail("max", "must lie above and right of min");
+    a.domain = {lo, hi};
+    d->finish();
+  }
+  if (doc) return a;
+  for (std::size_t i = 0; i < a.regions.size(); ++i) {
+    Vec2 lo = a.regions[i][0], hi = a.regions[i][0];
+    for (const auto& p : a.regions[i]) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+    const Vec2 size = hi - lo;
+    if (l0 > size.minCoeff()) {
+      std::ostringstream msg;
+      msg << "particle spacing " << l0 << " m is larger than fluid region " << i << " (" << size.x()
+          << " x " << size.y() << " m)";
+      s.fail("l0", msg.str());
+    }
+  }
+  return a;
+}
+
+std::pair<Vec2, Vec2> ParticleArea::domain_or_box(const Scene& scene, double margin) const {
+  if (domain) return *domain;
+  Vec2 lo = Vec2::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  for (const auto& w : scene.walls)
+    for (const auto& p : w.polyline) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  for (const auto& r : regions)
+    for (const auto& p : r) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  return {lo - Vec2(margin, margin), hi + Vec2(margin, margin)};
+}
+
+Footprint particle_footprint(const ParticleArea& area, double l0, double bytes_per_particle,
+                             const std::pair<Vec2, Vec2>& domain, const ParticleGrid& grid) {
+  Footprint e;
+  for (const auto& region : area.regions) e.count += polygon_area(region) / (l0 * l0);
+  const Vec2 span = domain.second - domain.first;
+  const double cells = (std::ceil(span.x() / grid.cell) + grid.padding) *
+                       (std::ceil(span.y() / grid.cell) + grid.padding);
+  e.bytes = e.count * bytes_per_particle + cells * grid.bytes_per_cell;
+  e.key = 4 * cells > e.bytes / 2 && area.domain ? "domain" : "l0";
+  e.counts = significant(e.count, 3) + " particles (fluid region area / l0^2) and " +
+             significant(cells, 3) + " cells";
+  // Particle ids and neighbour indices are 32-bit, cell indices int.
+  if (e.count > std::numeric_limits<std::uint32_t>::max())
+    e.overflows.emplace_back("l0", significant(e.count, 3) +
+                                       " particles: more than the 2^32 particle indices hold");
+  if (cells > std::numeric_limits<int>::max())
+    e.overflows.emplace_back("l0", significant(cells, 3) +
+                                       " cells over the fluid domain: more than 2^31");
+  return e;
+}
 
 std::vector<Vec2> fill_regions(const Scene& scene, const std::vector<Polygon>& regions, double l0,
                                const std::vector<Polygon>& solid) {

@@ -1,5 +1,6 @@
 #include "fsi_app/resources.hpp"
 
+#include "fsi/core/format.hpp"
 #include "fsi_app/solver_plugin.hpp"
 
 #include <cmath>
@@ -16,10 +17,7 @@ namespace {
 constexpr double kGiB = 1024.0 * 1024.0 * 1024.0;
 
 std::string gib(double bytes) {
-  std::ostringstream out;
-  out.precision(bytes < 10 * kGiB ? 2 : 3);
-  out << bytes / kGiB;
-  return out.str();
+  return significant(bytes / kGiB, bytes < 10 * kGiB ? 2 : 3);
 }
 
 // The value of `key` in a /proc/meminfo-style file, in bytes (kB lines), or infinity.

@@ -1,6 +1,7 @@
 #include "fsi_app/run.hpp"
 
 #include "fsi/core/error.hpp"
+#include "fsi/core/format.hpp"
 #include "fsi/core/parallel.hpp"
 #include "fsi_app/interrupt.hpp"
 #include "fsi_app/output/checkpoint_file.hpp"
@@ -181,11 +182,7 @@ StateArchive make_archive(const Scene& scene, const std::vector<std::unique_ptr<
 /// Why a checkpoint's step does not fit the scene's: dt = 0 is a Courant-stepped run. Six
 /// digits, or 17 when six would print the two steps alike.
 std::string step_mismatch(double written, double scene) {
-  auto print = [](double v, int digits) {
-    std::ostringstream o;
-    o << std::setprecision(digits) << v;
-    return o.str();
-  };
+  const auto print = significant;
   const int digits = print(written, 6) == print(scene, 6) ? 17 : 6;
   if (written == 0.0)
     return "written by a Courant-stepped run (time.courant); the scene has a fixed time.dt = " +

@@ -54,4 +54,14 @@ const WallSpec& moving_wall(const Scene& scene, const std::string& name, int lin
   return *it;
 }
 
+void check_clamped_motion(const Scene& scene, const std::string& wall, bool clamped,
+                          const std::string& clamps, Section& s) {
+  if (wall.empty()) return;
+  if (!clamped) s.fail("clamped_motion", "needs " + clamps + " to move");
+  const auto w = std::find_if(scene.walls.begin(), scene.walls.end(),
+                              [&](const WallSpec& x) { return x.name == wall; });
+  if (w == scene.walls.end()) s.fail("clamped_motion", "no wall named '" + wall + "'");
+  if (!w->motion) s.fail("clamped_motion", "wall '" + wall + "' has no motion");
+}
+
 } // namespace fsi::app

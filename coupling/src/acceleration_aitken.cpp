@@ -10,7 +10,7 @@
 namespace fsi::coupling {
 
 AitkenRelaxation::AitkenRelaxation(double omega_init, double omega_max)
-    : omega_init_(omega_init), omega_max_(omega_max), omega_(omega_init) {}
+    : Acceleration("aitken"), omega_init_(omega_init), omega_max_(omega_max), omega_(omega_init) {}
 
 void AitkenRelaxation::begin_step(const Eigen::VectorXd& scale) {
   scale_ = scale;

@@ -10,7 +10,7 @@
 namespace fsi::coupling {
 
 IqnIlsAcceleration::IqnIlsAcceleration(double omega_init, int reuse, double filter)
-    : omega_init_(omega_init), reuse_(reuse), filter_(filter) {}
+    : Acceleration("iqn-ils"), omega_init_(omega_init), reuse_(reuse), filter_(filter) {}
 
 void IqnIlsAcceleration::begin_step(const Eigen::VectorXd& scale) {
   scale_ = scale;

@@ -6,14 +6,6 @@
 
 namespace fsi::coupling {
 
-InterfaceMotion InterfaceMotion::zeros(std::size_t n) {
-  InterfaceMotion m;
-  m.x.assign(n, Vec2::Zero());
-  m.v.assign(n, Vec2::Zero());
-  m.a.assign(n, Vec2::Zero());
-  return m;
-}
-
 InterfaceLoads InterfaceLoads::zeros(std::size_t n) {
   InterfaceLoads l;
   l.f.assign(n, Vec2::Zero());
@@ -32,20 +24,12 @@ InterfaceMotion interpolate(const InterfaceMotion& a, const InterfaceMotion& b, 
   return m;
 }
 
-void FluidSolver::write_state(StateArchive&) const {
-  throw RunError("checkpoint: this fluid solver cannot write its state");
+void Participant::write_state(StateArchive&) const {
+  throw RunError("checkpoint: this solver cannot write its state");
 }
 
-void FluidSolver::read_state(const StateArchive&) {
-  throw RunError("checkpoint: this fluid solver cannot read a state");
-}
-
-void StructureSolver::write_state(StateArchive&) const {
-  throw RunError("checkpoint: this structure solver cannot write its state");
-}
-
-void StructureSolver::read_state(const StateArchive&) {
-  throw RunError("checkpoint: this structure solver cannot read a state");
+void Participant::read_state(const StateArchive&) {
+  throw RunError("checkpoint: this solver cannot read a state");
 }
 
 } // namespace fsi::coupling

@@ -3,6 +3,7 @@
 #include "wall_terms.hpp"
 
 #include "fsi/core/error.hpp"
+#include "fsi/core/format.hpp"
 #include "fsi/core/parallel.hpp"
 #include "fsi/core/state_archive.hpp"
 
@@ -31,10 +32,7 @@ inline void store_pair(std::uint32_t k, std::uint32_t j, double dx, double dy,
 }
 
 std::string fmt(double v) {
-  std::ostringstream s;
-  s.precision(6);
-  s << v;
-  return s.str();
+  return significant(v, 6);
 }
 
 } // namespace

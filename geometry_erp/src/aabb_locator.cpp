@@ -69,27 +69,16 @@ void AabbLocator::update() {
   tree_->tree.rebuild(tree_->sources.begin(), tree_->sources.end());
 }
 
-template <class Point> void AabbLocator::run(std::size_t n, Point&& point, WallHits& hits) const {
+void AabbLocator::locate(const QueryPoints& points, WallHits& hits) const {
   const WallSet& walls = *walls_;
   const auto& tree = tree_->tree;
   detail::batch_query(
-      walls, r_e_, second_face_, n, point,
+      walls, r_e_, second_face_, points.size(), points,
       [&](const Vec2& p, const double& bound, auto&& consider) {
         NearestWithin<std::remove_reference_t<decltype(consider)>> traits{p, bound, consider};
         tree.traversal(0, traits);
       },
       hits);
-}
-
-void AabbLocator::query(std::span<const Vec2> x, WallHits& hits) const {
-  run(
-      x.size(), [&](std::size_t i) { return x[i]; }, hits);
-}
-
-void AabbLocator::query(std::span<const double> x, std::span<const double> y,
-                        WallHits& hits) const {
-  run(
-      x.size(), [&](std::size_t i) { return Vec2(x[i], y[i]); }, hits);
 }
 
 } // namespace fsi::erp

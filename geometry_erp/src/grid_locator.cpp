@@ -66,10 +66,10 @@ void GridLocator::update() {
   cell_begin_[0] = 0;
 }
 
-template <class Point> void GridLocator::run(std::size_t n, Point&& point, WallHits& hits) const {
+void GridLocator::locate(const QueryPoints& points, WallHits& hits) const {
   const WallSet& walls = *walls_;
   detail::batch_query(
-      walls, r_e_, second_face_, n, point,
+      walls, r_e_, second_face_, points.size(), points,
       [&](const Vec2& p, const double& bound, auto&& consider) {
         const double fi = std::floor((p.x() - lo_.x()) / h_),
                      fj = std::floor((p.y() - lo_.y()) / h_);
@@ -98,17 +98,6 @@ template <class Point> void GridLocator::run(std::size_t n, Point&& point, WallH
           }
       },
       hits);
-}
-
-void GridLocator::query(std::span<const Vec2> x, WallHits& hits) const {
-  run(
-      x.size(), [&](std::size_t i) { return x[i]; }, hits);
-}
-
-void GridLocator::query(std::span<const double> x, std::span<const double> y,
-                        WallHits& hits) const {
-  run(
-      x.size(), [&](std::size_t i) { return Vec2(x[i], y[i]); }, hits);
 }
 
 } // namespace fsi::erp

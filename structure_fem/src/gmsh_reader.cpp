@@ -351,22 +351,26 @@ void read_elements_41(Lexer& lex, Parsed& p) {
   lex.end_section("$EndElements");
 }
 
-void read_nodes_22(Lexer& lex, Parsed& p) {
-  const long n = lex.integer("the number of nodes");
+// A format 2.2 section: its record count, then each record's tag and the line it is on.
+template <class Record>
+void read_records_22(Lexer& lex, const char* count, const char* tag_name, Record record) {
+  const long n = lex.integer(count);
   for (long i = 0; i < n; ++i) {
-    const long tag = lex.integer("a node tag");
-    const int at = lex.line();
+    const long tag = lex.integer(tag_name);
+    record(tag, lex.line());
+  }
+}
+
+void read_nodes_22(Lexer& lex, Parsed& p) {
+  read_records_22(lex, "the number of nodes", "a node tag", [&](long tag, int at) {
     const double x = lex.real("a node coordinate"), y = lex.real("a node coordinate");
     add_node(lex, p, tag, x, y, lex.real("a node coordinate"), at);
-  }
+  });
   lex.expect("$EndNodes");
 }
 
 void read_elements_22(Lexer& lex, Parsed& p) {
-  const long n = lex.integer("the number of elements");
-  for (long i = 0; i < n; ++i) {
-    const long tag = lex.integer("an element tag");
-    const int at = lex.line();
+  read_records_22(lex, "the number of elements", "an element tag", [&](long tag, int at) {
     const long type = lex.integer("an element type");
     const long n_tags = lex.integer("the number of element tags");
     if (n_tags < 0) lex.fail("element " + std::to_string(tag) + ": negative number of tags");
@@ -378,7 +382,7 @@ void read_elements_22(Lexer& lex, Parsed& p) {
     add_element(
         lex, p, type, tag, tags.size() > 1 ? tags[1] : 0, at,
         [&] { return lex.integer("an element node"); }, physicals, true);
-  }
+  });
   lex.expect("$EndElements");
 }
 

@@ -1,5 +1,6 @@
 #include "structure_fem/linear_solver.hpp"
 
+#include <array>
 #include <sstream>
 
 #include <Eigen/CholmodSupport>
@@ -13,18 +14,13 @@ namespace fsi::fem {
 
 namespace {
 
+// Eigen's ComputationInfo in its order: Success, NumericalIssue, NoConvergence, InvalidInput.
 const char* info_text(Eigen::ComputationInfo info) {
-  switch (info) {
-  case Eigen::Success:
-    return "success";
-  case Eigen::NumericalIssue:
-    return "numerical issue (matrix not positive definite or singular)";
-  case Eigen::NoConvergence:
-    return "no convergence";
-  case Eigen::InvalidInput:
-    return "invalid input";
-  }
-  return "unknown";
+  static constexpr std::array<const char*, 4> text = {
+      "success", "numerical issue (matrix not positive definite or singular)", "no convergence",
+      "invalid input"};
+  const auto i = static_cast<std::size_t>(info);
+  return i < text.size() ? text[i] : "unknown";
 }
 
 void check(Eigen::ComputationInfo info, LinearSolverKind kind, const char* phase) {

@@ -23,7 +23,7 @@ TEST_CASE("apps: water column on a clamped plate settles to the FEM deflection u
   const ProbeSpec& mid_span = scene.output.probes.front();
 
   // Reference: the plate alone, rho g H on the top edge and gravity, solved statically.
-  const double H = fluid.regions.front()[2].y() - fluid.regions.front()[0].y();
+  const double H = fluid.area.regions.front()[2].y() - fluid.area.regions.front()[0].y();
   auto alone = build_structure(scene, plate);
   const double q = fluid.options.density * -scene.gravity.y() * H; // Pa
   alone->set_external_forces(fem::edge_traction_forces(alone->mesh(), "top", Vec2(0.0, -q)));

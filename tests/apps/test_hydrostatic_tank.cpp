@@ -5,6 +5,7 @@
 // no particle ends behind a wall (advance throws) or leaves the tank.
 #include "emps/emps_model.hpp"
 #include "fsi_app/scene.hpp"
+#include "scene_probes.hpp"
 
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -13,16 +14,7 @@ using namespace fsi;
 using namespace fsi::app;
 using fsi::app::emps_plugin::EmpsModel;
 using fsi::app::emps_plugin::FluidSpec;
-
-namespace {
-const ProbeSpec& named(const Scene& scene, const std::string& name) {
-  const ProbeSpec* found = nullptr;
-  for (const auto& p : scene.output.probes)
-    if (p.name == name) found = &p;
-  REQUIRE(found != nullptr);
-  return *found;
-}
-} // namespace
+using fsi::app::test::named;
 
 TEST_CASE("apps: the hydrostatic tank settles: bottom pressure, speed and energy at 10 s",
           "[apps][fluid]") {

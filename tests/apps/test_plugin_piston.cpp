@@ -75,7 +75,6 @@ public:
   PressureFluid(double p, std::vector<InterfaceMesh> interfaces)
       : solver_(p, std::move(interfaces)) {}
   void advance(double, double) override {}
-  void declare(FieldsFile&) const override {}
   void write_frame(FieldsFile&, const std::vector<std::string>&) const override {}
   std::optional<double> probe(const ProbeSpec&) const override { return std::nullopt; }
   void report(JsonObject&) const override {}
@@ -97,7 +96,7 @@ struct PistonSpec final : SolverSpec {
 // M u'' + k u = F for the step's constant load F.
 class Piston final : public StructurePart {
 public:
-  Piston(std::string name, const PistonSpec& s) : name_(std::move(name)), s_(s) {
+  Piston(std::string name, const PistonSpec& s) : StructurePart(std::move(name)), s_(s) {
     mesh_.order = 1;
     mesh_.X0 = {s.top_left + Vec2(s.width, 0.0), s.top_left};
     mesh_.edges = {{0, 0, 1}};
@@ -111,21 +110,19 @@ public:
     u_ = u;
     a_ = (force_ - s_.stiffness * u_) / s_.mass;
   }
-  void declare(FieldsFile&) const override {}
   void write_frame(FieldsFile&, const std::vector<std::string>&) const override {}
   std::optional<double> probe(const ProbeSpec& p) const override {
-    if (p.structure == name_) return u_;
+    if (p.structure == name()) return u_;
     return std::nullopt;
   }
   void report(JsonObject&) const override {}
   void write_state(StateArchive& a) const override {
-    a.put("piston/" + name_, std::vector<double>{u_, v_, a_});
+    a.put("piston/" + name(), std::vector<double>{u_, v_, a_});
   }
   void read_state(const StateArchive& a) override {
-    const auto& s = a.reals("piston/" + name_, 3);
+    const auto& s = a.reals("piston/" + name(), 3);
     u_ = s[0], v_ = s[1], a_ = s[2];
   }
-  const std::string& name() const override { return name_; }
   const InterfaceMesh& interface_mesh() const override { return mesh_; }
   std::vector<Polygon> occupied_area() const override { return {}; }
   coupling::StructureSolver& coupling_solver() override { return adapter_; }
@@ -156,7 +153,6 @@ private:
     std::array<double, 3> saved{};
   };
 
-  std::string name_;
   PistonSpec s_;
   InterfaceMesh mesh_;
   double u_ = 0.0, v_ = 0.0, a_ = 0.0, force_ = 0.0;

@@ -9,6 +9,7 @@
 #include "fsi_app/run.hpp"
 #include "fsi_app/scene.hpp"
 #include "fsi_app/solver_plugin.hpp"
+#include "scene_probes.hpp"
 #include "sph/sph_model.hpp"
 
 #include <catch2/catch.hpp>
@@ -21,17 +22,10 @@
 using namespace fsi;
 using namespace fsi::app;
 using fsi::app::sph_plugin::SphModel;
+using fsi::app::test::named;
 namespace fs = std::filesystem;
 
 namespace {
-
-const ProbeSpec& named(const Scene& scene, const std::string& name) {
-  const ProbeSpec* found = nullptr;
-  for (const auto& p : scene.output.probes)
-    if (p.name == name) found = &p;
-  REQUIRE(found != nullptr);
-  return *found;
-}
 
 std::string error_of(const std::string& text, const std::vector<std::string>& overrides = {}) {
   try {
@@ -326,25 +320,5 @@ TEST_CASE("sph + fem: the tiny obstacle under the SPH fluid follows it under the
   // dummy pressure of eq. 16 extrapolated to every dummy (the side-wall fix; before it +8.1, +6.6,
   // +7.2, -0.6, -3.6 %); held to 15 % (a regression bound between two methods, not an accuracy
   // claim).
-  const auto corner = [](const Scene& scene) {
-    CoupledModel model(scene);
-    const double dt = *scene.time.dt;
-    std::vector<double> out;
-    for (int k = 0; k < 3000; ++k) {
-      model.advance(k * dt, dt);
-      if ((k + 1) % 500 == 0) out.push_back(*model.probe(scene.output.probes.front()));
-    }
-    return out;
-  };
-  const auto emps = corner(
-      load_scene(FSI_TEST_DATA "/tiny_coupled.yaml", {"coupling.scheme=css", "time.end=0.06"}));
-  const auto sph = corner(load_scene(FSI_TEST_DATA "/tiny_coupled_sph.yaml", {}));
-  REQUIRE(emps.size() == 6);
-  REQUIRE(sph.size() == 6);
-  for (std::size_t i = 1; i < emps.size(); ++i) { // t = 0.02 .. 0.06 s
-    INFO("t = " << 0.01 * static_cast<double>(i + 1) << " s: emps " << emps[i] << ", sph "
-                << sph[i]);
-    CHECK(sph[i] > 1e-3); // the water pushes the obstacle in +x
-    CHECK(std::abs(sph[i] - emps[i]) < 0.15 * emps[i]);
-  }
+  test::check_tiny_obstacle_follows(FSI_TEST_DATA "/tiny_coupled_sph.yaml", {}, 0.15);
 }

@@ -30,8 +30,8 @@ public:
   virtual void write_state(StateArchive& archive) const = 0;
   /// Throws InputError (naming the key) when the archive does not fit this model.
   virtual void read_state(const StateArchive& archive) = 0;
-  /// Declares static data (mesh connectivity) once, before the first frame.
-  virtual void declare(FieldsFile& file) const = 0;
+  /// Declares static data (mesh connectivity) once, before the first frame (default: none).
+  virtual void declare(FieldsFile& /*file*/) const {}
   /// Writes this model's grids for the current frame; `fields` lists the requested fields.
   virtual void write_frame(FieldsFile& file, const std::vector<std::string>& fields) const = 0;
   /// The probe's current value if this model owns it.

@@ -102,8 +102,8 @@ struct CheckpointSpec {
 struct Scene {
   std::filesystem::path path;
   std::string name;
-  Vec2 gravity = Vec2::Zero();
   TimeSpec time;
+  Vec2 gravity = Vec2::Zero();
   OutputSpec output;
   std::optional<FluidBlock> fluid;
   std::vector<WallSpec> walls;

@@ -35,12 +35,17 @@ public:
 /// A structure in a run: stand-alone, or the coupler's S through the interface it describes.
 class StructurePart : public Model {
 public:
-  virtual const std::string& name() const = 0;
+  explicit StructurePart(std::string name) : name_(std::move(name)) {}
+  /// The structure's name in the scene (structures[].name).
+  const std::string& name() const { return name_; }
   /// The coupling interface (its wetted boundary), in the reference configuration.
   virtual const InterfaceMesh& interface_mesh() const = 0;
   /// The area the structure occupies, kept free of fluid particles.
   virtual std::vector<Polygon> occupied_area() const = 0;
   virtual coupling::StructureSolver& coupling_solver() = 0;
+
+private:
+  std::string name_;
 };
 
 /// Memory a part needs, for the up-front check (apps/src/resources.cpp).
@@ -60,6 +65,7 @@ struct StructureOutline {
   std::vector<Polygon> occupied;
 };
 
+/// A plug-in's functions and names, in this order (each plug-in's plugin() lists them so).
 struct FluidPlugin {
   std::string name, doc;
   /// Reads the solver's own keys of the fluid block (every key declared there, once).
@@ -81,6 +87,7 @@ struct FluidPlugin {
   std::vector<std::string> probe_quantities; ///< probes it answers (without a `structure`)
 };
 
+/// As FluidPlugin: the functions and names in this order.
 struct StructurePlugin {
   std::string name, doc;
   std::function<std::shared_ptr<const SolverSpec>(Section&)> read;
@@ -95,6 +102,18 @@ struct StructurePlugin {
   std::vector<std::string> fields;
   std::vector<std::string> probe_quantities; ///< probes naming a structure of this type
 };
+
+/// `build` of a part whose constructor takes what build is given.
+template <class Part>
+std::unique_ptr<FluidPart> make_fluid_part(const Scene& scene,
+                                           const std::vector<InterfaceMesh>& interfaces,
+                                           const std::vector<Polygon>& solid) {
+  return std::make_unique<Part>(scene, interfaces, solid);
+}
+template <class Part>
+std::unique_ptr<StructurePart> make_structure_part(const Scene& scene, std::size_t index) {
+  return std::make_unique<Part>(scene, scene.structures[index]);
+}
 
 /// The registration lists (apps/solvers/registry.cpp), in registration order; the first entry
 /// is the default type.

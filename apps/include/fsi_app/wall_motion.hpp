@@ -2,6 +2,7 @@
 // The prescribed rigid motion of a scene wall, shared by the walls it moves and by structures
 // clamped to it (structures[].clamped_motion) and probes in its frame (displacement_*_tank).
 #include "fsi_app/scene.hpp"
+#include "fsi_app/scene_reader.hpp"
 #include "geometry_erp/motion.hpp"
 
 #include <memory>
@@ -21,5 +22,10 @@ void check_motion_tables(const Scene& scene);
 /// The wall called `name`; fail_at(line, key) if there is none or it has no motion.
 const WallSpec& moving_wall(const Scene& scene, const std::string& name, int line,
                             const std::string& key);
+
+/// A structure's `clamped_motion` key in its block `s`: it names a wall with a motion and the
+/// structure has clamps (`clamps`: what they are, for the message) to move with it.
+void check_clamped_motion(const Scene& scene, const std::string& wall, bool clamped,
+                          const std::string& clamps, Section& s);
 
 } // namespace fsi::app

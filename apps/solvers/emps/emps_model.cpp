@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <tuple>
 
 namespace fsi::app::emps_plugin {
 
@@ -14,16 +15,7 @@ emps::FluidOptions fluid_options(const Scene& scene) {
   const FluidSpec& f = scene.fluid->as<FluidSpec>();
   emps::FluidOptions o = f.options;
   o.gravity = scene.gravity;
-  if (!f.domain_given) { // walls and regions, with a margin
-    Vec2 lo = Vec2::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
-    for (const auto& w : scene.walls)
-      for (const auto& p : w.polyline) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
-    for (const auto& r : f.regions)
-      for (const auto& p : r) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
-    const double margin = 4.0 * o.r_e();
-    o.domain_min = lo - Vec2(margin, margin);
-    o.domain_max = hi + Vec2(margin, margin);
-  }
+  std::tie(o.domain_min, o.domain_max) = f.area.domain_or_box(scene, 4.0 * o.r_e());
   return o;
 }
 
@@ -40,7 +32,7 @@ EmpsModel::EmpsModel(const Scene& scene, const std::vector<InterfaceMesh>& inter
   interface_walls_.reserve(interfaces.size()); // the adapter keeps a reference to the list
   for (const auto& mesh : interfaces) interface_walls_.emplace_back(*walls_, mesh, group++);
   const FluidSpec& f = scene.fluid->as<FluidSpec>();
-  const std::vector<Vec2> positions = fill_regions(scene, f.regions, f.options.l0, solid);
+  const std::vector<Vec2> positions = fill_regions(scene, f.area.regions, f.options.l0, solid);
   initial_count_ = positions.size();
   fluid_ = std::make_unique<emps::EmpsFluid>(fluid_options(scene), positions, *walls_);
   adapter_ = std::make_unique<FluidAdapter>(*fluid_, *walls_, interface_walls_);
@@ -68,15 +60,11 @@ void EmpsModel::write_frame(FieldsFile& file, const std::vector<std::string>& fi
     v_[2 * i] = p.vx[i], v_[2 * i + 1] = p.vy[i];
     flag_[i] = p.surface[i];
   }
-  auto wanted = [&](const char* f) {
-    return std::find(fields.begin(), fields.end(), f) != fields.end();
-  };
-  std::vector<GridField> out;
-  if (wanted("velocity")) out.push_back({"velocity", 2, v_.data()});
-  if (wanted("pressure")) out.push_back({"pressure", 1, p.p.data()});
-  if (wanted("pnd")) out.push_back({"pnd", 1, p.pnd.data()});
-  if (wanted("free_surface")) out.push_back({"free_surface", 1, flag_.data()});
-  file.write_grid("particles", xy_, out);
+  file.write_grid("particles", xy_,
+                  select_fields(fields, {{"velocity", 2, v_.data()},
+                                         {"pressure", 1, p.p.data()},
+                                         {"pnd", 1, p.pnd.data()},
+                                         {"free_surface", 1, flag_.data()}}));
 }
 
 std::optional<double> EmpsModel::probe(const ProbeSpec& probe) const {

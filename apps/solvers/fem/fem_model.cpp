@@ -186,7 +186,7 @@ private:
 };
 
 FemModel::FemModel(const Scene& scene, const StructureBlock& block)
-    : name_(block.name), structure_(build_structure(scene, block)),
+    : StructurePart(block.name), structure_(build_structure(scene, block)),
       interface_(fem::interface_of(structure_->mesh(), block.as<StructureSpec>().interface)),
       frame_(tank_frame(scene, block)), adapter_(std::make_unique<Adapter>(*this)) {
   for (const auto& p : scene.output.probes)
@@ -217,7 +217,7 @@ void FemModel::advance(double /*time*/, double dt) {
 void FemModel::declare(FieldsFile& file) const {
   std::vector<std::int64_t> t6;
   for (const auto& e : structure_->mesh().elements) t6.insert(t6.end(), e.begin(), e.end());
-  file.add_mesh(name_, t6);
+  file.add_mesh(name(), t6);
 }
 
 void FemModel::write_frame(FieldsFile& file, const std::vector<std::string>& fields) const {
@@ -226,14 +226,10 @@ void FemModel::write_frame(FieldsFile& file, const std::vector<std::string>& fie
   xy.reserve(2 * x.size());
   for (const auto& p : x) xy.push_back(p.x()), xy.push_back(p.y());
   const fem::Vector von_mises = structure_->von_mises();
-  auto wanted = [&](const char* f) {
-    return std::find(fields.begin(), fields.end(), f) != fields.end();
-  };
-  std::vector<GridField> out;
-  if (wanted("displacement")) out.push_back({"displacement", 2, structure_->displacement().data()});
-  if (wanted("velocity")) out.push_back({"velocity", 2, structure_->velocity().data()});
-  if (wanted("von_mises")) out.push_back({"von_mises", 1, von_mises.data()});
-  file.write_grid(name_, xy, out);
+  file.write_grid(name(), xy,
+                  select_fields(fields, {{"displacement", 2, structure_->displacement().data()},
+                                         {"velocity", 2, structure_->velocity().data()},
+                                         {"von_mises", 1, von_mises.data()}}));
 }
 
 std::optional<double> FemModel::probe(const ProbeSpec& probe) const {
@@ -255,7 +251,7 @@ std::optional<double> FemModel::probe(const ProbeSpec& probe) const {
 }
 
 void FemModel::write_state(StateArchive& archive) const {
-  const std::string prefix = "structures/" + name_ + "/";
+  const std::string prefix = "structures/" + name() + "/";
   structure_->write_state(archive, prefix);
   archive.put("run/" + prefix + "newton",
               std::vector<std::int64_t>{newton_iterations_, steps_, newton_max_});
@@ -265,7 +261,7 @@ void FemModel::write_state(StateArchive& archive) const {
 }
 
 void FemModel::read_state(const StateArchive& archive) {
-  const std::string prefix = "structures/" + name_ + "/";
+  const std::string prefix = "structures/" + name() + "/";
   structure_->read_state(archive, prefix);
   const auto& counts = archive.integers("run/" + prefix + "newton", 3);
   newton_iterations_ = counts[0], steps_ = counts[1], newton_max_ = static_cast<int>(counts[2]);
@@ -287,7 +283,7 @@ void FemModel::report(JsonObject& run) const {
       .add("steps_with_newton_halvings", static_cast<long long>(steps_with_halvings_))
       .add("substepped_steps", static_cast<long long>(substepped_steps_))
       .add("substeps", static_cast<long long>(substeps_));
-  run.add("structure_" + name_, s);
+  run.add("structure_" + name(), s);
 }
 
 } // namespace fsi::app::fem_plugin

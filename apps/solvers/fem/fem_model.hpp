@@ -50,7 +50,6 @@ public:
   /// The structure and its Newton counters under "structures/<name>/", coupled or not.
   void write_state(StateArchive& archive) const override;
   void read_state(const StateArchive& archive) override;
-  const std::string& name() const override { return name_; }
   const InterfaceMesh& interface_mesh() const override { return interface_.mesh; }
   std::vector<Polygon> occupied_area() const override;
   coupling::StructureSolver& coupling_solver() override;
@@ -62,7 +61,6 @@ public:
 
 private:
   class Adapter;
-  std::string name_;
   std::unique_ptr<fem::Structure> structure_;
   fem::FeInterface interface_;
   std::optional<TankFrame> frame_; // the clamped_motion wall's motion (tank-frame probes)

@@ -3,6 +3,8 @@
 #include "fem/fem_plugin.hpp"
 
 #include "fem/fem_model.hpp"
+#include "fsi/core/format.hpp"
+#include "fsi_app/wall_motion.hpp"
 
 #include <algorithm>
 #include <limits>
@@ -14,10 +16,7 @@ namespace fsi::app::fem_plugin {
 namespace {
 
 std::string count(double n) {
-  std::ostringstream out;
-  out.precision(3);
-  out << n;
-  return out.str();
+  return significant(n, 3);
 }
 
 // A structured T6 rectangle has (2 nx + 1)(2 ny + 1) nodes on a regular grid.
@@ -57,14 +56,7 @@ void check(const Scene& scene, std::size_t index, Section& s, std::vector<Sectio
     for (const auto& l : st.loads)
       if (!tags.count(l.boundary)) s.fail("loads", "unknown boundary tag '" + l.boundary + "'");
   }
-  if (!st.clamped_motion.empty()) {
-    if (st.clamped.empty()) s.fail("clamped_motion", "needs clamped boundary tags to move");
-    const auto w = std::find_if(scene.walls.begin(), scene.walls.end(),
-                                [&](const WallSpec& x) { return x.name == st.clamped_motion; });
-    if (w == scene.walls.end())
-      s.fail("clamped_motion", "no wall named '" + st.clamped_motion + "'");
-    if (!w->motion) s.fail("clamped_motion", "wall '" + st.clamped_motion + "' has no motion");
-  }
+  check_clamped_motion(scene, st.clamped_motion, !st.clamped.empty(), "clamped boundary tags", s);
   if (scene.fluid && st.interface.empty()) // a fluid and a structure are coupled
     s.fail("interface", "a structure coupled to the fluid needs the boundary tags it is wetted on");
   for (std::size_t i = 0; i < scene.output.probes.size(); ++i) {
@@ -105,28 +97,26 @@ Footprint footprint(const Scene& scene, std::size_t index) {
   return e;
 }
 
+// The mesh (read or generated) and its tags; the outline the part would show.
+StructureOutline validate(const Scene& scene, std::size_t index) {
+  const StructureBlock& block = scene.structures[index];
+  const fem::Mesh mesh = checked_mesh(scene, block);
+  return {fem::interface_of(mesh, block.as<StructureSpec>().interface).mesh,
+          occupied_triangles(mesh)};
+}
+
 } // namespace
 
 StructurePlugin plugin() {
-  StructurePlugin p;
-  p.name = "fem";
-  p.doc = "total-Lagrangian T6 finite elements, Newmark-beta, Newton-Raphson";
-  p.read = read_structure;
-  p.check = check;
-  p.build = [](const Scene& scene, std::size_t index) -> std::unique_ptr<StructurePart> {
-    return std::make_unique<FemModel>(scene, scene.structures[index]);
-  };
-  p.validate = [](const Scene& scene, std::size_t index) {
-    const StructureBlock& block = scene.structures[index];
-    const fem::Mesh mesh = checked_mesh(scene, block);
-    return StructureOutline{fem::interface_of(mesh, block.as<StructureSpec>().interface).mesh,
-                            occupied_triangles(mesh)};
-  };
-  p.footprint = footprint;
-  p.fields = {"displacement", "velocity", "von_mises"};
-  p.probe_quantities = {"displacement_x", "displacement_y", "displacement_x_tank",
-                        "displacement_y_tank"};
-  return p;
+  return {"fem",
+          "total-Lagrangian T6 finite elements, Newmark-beta, Newton-Raphson",
+          read_structure,
+          check,
+          make_structure_part<FemModel>,
+          validate,
+          footprint,
+          {"displacement", "velocity", "von_mises"},
+          {"displacement_x", "displacement_y", "displacement_x_tank", "displacement_y_tank"}};
 }
 
 } // namespace fsi::app::fem_plugin

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <tuple>
 
 namespace fsi::app::sph_plugin {
 
@@ -28,18 +29,7 @@ sph::SphOptions sph_options(const Scene& scene) {
   o.advection_cfl = f.advection_cfl;
   o.acoustic_cfl = f.acoustic_cfl;
   o.damping_time = f.damping_time;
-  o.domain_min = f.domain_min;
-  o.domain_max = f.domain_max;
-  if (f.domain_max.x() <= f.domain_min.x()) { // no domain given: walls and regions, with margin
-    Vec2 lo = Vec2::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
-    for (const auto& w : scene.walls)
-      for (const auto& p : w.polyline) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
-    for (const auto& r : f.regions)
-      for (const auto& p : r) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
-    const double margin = 8.0 * f.l0;
-    o.domain_min = lo - Vec2(margin, margin);
-    o.domain_max = hi + Vec2(margin, margin);
-  }
+  std::tie(o.domain_min, o.domain_max) = f.area.domain_or_box(scene, 8.0 * f.l0);
   return o;
 }
 
@@ -220,7 +210,7 @@ SphModel::SphModel(const Scene& scene, const std::vector<InterfaceMesh>& interfa
   } catch (const InputError& e) {
     fail_at(scene, scene.fluid->line, "fluid", e.what());
   }
-  const std::vector<Vec2> positions = fill_regions(scene, f.regions, f.l0, solid);
+  const std::vector<Vec2> positions = fill_regions(scene, f.area.regions, f.l0, solid);
   initial_count_ = positions.size();
   try {
     fluid_ = std::make_unique<sph::SphFluid>(sph_options(scene), positions, walls, points);
@@ -271,15 +261,11 @@ void SphModel::write_frame(FieldsFile& file, const std::vector<std::string>& fie
     xy_[2 * i] = p.x[i], xy_[2 * i + 1] = p.y[i];
     v_[2 * i] = p.vx[i], v_[2 * i + 1] = p.vy[i];
   }
-  auto wanted = [&](const char* f) {
-    return std::find(fields.begin(), fields.end(), f) != fields.end();
-  };
-  std::vector<GridField> out;
-  if (wanted("velocity")) out.push_back({"velocity", 2, v_.data()});
-  if (wanted("pressure")) out.push_back({"pressure", 1, p.p.data()});
-  if (wanted("density")) out.push_back({"density", 1, p.rho.data()});
-  if (wanted("wkgc_indicator")) out.push_back({"wkgc_indicator", 1, p.det_a.data()});
-  file.write_grid("particles", xy_, out);
+  file.write_grid("particles", xy_,
+                  select_fields(fields, {{"velocity", 2, v_.data()},
+                                         {"pressure", 1, p.p.data()},
+                                         {"density", 1, p.rho.data()},
+                                         {"wkgc_indicator", 1, p.det_a.data()}}));
 }
 
 Vec2 SphModel::wall_force() const {

@@ -28,7 +28,6 @@ public:
   /// The fluid's advection step Dt (its dual criteria; the Courant number is not used): the
   /// run's step holds the acoustic steps that cross it.
   std::optional<double> stable_dt(double courant) const override;
-  void declare(FieldsFile&) const override {}
   void write_frame(FieldsFile& file, const std::vector<std::string>& fields) const override;
   std::optional<double> probe(const ProbeSpec& probe) const override;
   void report(JsonObject& run) const override;

@@ -7,21 +7,9 @@
 #include "fsi/core/error.hpp"
 #include "fsi_app/fluid_regions.hpp"
 
-#include <cmath>
-#include <cstdint>
-#include <limits>
-#include <sstream>
-
 namespace fsi::app::sph_plugin {
 
 namespace {
-
-std::string count(double n) {
-  std::ostringstream out;
-  out.precision(3);
-  out << n;
-  return out.str();
-}
 
 bool inside(const sph::SphOptions& o, const Vec2& p) {
   return p.x() >= o.domain_min.x() && p.x() <= o.domain_max.x() && p.y() >= o.domain_min.y() &&
@@ -33,10 +21,10 @@ bool inside(const sph::SphOptions& o, const Vec2& p) {
 void check(const Scene& scene, Section& s, std::vector<Section>& probes) {
   const SphSpec& f = scene.fluid->as<SphSpec>();
   const sph::SphOptions o = sph_options(scene);
-  for (std::size_t i = 0; i < f.regions.size(); ++i)
-    for (const Vec2& p : f.regions[i])
+  for (std::size_t i = 0; i < f.area.regions.size(); ++i)
+    for (const Vec2& p : f.area.regions[i])
       if (!inside(o, p))
-        s.fail(f.domain_max.x() > f.domain_min.x() ? "domain" : "regions",
+        s.fail(f.area.domain ? "domain" : "regions",
                "fluid region " + std::to_string(i) + " reaches outside the domain");
   for (std::size_t i = 0; i < scene.output.probes.size(); ++i) {
     const ProbeSpec& p = scene.output.probes[i];
@@ -52,65 +40,42 @@ void check(const Scene& scene, Section& s, std::vector<Section>& probes) {
   }
 }
 
-// Shoelace area of a closed polygon.
-double polygon_area(const std::vector<Vec2>& p) {
-  double twice = 0.0;
-  for (std::size_t i = 0; i < p.size(); ++i)
-    twice += p[i].x() * p[(i + 1) % p.size()].y() - p[(i + 1) % p.size()].x() * p[i].y();
-  return 0.5 * std::abs(twice);
-}
-
 // Per fluid particle: 17 registered reals and an index (about 140 B) held twice (the state saved
 // for iterative coupling), about 21 pairs of 36 B (index, e_ij, dW_ij, r_ij), the cell grid's
 // 8 B, sort scratch 8 B and output buffers 32 B; the walls are not counted (a few % more).
 Footprint footprint(const Scene& scene) {
   const SphSpec& f = scene.fluid->as<SphSpec>();
-  Footprint e;
-  for (const auto& region : f.regions) e.count += polygon_area(region) / (f.l0 * f.l0);
   const sph::SphOptions o = sph_options(scene);
-  const double cell = 2.0 * o.h();
-  const Vec2 span = o.domain_max - o.domain_min;
-  const double cells = (std::ceil(span.x() / cell) + 2) * (std::ceil(span.y() / cell) + 2);
-  e.bytes = e.count * (2 * 140 + 21 * 36 + 8 + 8 + 32) + 2 * cells * 4;
-  e.key = 4 * cells > e.bytes / 2 && f.domain_max.x() > f.domain_min.x() ? "domain" : "l0";
-  e.counts =
-      count(e.count) + " particles (fluid region area / l0^2) and " + count(cells) + " cells";
-  if (e.count > std::numeric_limits<std::uint32_t>::max())
-    e.overflows.emplace_back("l0", count(e.count) +
-                                       " particles: more than the 2^32 particle indices hold");
-  if (cells > std::numeric_limits<int>::max())
-    e.overflows.emplace_back("l0", count(cells) + " cells over the fluid domain: more than 2^31");
-  return e;
+  return particle_footprint(f.area, f.l0, 2 * 140 + 21 * 36 + 8 + 8 + 32,
+                            {o.domain_min, o.domain_max}, {2.0 * o.h(), 2, 8});
+}
+
+// The options the fluid accepts, the interfaces' boundary points, the regions filled.
+void validate(const Scene& scene, const std::vector<InterfaceMesh>& interfaces,
+              const std::vector<Polygon>& solid) {
+  const SphSpec& f = scene.fluid->as<SphSpec>();
+  try {
+    sph_options(scene).validate();
+    for (const auto& mesh : interfaces) sph::InterfaceBoundary(mesh, f.l0, f.interface_layers);
+  } catch (const InputError& e) {
+    fail_at(scene, scene.fluid->line, "fluid", e.what());
+  }
+  fill_regions(scene, f.area.regions, f.l0, solid);
 }
 
 } // namespace
 
 FluidPlugin plugin() {
-  FluidPlugin p;
-  p.name = "sph";
-  p.doc = "weakly compressible Riemann-SPH with RKGC, dual-criteria steps (RKGC paper)";
-  p.read = read_sph;
-  p.check = check;
-  p.build = [](const Scene& scene, const std::vector<InterfaceMesh>& interfaces,
-               const std::vector<Polygon>& solid) -> std::unique_ptr<FluidPart> {
-    return std::make_unique<SphModel>(scene, interfaces, solid);
-  };
-  p.validate = [](const Scene& scene, const std::vector<InterfaceMesh>& interfaces,
-                  const std::vector<Polygon>& solid) {
-    const SphSpec& f = scene.fluid->as<SphSpec>();
-    try {
-      sph_options(scene).validate();
-      for (const auto& mesh : interfaces) sph::InterfaceBoundary(mesh, f.l0, f.interface_layers);
-    } catch (const InputError& e) {
-      fail_at(scene, scene.fluid->line, "fluid", e.what());
-    }
-    fill_regions(scene, f.regions, f.l0, solid);
-  };
-  p.footprint = footprint;
-  p.fields = {"velocity", "pressure", "density", "wkgc_indicator"};
-  p.probe_quantities = {"surge_front", "pressure",     "kinetic_energy",
-                        "mean_speed",  "wall_force_x", "wall_force_y"};
-  return p;
+  return {
+      "sph",
+      "weakly compressible Riemann-SPH with RKGC, dual-criteria steps (RKGC paper)",
+      read_sph,
+      check,
+      make_fluid_part<SphModel>,
+      validate,
+      footprint,
+      {"velocity", "pressure", "density", "wkgc_indicator"},
+      {"surge_front", "pressure", "kinetic_energy", "mean_speed", "wall_force_x", "wall_force_y"}};
 }
 
 } // namespace fsi::app::sph_plugin

@@ -4,26 +4,10 @@
 #include "fsi_app/solver_plugin.hpp"
 
 #include <set>
-#include <sstream>
 
 namespace fsi::app::sph_plugin {
 
 namespace {
-
-std::vector<Vec2> read_region(Section s) {
-  const bool doc = s.context().documenting();
-  std::vector<Vec2> polygon;
-  if (doc || s.has("polygon")) polygon = s.points("polygon", 3, "closed polygon to fill, m");
-  if (doc || !s.has("polygon")) {
-    const Vec2 lo = s.vec2("min", "lower-left corner of a rectangle to fill, m");
-    const Vec2 hi = s.vec2("max", "upper-right corner, m");
-    if (!doc && (hi.x() <= lo.x() || hi.y() <= lo.y()))
-      s.fail("max", "must lie above and right of min");
-    if (!doc) polygon = {lo, {hi.x(), lo.y()}, hi, {lo.x(), hi.y()}};
-  }
-  s.finish();
-  return polygon;
-}
 
 // The top-level keys a fluid plug-in declares (its read in documentation mode).
 std::set<std::string> declared_keys(const FluidPlugin& plugin) {
@@ -94,32 +78,10 @@ std::shared_ptr<const SolverSpec> read_sph(Section& s) {
       s.real("damping_time", 0.0, Range::non_negative(),
              "initial damping phase T_d: velocities damped at a rate 20/T_d (1 - t/T_d) "
              "(quiet hydrostatic starts), s");
-  for (auto& region :
-       s.list("regions", "areas filled with particles at spacing l0, each on its own "
-                         "lattice from its lower-left corner (l0/2 from its edges)"))
-    f.regions.push_back(read_region(region));
-  if (!doc && f.regions.empty()) s.fail("regions", "at least one region is required");
-  if (auto d = s.block("domain", "particles leaving this box are removed and counted")) {
-    f.domain_min = d->vec2("min", "lower-left corner, m");
-    f.domain_max = d->vec2("max", "upper-right corner, m");
-    if (!doc && (f.domain_max.x() <= f.domain_min.x() || f.domain_max.y() <= f.domain_min.y()))
-      d->fail("max", "must lie above and right of min");
-    d->finish();
-  }
+  f.area = read_particle_area(s, f.l0);
   if (!doc) {
     if (f.transport_velocity && f.free_surface)
       s.fail("transport_velocity", "needs free_surface: false (eq. 24 is for internal flows)");
-    for (std::size_t i = 0; i < f.regions.size(); ++i) {
-      Vec2 lo = f.regions[i][0], hi = f.regions[i][0];
-      for (const auto& p : f.regions[i]) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
-      const Vec2 size = hi - lo;
-      if (f.l0 > size.minCoeff()) {
-        std::ostringstream msg;
-        msg << "particle spacing " << f.l0 << " m is larger than fluid region " << i << " ("
-            << size.x() << " x " << size.y() << " m)";
-        s.fail("l0", msg.str());
-      }
-    }
   }
   return spec;
 }

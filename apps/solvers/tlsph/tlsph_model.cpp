@@ -87,8 +87,9 @@ private:
 };
 
 TlsphModel::TlsphModel(const Scene& scene, const StructureBlock& block)
-    : name_(block.name), region_(block.as<TlsphSpec>().region), solid_(build_solid(scene, block)),
-      interface_(solid_->interface_mesh()), adapter_(std::make_unique<Adapter>(*this)) {
+    : StructurePart(block.name), region_(block.as<TlsphSpec>().region),
+      solid_(build_solid(scene, block)), interface_(solid_->interface_mesh()),
+      adapter_(std::make_unique<Adapter>(*this)) {
   for (const auto& p : scene.output.probes)
     if (p.structure == block.name)
       probe_particles_.emplace_back(p.name, solid_->nearest_particle(*p.point));
@@ -120,15 +121,11 @@ void TlsphModel::write_frame(FieldsFile& file, const std::vector<std::string>& f
     v_[2 * i] = v.x(), v_[2 * i + 1] = v.y();
   }
   const std::vector<double> von_mises = solid_->von_mises(), det_F = solid_->det_F();
-  auto wanted = [&](const char* f) {
-    return std::find(fields.begin(), fields.end(), f) != fields.end();
-  };
-  std::vector<GridField> out;
-  if (wanted("displacement")) out.push_back({"displacement", 2, u_.data()});
-  if (wanted("velocity")) out.push_back({"velocity", 2, v_.data()});
-  if (wanted("von_mises")) out.push_back({"von_mises", 1, von_mises.data()});
-  if (wanted("det_F")) out.push_back({"det_F", 1, det_F.data()});
-  file.write_grid(name_, xy_, out);
+  file.write_grid(name(), xy_,
+                  select_fields(fields, {{"displacement", 2, u_.data()},
+                                         {"velocity", 2, v_.data()},
+                                         {"von_mises", 1, von_mises.data()},
+                                         {"det_F", 1, det_F.data()}}));
 }
 
 std::optional<double> TlsphModel::probe(const ProbeSpec& probe) const {
@@ -144,17 +141,17 @@ void TlsphModel::report(JsonObject& run) const {
       .add("interface_nodes", static_cast<long long>(interface_.node_count()))
       .add("substeps_mean",
            steps_ ? static_cast<double>(substeps_) / static_cast<double>(steps_) : 0.0);
-  run.add("structure_" + name_, s);
+  run.add("structure_" + name(), s);
 }
 
 void TlsphModel::write_state(StateArchive& archive) const {
-  const std::string prefix = "structures/" + name_ + "/";
+  const std::string prefix = "structures/" + name() + "/";
   solid_->write_state(archive, prefix);
   archive.put("run/" + prefix + "substeps", std::vector<std::int64_t>{steps_, substeps_});
 }
 
 void TlsphModel::read_state(const StateArchive& archive) {
-  const std::string prefix = "structures/" + name_ + "/";
+  const std::string prefix = "structures/" + name() + "/";
   solid_->read_state(archive, prefix);
   const auto& c = archive.integers("run/" + prefix + "substeps", 2);
   steps_ = c[0], substeps_ = c[1];

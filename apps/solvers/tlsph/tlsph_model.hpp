@@ -16,7 +16,6 @@ public:
   TlsphModel(const Scene& scene, const StructureBlock& block);
   ~TlsphModel() override;
   void advance(double time, double dt) override;
-  void declare(FieldsFile&) const override {}
   /// The particles as a point grid named after the structure.
   void write_frame(FieldsFile& file, const std::vector<std::string>& fields) const override;
   /// displacement_x / displacement_y of the particle nearest the probe's point.
@@ -25,7 +24,6 @@ public:
   /// The solid and its counters under "structures/<name>/".
   void write_state(StateArchive& archive) const override;
   void read_state(const StateArchive& archive) override;
-  const std::string& name() const override { return name_; }
   const InterfaceMesh& interface_mesh() const override { return interface_; }
   std::vector<Polygon> occupied_area() const override;
   coupling::StructureSolver& coupling_solver() override;
@@ -34,7 +32,6 @@ public:
 
 private:
   class Adapter;
-  std::string name_;
   Box region_;
   std::unique_ptr<tlsph::TlsphSolid> solid_;
   InterfaceMesh interface_;

@@ -3,6 +3,7 @@
 #include "fsi/core/error.hpp"
 #include "fsi_app/output/text_file.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <fcntl.h>
@@ -432,6 +433,14 @@ double read_frame_time(const std::filesystem::path& h5, int frame) {
     H5Fclose(file);
     throw;
   }
+}
+
+std::vector<GridField> select_fields(const std::vector<std::string>& requested,
+                                     std::vector<GridField> available) {
+  std::erase_if(available, [&](const GridField& f) {
+    return std::find(requested.begin(), requested.end(), f.name) == requested.end();
+  });
+  return available;
 }
 
 } // namespace fsi::app

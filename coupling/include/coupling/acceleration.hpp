@@ -15,31 +15,32 @@
 
 #include <Eigen/Core>
 
+#include "coupling/method.hpp"
+
 namespace fsi {
 class StateArchive;
 }
 
 namespace fsi::coupling {
 
-class Acceleration {
+class Acceleration : public Method {
 public:
-  virtual ~Acceleration() = default;
-  virtual std::string_view name() const = 0;
+  using Method::Method;
 
   /// Start of a coupling step. `scale` holds one positive weight per entry of the coupling vector
   /// (empty: all ones). It may change between steps (for example when dt changes).
-  virtual void begin_step(const Eigen::VectorXd& scale) = 0;
+  virtual void begin_step(const Eigen::VectorXd& /*scale*/) {}
   /// Next input x^{i+1} from the input x^i of evaluation i and its output x~^i = H(x^i).
   virtual void update(const Eigen::VectorXd& x, const Eigen::VectorXd& x_tilde,
                       Eigen::VectorXd& x_next) = 0;
   /// End of the coupling step (converged or abandoned at max_iterations).
-  virtual void end_step(bool converged) = 0;
+  virtual void end_step(bool /*converged*/) {}
   /// Relaxation factor of the last update(); empty if it was not a relaxation x + omega r.
   virtual std::optional<double> relaxation() const = 0;
   /// Checkpoint of what carries over from one coupling step to the next (keys `prefix` + name);
-  /// read_state() continues bitwise. Called between steps only.
-  virtual void write_state(StateArchive& archive, const std::string& prefix) const = 0;
-  virtual void read_state(const StateArchive& archive, const std::string& prefix) = 0;
+  /// read_state() continues bitwise. Called between steps only. Default: nothing carries over.
+  virtual void write_state(StateArchive& /*archive*/, const std::string& /*prefix*/) const {}
+  virtual void read_state(const StateArchive& /*archive*/, const std::string& /*prefix*/) {}
 };
 
 } // namespace fsi::coupling

@@ -14,11 +14,9 @@ namespace fsi::coupling {
 class AitkenRelaxation final : public Acceleration {
 public:
   AitkenRelaxation(double omega_init, double omega_max);
-  std::string_view name() const override { return "aitken"; }
   void begin_step(const Eigen::VectorXd& scale) override;
   void update(const Eigen::VectorXd& x, const Eigen::VectorXd& x_tilde,
               Eigen::VectorXd& x_next) override;
-  void end_step(bool) override {}
   void write_state(StateArchive& archive, const std::string& prefix) const override;
   void read_state(const StateArchive& archive, const std::string& prefix) override;
   std::optional<double> relaxation() const override { return omega_; }

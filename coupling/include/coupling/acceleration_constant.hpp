@@ -6,8 +6,7 @@ namespace fsi::coupling {
 
 class ConstantRelaxation final : public Acceleration {
 public:
-  explicit ConstantRelaxation(double omega) : omega_(omega) {}
-  std::string_view name() const override { return "constant"; }
+  explicit ConstantRelaxation(double omega) : Acceleration("constant"), omega_(omega) {}
   void begin_step(const Eigen::VectorXd&) override {}
   void update(const Eigen::VectorXd& x, const Eigen::VectorXd& x_tilde,
               Eigen::VectorXd& x_next) override {

@@ -22,7 +22,6 @@ namespace fsi::coupling {
 class IqnIlsAcceleration final : public Acceleration {
 public:
   IqnIlsAcceleration(double omega_init, int reuse, double filter);
-  std::string_view name() const override { return "iqn-ils"; }
   void begin_step(const Eigen::VectorXd& scale) override;
   void update(const Eigen::VectorXd& x, const Eigen::VectorXd& x_tilde,
               Eigen::VectorXd& x_next) override;

@@ -5,14 +5,15 @@
 #include <string>
 #include <string_view>
 
+#include "coupling/method.hpp"
+
 namespace fsi::coupling {
 
-class ConvergenceMeasure {
+class ConvergenceMeasure : public Method {
 public:
-  virtual ~ConvergenceMeasure() = default;
-  virtual std::string_view name() const = 0;
+  using Method::Method;
   /// Start of a coupling step: forget r^0.
-  virtual void begin_step() = 0;
+  virtual void begin_step() {}
   /// Record the residual norm ||r^i|| of evaluation i = 0, 1, ... and the norm of the measured
   /// quantity ||x~^i|| (for a round-off floor); true when converged.
   virtual bool measure(double residual_norm, double magnitude) = 0;

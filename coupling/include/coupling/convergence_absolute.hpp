@@ -6,9 +6,8 @@ namespace fsi::coupling {
 
 class AbsoluteConvergence final : public ConvergenceMeasure {
 public:
-  explicit AbsoluteConvergence(double tolerance) : tolerance_(tolerance) {}
-  std::string_view name() const override { return "absolute"; }
-  void begin_step() override {}
+  explicit AbsoluteConvergence(double tolerance)
+      : ConvergenceMeasure("absolute"), tolerance_(tolerance) {}
   bool measure(double residual_norm, double /*magnitude*/) override {
     value_ = residual_norm;
     return residual_norm < tolerance_;

@@ -10,8 +10,8 @@ namespace fsi::coupling {
 
 class RelativeConvergence final : public ConvergenceMeasure {
 public:
-  explicit RelativeConvergence(double tolerance) : tolerance_(tolerance) {}
-  std::string_view name() const override { return "relative"; }
+  explicit RelativeConvergence(double tolerance)
+      : ConvergenceMeasure("relative"), tolerance_(tolerance) {}
   void begin_step() override { first_ = true; }
   bool measure(double residual_norm, double magnitude) override;
   static constexpr double roundoff_floor = 1e-14;

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "fsi/core/node_motion.hpp"
 #include "fsi/core/types.hpp"
 
 namespace fsi {
@@ -20,14 +21,8 @@ class StateArchive;
 namespace fsi::coupling {
 
 /// State of the interface nodes at one instant (eqs. 60-62): current positions x = x0 + u [m],
-/// velocities v [m/s] and accelerations a [m/s^2]. Invariant: x, v, a have the same size.
-struct InterfaceMotion {
-  std::vector<Vec2> x, v, a;
-
-  std::size_t size() const { return x.size(); }
-  /// n nodes, all zero.
-  static InterfaceMotion zeros(std::size_t n);
-};
+/// velocities v [m/s] and accelerations a [m/s^2].
+using InterfaceMotion = NodeMotion;
 
 /// Nodal forces on the structure at the interface nodes (f^{F->S}, eqs. 58-59) [N per unit
 /// thickness]. Sign: the force the fluid exerts ON the structure (= -f_wall summed, eq. 58).
@@ -46,28 +41,20 @@ using LoadFunction = std::function<InterfaceLoads(double t)>;
 /// (1 - s) a + s b, node by node, for x, v and a. Exact at the ends: s = 0 gives a, s = 1 gives b.
 InterfaceMotion interpolate(const InterfaceMotion& a, const InterfaceMotion& b, double s);
 
-/// The fluid solver F (eq. 66): given the wall motion, advance and report the wall loads.
+/// What the coupler drives in either solver.
 ///
-/// Lifecycle driven by the coupler: initialize(); then per step [save_state(); {restore_state();}
-/// set_interface_motion(); advance(); interface_loads()]...; finalize().
-class FluidSolver {
+/// Lifecycle: initialize(); then per step [save_state(); {restore_state();} set the interface
+/// input; advance(); read the output]...; finalize().
+class Participant {
 public:
-  virtual ~FluidSolver() = default;
-
+  virtual ~Participant() = default;
   virtual void initialize() = 0;
-  /// The interface (wall) state at the END of the step that the next advance() computes.
-  virtual void set_interface_motion(const InterfaceMotion& motion) = 0;
-  /// Advance the fluid from t to t + dt [s].
+  /// Advance from t to t + dt [s].
   virtual void advance(double t, double dt) = 0;
-  /// Loads on the structure from the last advance(), projected to the interface nodes
-  /// (eqs. 52-59). Valid until the next advance() or restore_state().
-  virtual const InterfaceLoads& interface_loads() const = 0;
   /// Checkpoint the full solver state; restore_state() returns to it exactly (iterative coupling
   /// re-runs a step). One checkpoint is enough: a new save overwrites the old one.
   virtual void save_state() = 0;
   virtual void restore_state() = 0;
-  /// Largest stable time step [s] if the solver has such a limit (CFL, viscous, ...).
-  virtual std::optional<double> stable_dt() const { return std::nullopt; }
   /// Checkpoint of the whole solver between two steps (everything its next advance() reads), so
   /// that read_state() continues bitwise. Solvers without checkpoints keep the default, which
   /// throws RunError (a run asked for a checkpoint this solver cannot give).
@@ -76,30 +63,29 @@ public:
   virtual void finalize() {}
 };
 
+/// The fluid solver F (eq. 66): given the wall motion, advance and report the wall loads.
+class FluidSolver : public Participant {
+public:
+  /// The interface (wall) state at the END of the step that the next advance() computes.
+  virtual void set_interface_motion(const InterfaceMotion& motion) = 0;
+  /// Loads on the structure from the last advance(), projected to the interface nodes
+  /// (eqs. 52-59). Valid until the next advance() or restore_state().
+  virtual const InterfaceLoads& interface_loads() const = 0;
+  /// Largest stable time step [s] if the solver has such a limit (CFL, viscous, ...).
+  virtual std::optional<double> stable_dt() const { return std::nullopt; }
+};
+
 /// The structure solver S (eq. 67): given the interface loads, advance and report the interface
 /// motion.
 ///
 /// The motion predictor (eqs. 63-65) is not a solver duty: it is computed by the coupler from
 /// interface_motion() (see predictor.hpp).
-class StructureSolver {
+class StructureSolver : public Participant {
 public:
-  virtual ~StructureSolver() = default;
-
-  virtual void initialize() = 0;
   /// Loads acting over the step that the next advance() computes (at its end, t + dt).
   virtual void set_interface_loads(const InterfaceLoads& loads) = 0;
-  /// Advance the structure from t to t + dt [s].
-  virtual void advance(double t, double dt) = 0;
   /// Interface state after the last advance() (after initialize(): the initial state).
   virtual InterfaceMotion interface_motion() const = 0;
-  virtual void save_state() = 0;
-  virtual void restore_state() = 0;
-  /// Checkpoint of the whole solver between two steps (everything its next advance() reads), so
-  /// that read_state() continues bitwise. Solvers without checkpoints keep the default, which
-  /// throws RunError (a run asked for a checkpoint this solver cannot give).
-  virtual void write_state(StateArchive& archive) const;
-  virtual void read_state(const StateArchive& archive);
-  virtual void finalize() {}
 };
 
 } // namespace fsi::coupling

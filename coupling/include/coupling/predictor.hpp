@@ -4,13 +4,13 @@
 #include <string_view>
 
 #include "coupling/interface.hpp"
+#include "coupling/method.hpp"
 
 namespace fsi::coupling {
 
-class Predictor {
+class Predictor : public Method {
 public:
-  virtual ~Predictor() = default;
-  virtual std::string_view name() const = 0;
+  using Method::Method;
   /// Predicted interface state at t^n + dt from the accepted state `current` at t^n.
   virtual InterfaceMotion predict(const InterfaceMotion& current, double dt) const = 0;
 };

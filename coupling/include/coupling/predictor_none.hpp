@@ -6,7 +6,7 @@ namespace fsi::coupling {
 
 class NoPredictor final : public Predictor {
 public:
-  std::string_view name() const override { return "none"; }
+  NoPredictor() : Predictor("none") {}
   InterfaceMotion predict(const InterfaceMotion& current, double dt) const override;
 };
 

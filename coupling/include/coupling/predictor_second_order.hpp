@@ -12,7 +12,7 @@ InterfaceMotion predict_second_order(const InterfaceMotion& current, double dt);
 
 class SecondOrderPredictor final : public Predictor {
 public:
-  std::string_view name() const override { return "second_order"; }
+  SecondOrderPredictor() : Predictor("second_order") {}
   InterfaceMotion predict(const InterfaceMotion& current, double dt) const override {
     return predict_second_order(current, dt);
   }

@@ -100,8 +100,9 @@ protected:
   /// One evaluation of the step with interface input `input` (state at t + dt): exchange and
   /// advance in the scheme's order; return the interface state computed at t + dt.
   virtual InterfaceMotion evaluate(double t, double dt, const InterfaceMotion& input) = 0;
-  /// false: the residual input - output is meaningless (one-way schemes) and reported as 0.
-  virtual bool has_residual() const { return true; }
+  /// true where input - output is the fixed-point residual (eq. 68); false (one-way schemes): it
+  /// is meaningless and reported as 0.
+  virtual bool has_residual() const { return false; }
 
   // --- helpers for subclasses (timed) --------------------------------------------------------
   /// The fluid over [t, t + dt] in options.substeps sub-steps k = 1..m; before sub-step k it gets

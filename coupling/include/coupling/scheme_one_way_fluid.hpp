@@ -18,7 +18,6 @@ protected:
   void read_participants(const StateArchive& archive) override { fluid_.read_state(archive); }
   InterfaceMotion first_input(double t, double dt) override { return prescribed_(t + dt); }
   InterfaceMotion evaluate(double t, double dt, const InterfaceMotion& input) override;
-  bool has_residual() const override { return false; }
 
 private:
   FluidSolver& fluid_;

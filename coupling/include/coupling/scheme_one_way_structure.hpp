@@ -16,7 +16,6 @@ protected:
   void write_participants(StateArchive& archive) const override { structure_.write_state(archive); }
   void read_participants(const StateArchive& archive) override { structure_.read_state(archive); }
   InterfaceMotion evaluate(double t, double dt, const InterfaceMotion& input) override;
-  bool has_residual() const override { return false; }
 
 private:
   StructureSolver& structure_;

@@ -29,6 +29,7 @@ protected:
   InterfaceMotion evaluate(double t, double dt, const InterfaceMotion& input) override {
     return serial_evaluate(fluid_, structure_, t, dt, input);
   }
+  bool has_residual() const override { return true; }
 
 private:
   FluidSolver& fluid_;

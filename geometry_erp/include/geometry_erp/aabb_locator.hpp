@@ -13,12 +13,10 @@ public:
   AabbLocator(const WallSet& walls, double r_e);
   ~AabbLocator() override;
   void update() override;
-  void query(std::span<const Vec2> x, WallHits& hits) const override;
-  void query(std::span<const double> x, std::span<const double> y, WallHits& hits) const override;
 
 private:
   struct Tree; // the CGAL types stay in the source file
-  template <class Point> void run(std::size_t n, Point&& point, WallHits& hits) const;
+  void locate(const QueryPoints& points, WallHits& hits) const override;
   std::unique_ptr<Tree> tree_;
 };
 

@@ -11,13 +11,11 @@ class GridLocator final : public WallLocator {
 public:
   GridLocator(const WallSet& walls, double r_e);
   void update() override;
-  void query(std::span<const Vec2> x, WallHits& hits) const override;
-  void query(std::span<const double> x, std::span<const double> y, WallHits& hits) const override;
 
   double cell_size() const { return h_; }
 
 private:
-  template <class Point> void run(std::size_t n, Point&& point, WallHits& hits) const;
+  void locate(const QueryPoints& points, WallHits& hits) const override;
 
   double h_ = 0.0;
   Vec2 lo_ = Vec2::Zero();

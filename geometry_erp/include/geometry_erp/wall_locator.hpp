@@ -59,6 +59,21 @@ enum class LocatorKind { grid, aabb_tree };
 /// The default back-end (docs/geometry_erp.md gives the measurements behind the choice).
 inline constexpr LocatorKind default_locator = LocatorKind::grid;
 
+/// The particle positions of a query: one array of points, or x and y as separate arrays.
+class QueryPoints {
+public:
+  explicit QueryPoints(std::span<const Vec2> p) : p_(p.data()), n_(p.size()) {}
+  QueryPoints(std::span<const double> x, std::span<const double> y)
+      : x_(x.data()), y_(y.data()), n_(x.size()) {}
+  std::size_t size() const { return n_; }
+  Vec2 operator()(std::size_t i) const { return p_ ? p_[i] : Vec2(x_[i], y_[i]); }
+
+private:
+  const Vec2* p_ = nullptr;
+  const double *x_ = nullptr, *y_ = nullptr;
+  std::size_t n_;
+};
+
 /// A spatial index over the segments of one WallSet, which must outlive it. Call update() after
 /// nodes move or segments are added, before the next query. Queries are const, run through
 /// fsi::parallel_for_balanced and do not allocate once `hits` has the particle count.
@@ -67,10 +82,11 @@ public:
   virtual ~WallLocator() = default;
   /// Rebuilds the index for the current node positions.
   virtual void update() = 0;
-  virtual void query(std::span<const Vec2> x, WallHits& hits) const = 0;
+  void query(std::span<const Vec2> x, WallHits& hits) const { locate(QueryPoints(x), hits); }
   /// Same with particle coordinates as separate arrays, x.size() == y.size().
-  virtual void query(std::span<const double> x, std::span<const double> y,
-                     WallHits& hits) const = 0;
+  void query(std::span<const double> x, std::span<const double> y, WallHits& hits) const {
+    locate(QueryPoints(x, y), hits);
+  }
 
   /// Also report the second face of concave corners (off by default).
   void set_second_face(bool on) { second_face_ = on; }
@@ -80,6 +96,8 @@ public:
 
 protected:
   WallLocator(const WallSet& walls, double r_e) : walls_(&walls), r_e_(r_e) {}
+  /// The back-end's query: the nearest segment within r_e of every point.
+  virtual void locate(const QueryPoints& points, WallHits& hits) const = 0;
   const WallSet* walls_;
   double r_e_;
   bool second_face_ = false;

@@ -8,6 +8,7 @@
 //
 // Nodes are struct-of-arrays: position x, velocity v, acceleration a, all writable every step.
 // Every segment carries a group id chosen by the caller, to tell which source it came from.
+#include "fsi/core/node_motion.hpp"
 #include "fsi/core/types.hpp"
 #include "geometry_erp/motion.hpp"
 
@@ -25,10 +26,7 @@ class StateArchive;
 namespace fsi::erp {
 
 /// Polygon nodes L, struct-of-arrays.
-struct WallNodes {
-  std::vector<Vec2> x, v, a;
-  std::size_t size() const { return x.size(); }
-};
+using WallNodes = NodeMotion;
 
 /// Polygon segments s, struct-of-arrays: node[s] = {a, b}, fluid on the left of a -> b.
 struct WallSegments {

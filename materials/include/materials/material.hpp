@@ -60,42 +60,4 @@ public:
 /// compute E in their own form).
 double von_mises(const Material& law, const Mat2& F, const Mat2& E);
 
-/// Saint Venant–Kirchhoff, W = lambda/2 (tr E)^2 + mu tr(E^2) (eq. 35). Plane stress replaces
-/// lambda by lambda* = 2 lambda mu / (lambda + 2 mu).
-class StVenantKirchhoff final : public Material {
-public:
-  explicit StVenantKirchhoff(const MaterialOptions& options);
-  double energy(const Mat2& E) const override;
-  Mat2 stress(const Mat2& E) const override;
-  Mat3 tangent(const Mat2& E) const override;
-  double stress_33(const Mat2& E) const override;
-  double density() const override { return rho_; }
-  double lambda() const { return lambda_; } ///< the in-plane lambda (lambda* in plane stress)
-  double mu() const { return mu_; }
-
-private:
-  double lambda_, mu_, rho_;
-  bool plane_strain_;
-};
-
-/// Compressible neo-Hookean in plane strain (F33 = 1), with the Lamé constants of E and nu:
-///   W = mu/2 (tr C + 1 - 3) - mu ln J + lambda/2 (ln J)^2,   C = I + 2 E,  J = sqrt(det C),
-///   S = mu (I - C^-1) + lambda ln J C^-1,
-///   dS/dE = lambda C^-1 (x) C^-1 + 2 (mu - lambda ln J) I_{C^-1},
-///   with I_{C^-1}_ijkl = (C^-1_ik C^-1_jl + C^-1_il C^-1_jk) / 2 (Bonet & Wood, Nonlinear
-/// Continuum Mechanics for FEA, sec. 6.4.3). The same as St. Venant–Kirchhoff to first order in E;
-/// W -> infinity as J -> 0.
-class NeoHookean final : public Material {
-public:
-  explicit NeoHookean(const MaterialOptions& options);
-  double energy(const Mat2& E) const override;
-  Mat2 stress(const Mat2& E) const override;
-  Mat3 tangent(const Mat2& E) const override;
-  double stress_33(const Mat2& E) const override;
-  double density() const override { return rho_; }
-
-private:
-  double lambda_, mu_, rho_;
-};
-
 } // namespace fsi::materials

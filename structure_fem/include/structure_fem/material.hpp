@@ -1,6 +1,8 @@
 #pragma once
 // The shared hyperelastic laws (materials/material.hpp) under the FE solver's names.
 #include "materials/material.hpp"
+#include "materials/neo_hookean.hpp"
+#include "materials/st_venant_kirchhoff.hpp"
 
 namespace fsi::fem {
 

@@ -33,6 +33,10 @@ struct GridField {
   const double* data = nullptr; ///< points x components, row-major
 };
 
+/// The fields of `available` that `requested` names, in the order of `available`.
+std::vector<GridField> select_fields(const std::vector<std::string>& requested,
+                                     std::vector<GridField> available);
+
 class FieldsFile {
 public:
   /// Creates (truncates) `h5` and writes `xmf` beside it.
