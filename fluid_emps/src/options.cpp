@@ -1,14 +1,12 @@
 #include "fluid_emps/options.hpp"
 
+#include "particles/fluid_keys.hpp"
+
 namespace fsi::emps {
 
 void visit_options(FluidOptions& o, OptionVisitor& v) {
-  v.required("density", o.density, Range::positive(), "rho, kg/m^3");
-  v.real("viscosity", o.viscosity, Range::non_negative(),
-         "kinematic viscosity nu, m^2/s; 0 skips the viscous loop");
-  v.required("l0", o.l0, Range::positive(), "initial particle spacing, m");
+  particles::visit_fluid_keys(o.density, o.viscosity, o.l0, o.sound_speed, o.damping_time, v);
   v.real("re_over_l0", o.re_over_l0, Range::closed(2.0, 5.0), "effective radius r_e / l0");
-  v.required("sound_speed", o.sound_speed, Range::positive(), "c of eq. 15, m/s");
   v.real("beta", o.beta, Range::left_open(0.0, 1.5), "free-surface threshold, eq. 17");
   v.real("alpha_rep", o.alpha_rep, Range::non_negative(), "repulsive coefficient of eq. 27, N/m^3");
   v.choice("wall_condition", o.wall_condition,
@@ -41,9 +39,6 @@ void visit_options(FluidOptions& o, OptionVisitor& v) {
   v.flag("convex_corners", o.convex_corners,
          "at convex wall corners count the solid's own virtual lattice in pnd and in the wall "
          "pressure term (eqs. 20 and 25 assume a half-plane there; false: as in the paper)");
-  v.real("damping_time", o.damping_time, Range::non_negative(),
-         "initial damping phase T_d: velocities damped at a rate 20/T_d (1 - t/T_d) (quiet "
-         "hydrostatic starts), s");
 }
 
 } // namespace fsi::emps

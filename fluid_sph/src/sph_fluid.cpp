@@ -56,7 +56,7 @@ void SphOptions::validate() const {
   if (transport_velocity && free_surface)
     throw InputError("fluid_sph: transport_velocity = true needs free_surface = false (eq. 24 is "
                      "for internal flows)");
-  if (!(u_ref > 0.0)) fail("u_ref", u_ref, "> 0");
+  if (!(u_ref >= 0.0)) fail("u_ref", u_ref, ">= 0");
   if (!(advection_cfl > 0.0 && advection_cfl <= 1.0))
     fail("advection_cfl", advection_cfl, "(0, 1]");
   if (!(acoustic_cfl > 0.0 && acoustic_cfl <= 1.0)) fail("acoustic_cfl", acoustic_cfl, "(0, 1]");
@@ -479,7 +479,8 @@ void SphFluid::compute_advection_dt() {
         return std::max(v2, four_h * a);
       },
       [](double a, double b) { return std::max(a, b); });
-  const double speed = std::max({std::sqrt(worst), options_.u_ref, options_.viscosity / h_});
+  const double speed =
+      std::max({std::sqrt(worst), options_.u_advection(), options_.viscosity / h_});
   Dt_ = options_.advection_cfl * h_ / speed;
 }
 

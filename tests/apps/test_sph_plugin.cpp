@@ -66,7 +66,7 @@ TEST_CASE("sph plug-in: the EMPS scene's shared keys, another type's keys refuse
   CHECK(o.viscosity == 1.0e-6);
   CHECK(o.correction == sph::Correction::rkgc);
   CHECK(o.h_over_dp == 1.3);
-  CHECK(o.u_ref == 2.0); // sound_speed / 10
+  CHECK(o.u_advection() == 2.0); // u_ref 0: sound_speed / 10
   // The EMPS scene itself with --set fluid.type=sph: its EMPS-only key is named, with its type.
   const std::string emps_only =
       error_of(slurp(FSI_SOURCE_DIR "/data/scenes/dam_break_rigid.yaml"), {"fluid.type=sph"});

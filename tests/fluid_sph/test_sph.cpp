@@ -24,6 +24,7 @@ sph::SphOptions base(double dp) {
   o.c0 = 10.0;
   o.dp = dp;
   o.u_ref = 1.0;
+  o.wkgc_alpha = 0.0;
   o.domain_min = {-1.0, -1.0};
   o.domain_max = {2.0, 2.0};
   return o;

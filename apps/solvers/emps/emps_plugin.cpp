@@ -10,10 +10,11 @@ namespace fsi::app::emps_plugin {
 
 namespace {
 
-// Bytes per fluid particle, array by array (fluid_emps and geometry_erp headers); `capacity` is
-// the neighbour-row length of EmpsFluid.
+// Bytes per fluid particle: the registered particle arrays (emps::Particles), then the solver's
+// other arrays one by one (fluid_emps and geometry_erp headers); `capacity` is the neighbour-row
+// length of EmpsFluid.
 double bytes_per_particle(double capacity) {
-  const double particles = 6 * 8 + 1 + 4;          // Particles SoA: x y vx vy p pnd, surface, id
+  const auto particles = static_cast<double>(emps::Particles().fields.bytes_per_particle());
   const double saved_state = particles;            // EmpsFluid::State for coupling iterations
   const double lattice = 16;                       // fill_lattice positions
   const double neighbours = capacity * 4 + 4 + 16; // index_ rows, count_, x_build_ y_build_

@@ -14,22 +14,9 @@ namespace fsi::app::sph_plugin {
 
 sph::SphOptions sph_options(const Scene& scene) {
   const SphSpec& f = scene.fluid->as<SphSpec>();
-  sph::SphOptions o;
-  o.rho0 = f.density;
-  o.c0 = f.sound_speed;
-  o.dp = f.l0;
-  o.h_over_dp = f.h_over_dp;
-  o.viscosity = f.viscosity;
+  sph::SphOptions o = f.options;
   o.gravity = scene.gravity;
-  o.correction = f.correction == "none" ? sph::Correction::none : sph::Correction::rkgc;
-  o.wkgc_alpha = f.wkgc_alpha;
-  o.free_surface = f.free_surface;
-  o.transport_velocity = f.transport_velocity;
-  o.u_ref = f.u_ref > 0.0 ? f.u_ref : 0.1 * f.sound_speed; // c0 = 10 U_ref
-  o.advection_cfl = f.advection_cfl;
-  o.acoustic_cfl = f.acoustic_cfl;
-  o.damping_time = f.damping_time;
-  std::tie(o.domain_min, o.domain_max) = f.area.domain_or_box(scene, 8.0 * f.l0);
+  std::tie(o.domain_min, o.domain_max) = f.area.domain_or_box(scene, 8.0 * o.dp);
   return o;
 }
 
@@ -203,14 +190,14 @@ SphModel::SphModel(const Scene& scene, const std::vector<InterfaceMesh>& interfa
   std::vector<sph::WallPoint> points;
   try {
     for (std::size_t j = 0; j < interfaces.size(); ++j) {
-      boundaries_.emplace_back(interfaces[j], f.l0, f.interface_layers);
+      boundaries_.emplace_back(interfaces[j], f.options.dp, f.interface_layers);
       const auto p = boundaries_.back().wall_points(static_cast<int>(walls.size() + j));
       points.insert(points.end(), p.begin(), p.end());
     }
   } catch (const InputError& e) {
     fail_at(scene, scene.fluid->line, "fluid", e.what());
   }
-  const std::vector<Vec2> positions = fill_regions(scene, f.area.regions, f.l0, solid);
+  const std::vector<Vec2> positions = fill_regions(scene, f.area.regions, f.options.dp, solid);
   initial_count_ = positions.size();
   try {
     fluid_ = std::make_unique<sph::SphFluid>(sph_options(scene), positions, walls, points);

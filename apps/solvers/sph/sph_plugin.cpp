@@ -40,13 +40,14 @@ void check(const Scene& scene, Section& s, std::vector<Section>& probes) {
   }
 }
 
-// Per fluid particle: 17 registered reals and an index (about 140 B) held twice (the state saved
+// Per fluid particle: the registered arrays (sph::FluidParticles) held twice (the state saved
 // for iterative coupling), about 21 pairs of 36 B (index, e_ij, dW_ij, r_ij), the cell grid's
 // 8 B, sort scratch 8 B and output buffers 32 B; the walls are not counted (a few % more).
 Footprint footprint(const Scene& scene) {
   const SphSpec& f = scene.fluid->as<SphSpec>();
   const sph::SphOptions o = sph_options(scene);
-  return particle_footprint(f.area, f.l0, 2 * 140 + 21 * 36 + 8 + 8 + 32,
+  const auto particles = static_cast<double>(sph::FluidParticles().fields.bytes_per_particle());
+  return particle_footprint(f.area, f.options.dp, 2 * particles + 21 * 36 + 8 + 8 + 32,
                             {o.domain_min, o.domain_max}, {2.0 * o.h(), 2, 8});
 }
 
@@ -56,11 +57,12 @@ void validate(const Scene& scene, const std::vector<InterfaceMesh>& interfaces,
   const SphSpec& f = scene.fluid->as<SphSpec>();
   try {
     sph_options(scene).validate();
-    for (const auto& mesh : interfaces) sph::InterfaceBoundary(mesh, f.l0, f.interface_layers);
+    for (const auto& mesh : interfaces)
+      sph::InterfaceBoundary(mesh, f.options.dp, f.interface_layers);
   } catch (const InputError& e) {
     fail_at(scene, scene.fluid->line, "fluid", e.what());
   }
-  fill_regions(scene, f.area.regions, f.l0, solid);
+  fill_regions(scene, f.area.regions, f.options.dp, solid);
 }
 
 } // namespace
