@@ -29,6 +29,9 @@ sph::SphOptions sph_options(const Scene& scene) {
   o.advection_cfl = f.advection_cfl;
   o.acoustic_cfl = f.acoustic_cfl;
   o.damping_time = f.damping_time;
+  o.riemann_limiter = f.riemann_limiter;
+  o.inflow = f.inflow;
+  o.periodic_x = f.inflow.on();
   std::tie(o.domain_min, o.domain_max) = f.area.domain_or_box(scene, 8.0 * f.l0);
   return o;
 }

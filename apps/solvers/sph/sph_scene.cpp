@@ -78,8 +78,22 @@ std::shared_ptr<const SolverSpec> read_sph(Section& s) {
       s.real("damping_time", 0.0, Range::non_negative(),
              "initial damping phase T_d: velocities damped at a rate 20/T_d (1 - t/T_d) "
              "(quiet hydrostatic starts), s");
+  f.riemann_limiter = s.boolean("riemann_limiter", true,
+                                "eq. 5's low-dissipation limiter beta = min(3 max(u/c0, 0), 1); "
+                                "false: beta = 1 (settling flows, docs/fluid_sph.md)");
+  if (auto in = s.block("inflow", "channel inflow buffer (eqs. 25-26): the domain wraps in x and "
+                                  "the particles in [domain.min.x, + buffer) get the parabola")) {
+    f.inflow.buffer = in->real("buffer", Range::positive(), "buffer length, m (reference: 20 l0)");
+    f.inflow.velocity = in->real("velocity", Range::positive(), "U0, mean over the height, m/s");
+    f.inflow.ramp_time = in->real("ramp_time", 0.0, Range::non_negative(), "t_s of eq. 26, s");
+    f.inflow.y_min = in->real("y_min", Range::any(), "lower channel wall, m");
+    f.inflow.y_max = in->real("y_max", Range::any(), "upper channel wall, m");
+    in->finish();
+  }
   f.area = read_particle_area(s, f.l0);
   if (!doc) {
+    if (f.inflow.on() && !f.area.domain)
+      s.fail("inflow", "needs a domain (its x extent is the period)");
     if (f.transport_velocity && f.free_surface)
       s.fail("transport_velocity", "needs free_surface: false (eq. 24 is for internal flows)");
   }

@@ -2,6 +2,7 @@
 // The SPH fluid's scene block (fluid.type: sph), as the plug-in reads it. Keys that mean what the
 // EMPS fluid's keys mean carry the same names (density, viscosity, l0, sound_speed, regions,
 // domain, damping_time), so one scene runs with either fluid by `--set fluid.type=...`.
+#include "fluid_sph/options.hpp"
 #include "fsi_app/fluid_regions.hpp"
 #include "fsi_app/scene.hpp"
 #include "fsi_app/scene_reader.hpp"
@@ -27,7 +28,9 @@ struct SphSpec final : SolverSpec {
   int interface_layers = 4;            ///< rows of boundary points behind a structure's interface
   bool interface_acceleration = false; ///< the interface's mean acceleration in eq. 16
   double damping_time = 0.0;
-  ParticleArea area; ///< without a domain: walls and regions with a margin of 8 l0
+  bool riemann_limiter = true; ///< eq. 5's limiter; false: beta = 1 (settling flows)
+  sph::Inflow inflow;          ///< channel inflow buffer (the domain then wraps in x)
+  ParticleArea area;           ///< without a domain: walls and regions with a margin of 8 l0
 };
 
 /// Reads the keys of the fluid block (type excepted) into an SphSpec. A key of another fluid

@@ -176,6 +176,7 @@ private:
   void compute_advection_dt();
   void compute_acoustic_dt();
   void move_walls(double dt);
+  void impose_inflow(double t); // the buffer's particles get U(y, t) (fluid_sph/src/inflow.cpp)
   void first_half(double dt);
   void second_half(double dt);
   void guard(long step, double t) const;
