@@ -25,6 +25,9 @@ void visit_options(SphOptions& o, OptionVisitor& v) {
          "reference speed of the advection criterion, m/s (0: sound_speed / 10)");
   v.real("advection_cfl", o.advection_cfl, Range::left_open(0.0, 1.0),
          "advection step Dt = advection_cfl h / max(|v|, sqrt(4 h |a|), u_ref, nu / h)");
+  v.flag("riemann_limiter", o.riemann_limiter,
+         "eq. 5's low-dissipation limiter beta = min(3 max(u/c0, 0), 1); false: beta = 1 (settling "
+         "flows, docs/fluid_sph.md)");
   v.real("acoustic_cfl", o.acoustic_cfl, Range::left_open(0.0, 1.0),
          "acoustic step dt = acoustic_cfl h / max(c0 + |v|, sqrt(4 h |a|)) (sph steps by its own "
          "criteria: time.courant is not used)");

@@ -68,29 +68,22 @@ void SphOptions::validate() const {
   const Vec2 size = domain_max - domain_min;
   if (!(size.x() > 0.0)) fail("domain_max.x - domain_min.x", size.x(), "> 0");
   if (!(size.y() > 0.0)) fail("domain_max.y - domain_min.y", size.y(), "> 0");
+  if (inflow.on()) {
+    if (!periodic_x)
+      throw InputError("fluid_sph: inflow.buffer > 0 needs periodic_x (the channel wraps in x)");
+    if (!(inflow.buffer <= 0.5 * size.x()))
+      fail("inflow.buffer", inflow.buffer, "(0, half the periodic length]");
+    if (!(inflow.velocity > 0.0)) fail("inflow.velocity", inflow.velocity, "> 0");
+    if (!(inflow.ramp_time >= 0.0)) fail("inflow.ramp_time", inflow.ramp_time, ">= 0");
+    if (!(inflow.y_max > inflow.y_min))
+      fail("inflow.y_max - inflow.y_min", inflow.y_max - inflow.y_min, "> 0");
+  }
   const double cut = 2.0 * h();
   if (periodic_x && size.x() < 3.0 * cut)
     fail("periodic length x", size.x(), ">= 3 kernel supports (6 h)");
   if (periodic_y && size.y() < 3.0 * cut)
     fail("periodic length y", size.y(), ">= 3 kernel supports (6 h)");
 }
-
-FluidParticles::FluidParticles()
-    : id(fields.add_index("id")), x(fields.add_real("x")), y(fields.add_real("y")),
-      vx(fields.add_real("vx")), vy(fields.add_real("vy")), rho(fields.add_real("rho")),
-      drho(fields.add_real("drho")), vol(fields.add_real("vol")), b00(fields.add_real("b00")),
-      b01(fields.add_real("b01")), b11(fields.add_real("b11")), apx(fields.add_real("apx")),
-      apy(fields.add_real("apy")), ax(fields.add_real("ax")), ay(fields.add_real("ay")),
-      xb(fields.add_real("xb")), yb(fields.add_real("yb")), p(fields.add_real("p", false)),
-      det_a(fields.add_real("det_a", false)) {}
-
-WallParticles::WallParticles()
-    : group(fields.add_index("group")), x(fields.add_real("x")), y(fields.add_real("y")),
-      x0(fields.add_real("x0")), y0(fields.add_real("y0")), nx(fields.add_real("nx")),
-      ny(fields.add_real("ny")), nx0(fields.add_real("nx0")), ny0(fields.add_real("ny0")),
-      vx(fields.add_real("vx")), vy(fields.add_real("vy")), ax(fields.add_real("ax")),
-      ay(fields.add_real("ay")), xb(fields.add_real("xb")), yb(fields.add_real("yb")),
-      fvx(fields.add_real("fvx")), fvy(fields.add_real("fvy")) {}
 
 std::vector<Vec2> fill_rectangle(const Vec2& lo, const Vec2& hi, double dp) {
   std::vector<Vec2> out;
@@ -252,6 +245,7 @@ void SphFluid::advance(double dt) {
   first_half(dt);
   if (tracked_ < walls_.size()) wall_reaction();
   second_half(dt);
+  if (options_.inflow.on()) impose_inflow(t_ + dt);
   if (options_.damping_time > 0.0 && t_ < options_.damping_time) {
     const double T = options_.damping_time;
     const double keep = std::max(0.0, 1.0 - dt * 20.0 / T * (1.0 - t_ / T));
@@ -630,7 +624,8 @@ void SphFluid::prior_acceleration() {
   parallel_for(f.size(), [&](std::size_t i) {
     double fx = 0.0, fy = 0.0;
     if (mu > 0.0) {
-      // Viscous force 2 mu V_i sum_j V_j (v_i - v_j) dW / (r + 0.01 h) (eq. 3), no-slip walls.
+      // Viscous force 2 mu V_i sum_j V_j (v_i - v_j) dW / (r + 0.01 h) (eq. 3); no-slip walls
+      // with the dummy velocity 2 v_w - v_i (eqs. 15, 17).
       const double vx_i = f.vx[i], vy_i = f.vy[i];
       for (std::uint32_t k = pstart_[i]; k < pstart_[i + 1]; ++k) {
         const std::uint32_t j = pj_[k];
@@ -640,7 +635,7 @@ void SphFluid::prior_acceleration() {
       }
       for (std::uint32_t k = wstart_[i]; k < wstart_[i + 1]; ++k) {
         const std::uint32_t a = wj_[k];
-        const double s = wdw_[k] * vw / (wr_[k] + reg);
+        const double s = wall_viscous_weight(wdw_[k], vw, wr_[k], reg);
         fx += (vx_i - walls_.vx[a]) * s;
         fy += (vy_i - walls_.vy[a]) * s;
       }

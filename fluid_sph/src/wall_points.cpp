@@ -67,8 +67,8 @@ void SphFluid::wall_reaction() {
   }
 }
 
-// The no-slip wall term of prior_acceleration, 2 mu V_i V_a (v_i - v_a) dW / (r + 0.01 h) on i,
-// reversed on a; frozen over the advection step like the fluid's prior acceleration.
+// The no-slip wall term of prior_acceleration, 2 mu V_i 2 (v_i - v_a) dW V_a / (r + 0.01 h) on
+// i, reversed on a; frozen over the advection step like the fluid's prior acceleration.
 void SphFluid::wall_viscous_reaction() {
   const auto& f = fluid_;
   const double mu = options_.rho0 * options_.viscosity, reg = 0.01 * h_;
@@ -80,7 +80,7 @@ void SphFluid::wall_viscous_reaction() {
     for (std::uint32_t k = wstart_[i]; k < wstart_[i + 1]; ++k) {
       const std::uint32_t a = wj_[k];
       if (a < tracked_) continue;
-      const double s = c * wdw_[k] * vw / (wr_[k] + reg);
+      const double s = c * wall_viscous_weight(wdw_[k], vw, wr_[k], reg);
       walls_.fvx[a] -= (f.vx[i] - walls_.vx[a]) * s;
       walls_.fvy[a] -= (f.vy[i] - walls_.vy[a]) * s;
     }

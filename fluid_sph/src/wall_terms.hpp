@@ -21,6 +21,13 @@ inline double dummy_jump(double rho_i, double r, double dax, double day, double 
   return -rho_i * r * (dax * ex + day * ey);
 }
 
+/// The no-slip viscous wall term (eq. 15) of a pair (i, a) is 2 mu V_i (v_i - v_d) this: with the
+/// dummy velocity v_d = 2 v_w - v_i (eq. 17, code form) v_i - v_d = 2 (v_i - v_w), as the
+/// reference code has it; dW V_a / (r + 0.01 h) as the fluid pairs.
+inline double wall_viscous_weight(double dW, double V_a, double r, double reg) {
+  return 2.0 * dW * V_a / (r + reg);
+}
+
 /// What the wall term of a pair (i, a) needs.
 struct WallPair {
   double p_i, rho_i, r; ///< pressure and density of i, distance r_ia

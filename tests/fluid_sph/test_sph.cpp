@@ -4,6 +4,7 @@
 #include "fsi/core/error.hpp"
 #include "fsi/core/parallel.hpp"
 #include "fsi/core/state_archive.hpp"
+#include "same_state.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -308,17 +309,6 @@ sph::SphOptions dam_options(double dp) {
 
 const std::vector<sph::WallPolyline> small_tank{{{{0.0, 0.6}, {0.0, 0.0}, {0.8, 0.0}, {0.8, 0.6}}}};
 
-bool same_state(const sph::SphFluid& a, const sph::SphFluid& b) {
-  const auto& p = a.particles();
-  const auto& q = b.particles();
-  if (p.size() != q.size() || a.time() != b.time() || a.steps() != b.steps()) return false;
-  for (std::size_t i = 0; i < p.size(); ++i)
-    if (p.x[i] != q.x[i] || p.y[i] != q.y[i] || p.vx[i] != q.vx[i] || p.vy[i] != q.vy[i] ||
-        p.rho[i] != q.rho[i] || p.id[i] != q.id[i])
-      return false;
-  return true;
-}
-
 } // namespace
 
 TEST_CASE("sph: restart from a checkpoint continues bitwise; save/restore too", "[sph][restart]") {
@@ -335,13 +325,13 @@ TEST_CASE("sph: restart from a checkpoint continues bitwise; save/restore too", 
   sph::SphFluid b(dam_options(dp), fluid, small_tank);
   b.read_state(archive, "fluid/");
   for (int s = 0; s < 60; ++s) b.advance(b.next_dt());
-  CHECK(same_state(a, b));
+  CHECK(sph::same_state(a, b));
 
   sph::SphFluid c(dam_options(dp), fluid, small_tank);
   for (int s = 0; s < 10; ++s) c.advance(c.next_dt());
   c.restore(saved);
   for (int s = 0; s < 60; ++s) c.advance(c.next_dt());
-  CHECK(same_state(a, c));
+  CHECK(sph::same_state(a, c));
 }
 
 TEST_CASE("sph: two threads give the sequential run bitwise", "[sph][threads]") {
@@ -354,7 +344,7 @@ TEST_CASE("sph: two threads give the sequential run bitwise", "[sph][threads]") 
   sph::SphFluid b(dam_options(dp), fluid, small_tank);
   for (int s = 0; s < 150; ++s) b.advance(b.next_dt());
   CHECK(num_threads() >= 1);
-  CHECK(same_state(a, b));
+  CHECK(sph::same_state(a, b));
 }
 
 TEST_CASE("sph: guards name the particle, step and time", "[sph][guard]") {

@@ -16,6 +16,7 @@ sph::SphOptions sph_options(const Scene& scene) {
   const SphSpec& f = scene.fluid->as<SphSpec>();
   sph::SphOptions o = f.options;
   o.gravity = scene.gravity;
+  o.periodic_x = o.inflow.on(); // the channel wraps in x
   std::tie(o.domain_min, o.domain_max) = f.area.domain_or_box(scene, 8.0 * o.dp);
   return o;
 }

@@ -48,8 +48,20 @@ std::shared_ptr<const SolverSpec> read_sph(Section& s) {
       "a coupled interface's mean acceleration over the coupling step in the wall's dummy "
       "pressure (eqs. 16-17); false: zero (explicit coupling with a light structure feeds it "
       "back unstably)");
+  if (auto in = s.block("inflow", "channel inflow buffer (eqs. 25-26): the domain wraps in x and "
+                                  "the particles in [domain.min.x, + buffer) get the parabola")) {
+    sph::Inflow& inflow = f.options.inflow;
+    inflow.buffer = in->real("buffer", Range::positive(), "buffer length, m (reference: 20 l0)");
+    inflow.velocity = in->real("velocity", Range::positive(), "U0, mean over the height, m/s");
+    inflow.ramp_time = in->real("ramp_time", 0.0, Range::non_negative(), "t_s of eq. 26, s");
+    inflow.y_min = in->real("y_min", Range::any(), "lower channel wall, m");
+    inflow.y_max = in->real("y_max", Range::any(), "upper channel wall, m");
+    in->finish();
+  }
   f.area = read_particle_area(s, f.options.dp);
   if (!doc) {
+    if (f.options.inflow.on() && !f.area.domain)
+      s.fail("inflow", "needs a domain (its x extent is the period)");
     if (f.options.transport_velocity && f.options.free_surface)
       s.fail("transport_velocity", "needs free_surface: false (eq. 24 is for internal flows)");
   }

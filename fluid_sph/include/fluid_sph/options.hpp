@@ -12,6 +12,23 @@ namespace fsi::sph {
 /// pressure term (eqs. 18-20) with the WKGC weighting (eqs. 21-22).
 enum class Correction { none, rkgc };
 
+/// Channel inflow (RKGC paper sec. 3.2, eqs. 25-26, as the reference code runs Turek-Hron FSI2):
+/// the domain is periodic in x and the fluid particles in the buffer
+/// [domain_min.x, domain_min.x + buffer) get the velocity (U(y, t), 0) after each acoustic step,
+/// U = 1.5 Ubar(t) 4 (y - y_min)(y_max - y) / (y_max - y_min)^2 (eq. 25),
+/// Ubar = 0.5 U0 (1 - cos(pi t / ramp_time)) for t < ramp_time, else U0 (eq. 26).
+/// Particles leaving at domain_max.x come back through the buffer.
+struct Inflow {
+  double buffer = 0.0;             ///< buffer length, m (0: no inflow)
+  double velocity = 0.0;           ///< U0, the mean velocity over the channel height, m/s
+  double ramp_time = 0.0;          ///< t_s of eq. 26, s (0: U0 from the start)
+  double y_min = 0.0, y_max = 0.0; ///< the channel walls, m
+
+  bool on() const { return buffer > 0.0; }
+  /// U(y, t) of eqs. 25-26 (0 outside [y_min, y_max]).
+  double profile(double y, double t) const;
+};
+
 struct SphOptions {
   double rho0 = 1000.0;   ///< reference density, kg/m^3
   double c0 = 0.0;        ///< artificial sound speed of p = c0^2 (rho - rho0) (eq. 2), m/s
@@ -42,6 +59,7 @@ struct SphOptions {
   /// Artificial damping for settling runs (hydrostatic): for t < damping_time the velocities are
   /// damped at rate 20 / T_d (1 - t / T_d) after each acoustic step (0: off).
   double damping_time = 0.0;
+  Inflow inflow; ///< channel inflow buffer (needs periodic_x)
   /// Density guard: a RunError names the particle when rho leaves [lo, hi] rho0.
   double rho_min_factor = 0.5, rho_max_factor = 1.5;
 

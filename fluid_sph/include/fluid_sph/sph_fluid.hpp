@@ -58,27 +58,58 @@ struct WallPoint {
 /// The fluid's struct-of-arrays particles (registered in one FieldSet).
 struct FluidParticles {
   particles::FieldSet fields;
-  std::vector<std::uint32_t>& id;
-  std::vector<double>&x, &y, &vx, &vy, &rho, &drho, &vol;
-  std::vector<double>&b00, &b01, &b11; ///< symmetric correction matrix B~ (eq. 21)
-  std::vector<double>&apx, &apy;       ///< prior acceleration: gravity + viscous, per Dt
-  std::vector<double>&ax, &ay;         ///< total acceleration of the last acoustic step
-  std::vector<double>&xb, &yb;         ///< positions at the last pair build
-  std::vector<double>&p, &det_a;       ///< scratch: pressure; |A_i| (WKGC indicator)
-  FluidParticles();
+  std::vector<std::uint32_t>& id = fields.add_index("id");
+  std::vector<double>& x = fields.add_real("x");
+  std::vector<double>& y = fields.add_real("y");
+  std::vector<double>& vx = fields.add_real("vx");
+  std::vector<double>& vy = fields.add_real("vy");
+  std::vector<double>& rho = fields.add_real("rho");
+  std::vector<double>& drho = fields.add_real("drho");
+  std::vector<double>& vol = fields.add_real("vol");
+  /// Symmetric correction matrix B~ (eq. 21).
+  std::vector<double>& b00 = fields.add_real("b00");
+  std::vector<double>& b01 = fields.add_real("b01");
+  std::vector<double>& b11 = fields.add_real("b11");
+  /// Prior acceleration: gravity + viscous, per Dt.
+  std::vector<double>& apx = fields.add_real("apx");
+  std::vector<double>& apy = fields.add_real("apy");
+  /// Total acceleration of the last acoustic step.
+  std::vector<double>& ax = fields.add_real("ax");
+  std::vector<double>& ay = fields.add_real("ay");
+  /// Positions at the last pair build.
+  std::vector<double>& xb = fields.add_real("xb");
+  std::vector<double>& yb = fields.add_real("yb");
+  /// Scratch (not state): pressure; |A_i| (the WKGC indicator).
+  std::vector<double>& p = fields.add_real("p", false);
+  std::vector<double>& det_a = fields.add_real("det_a", false);
   std::size_t size() const { return fields.size(); }
 };
 
 /// Dummy wall particles (4 layers at dp).
 struct WallParticles {
   particles::FieldSet fields;
-  std::vector<std::uint32_t>& group;
-  std::vector<double>&x, &y, &x0, &y0;     ///< current, reference
-  std::vector<double>&nx, &ny, &nx0, &ny0; ///< unit normal into the fluid, current and reference
-  std::vector<double>&vx, &vy, &ax, &ay;   ///< velocity and acceleration averaged over the step
-  std::vector<double>&xb, &yb;             ///< positions at the last pair build
-  std::vector<double>&fvx, &fvy; ///< tracked walls: viscous force of the fluid on them, per Dt
-  WallParticles();
+  std::vector<std::uint32_t>& group = fields.add_index("group");
+  /// Current and reference positions.
+  std::vector<double>& x = fields.add_real("x");
+  std::vector<double>& y = fields.add_real("y");
+  std::vector<double>& x0 = fields.add_real("x0");
+  std::vector<double>& y0 = fields.add_real("y0");
+  /// Unit normal into the fluid, current and reference.
+  std::vector<double>& nx = fields.add_real("nx");
+  std::vector<double>& ny = fields.add_real("ny");
+  std::vector<double>& nx0 = fields.add_real("nx0");
+  std::vector<double>& ny0 = fields.add_real("ny0");
+  /// Velocity and acceleration averaged over the step.
+  std::vector<double>& vx = fields.add_real("vx");
+  std::vector<double>& vy = fields.add_real("vy");
+  std::vector<double>& ax = fields.add_real("ax");
+  std::vector<double>& ay = fields.add_real("ay");
+  /// Positions at the last pair build.
+  std::vector<double>& xb = fields.add_real("xb");
+  std::vector<double>& yb = fields.add_real("yb");
+  /// Tracked walls: the viscous force of the fluid on them, per Dt.
+  std::vector<double>& fvx = fields.add_real("fvx");
+  std::vector<double>& fvy = fields.add_real("fvy");
   std::size_t size() const { return fields.size(); }
 };
 
@@ -176,6 +207,7 @@ private:
   void compute_advection_dt();
   void compute_acoustic_dt();
   void move_walls(double dt);
+  void impose_inflow(double t); // the buffer's particles get U(y, t) (fluid_sph/src/inflow.cpp)
   void first_half(double dt);
   void second_half(double dt);
   void guard(long step, double t) const;
