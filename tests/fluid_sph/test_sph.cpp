@@ -20,15 +20,13 @@ using Catch::Matchers::WithinRel;
 namespace {
 
 sph::SphOptions base(double dp) {
-  sph::SphOptions o;
-  o.rho0 = 1000.0;
-  o.c0 = 10.0;
-  o.dp = dp;
-  o.u_ref = 1.0;
-  o.wkgc_alpha = 0.0;
-  o.domain_min = {-1.0, -1.0};
-  o.domain_max = {2.0, 2.0};
-  return o;
+  return {.rho0 = 1000.0,
+          .c0 = 10.0,
+          .dp = dp,
+          .wkgc_alpha = 0.0,
+          .u_ref = 1.0,
+          .domain_min = {-1.0, -1.0},
+          .domain_max = {2.0, 2.0}};
 }
 
 /// The unit square, periodic both ways, internal flow with the transport velocity (eq. 24).

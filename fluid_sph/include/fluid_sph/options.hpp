@@ -59,7 +59,7 @@ struct SphOptions {
   /// Artificial damping for settling runs (hydrostatic): for t < damping_time the velocities are
   /// damped at rate 20 / T_d (1 - t / T_d) after each acoustic step (0: off).
   double damping_time = 0.0;
-  Inflow inflow; ///< channel inflow buffer (needs periodic_x)
+  Inflow inflow{}; ///< channel inflow buffer (needs periodic_x)
   /// Density guard: a RunError names the particle when rho leaves [lo, hi] rho0.
   double rho_min_factor = 0.5, rho_max_factor = 1.5;
 

@@ -59,10 +59,8 @@ struct WallPoint {
 struct FluidParticles {
   particles::FieldSet fields;
   std::vector<std::uint32_t>& id = fields.add_index("id");
-  std::vector<double>& x = fields.add_real("x");
-  std::vector<double>& y = fields.add_real("y");
-  std::vector<double>& vx = fields.add_real("vx");
-  std::vector<double>& vy = fields.add_real("vy");
+  std::vector<double>&x = fields.add_real("x"), &y = fields.add_real("y");
+  std::vector<double>&vx = fields.add_real("vx"), &vy = fields.add_real("vy");
   std::vector<double>& rho = fields.add_real("rho");
   std::vector<double>& drho = fields.add_real("drho");
   std::vector<double>& vol = fields.add_real("vol");
@@ -71,14 +69,11 @@ struct FluidParticles {
   std::vector<double>& b01 = fields.add_real("b01");
   std::vector<double>& b11 = fields.add_real("b11");
   /// Prior acceleration: gravity + viscous, per Dt.
-  std::vector<double>& apx = fields.add_real("apx");
-  std::vector<double>& apy = fields.add_real("apy");
+  std::vector<double>&apx = fields.add_real("apx"), &apy = fields.add_real("apy");
   /// Total acceleration of the last acoustic step.
-  std::vector<double>& ax = fields.add_real("ax");
-  std::vector<double>& ay = fields.add_real("ay");
+  std::vector<double>&ax = fields.add_real("ax"), &ay = fields.add_real("ay");
   /// Positions at the last pair build.
-  std::vector<double>& xb = fields.add_real("xb");
-  std::vector<double>& yb = fields.add_real("yb");
+  std::vector<double>&xb = fields.add_real("xb"), &yb = fields.add_real("yb");
   /// Scratch (not state): pressure; |A_i| (the WKGC indicator).
   std::vector<double>& p = fields.add_real("p", false);
   std::vector<double>& det_a = fields.add_real("det_a", false);
@@ -90,26 +85,18 @@ struct WallParticles {
   particles::FieldSet fields;
   std::vector<std::uint32_t>& group = fields.add_index("group");
   /// Current and reference positions.
-  std::vector<double>& x = fields.add_real("x");
-  std::vector<double>& y = fields.add_real("y");
-  std::vector<double>& x0 = fields.add_real("x0");
-  std::vector<double>& y0 = fields.add_real("y0");
+  std::vector<double>&x = fields.add_real("x"), &y = fields.add_real("y");
+  std::vector<double>&x0 = fields.add_real("x0"), &y0 = fields.add_real("y0");
   /// Unit normal into the fluid, current and reference.
-  std::vector<double>& nx = fields.add_real("nx");
-  std::vector<double>& ny = fields.add_real("ny");
-  std::vector<double>& nx0 = fields.add_real("nx0");
-  std::vector<double>& ny0 = fields.add_real("ny0");
+  std::vector<double>&nx = fields.add_real("nx"), &ny = fields.add_real("ny");
+  std::vector<double>&nx0 = fields.add_real("nx0"), &ny0 = fields.add_real("ny0");
   /// Velocity and acceleration averaged over the step.
-  std::vector<double>& vx = fields.add_real("vx");
-  std::vector<double>& vy = fields.add_real("vy");
-  std::vector<double>& ax = fields.add_real("ax");
-  std::vector<double>& ay = fields.add_real("ay");
+  std::vector<double>&vx = fields.add_real("vx"), &vy = fields.add_real("vy");
+  std::vector<double>&ax = fields.add_real("ax"), &ay = fields.add_real("ay");
   /// Positions at the last pair build.
-  std::vector<double>& xb = fields.add_real("xb");
-  std::vector<double>& yb = fields.add_real("yb");
+  std::vector<double>&xb = fields.add_real("xb"), &yb = fields.add_real("yb");
   /// Tracked walls: the viscous force of the fluid on them, per Dt.
-  std::vector<double>& fvx = fields.add_real("fvx");
-  std::vector<double>& fvy = fields.add_real("fvy");
+  std::vector<double>&fvx = fields.add_real("fvx"), &fvy = fields.add_real("fvy");
   std::size_t size() const { return fields.size(); }
 };
 
