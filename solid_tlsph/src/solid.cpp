@@ -442,14 +442,16 @@ void TlsphSolid::compute_stress() {
       [&](std::size_t a) {
         const Mat2 F = deformation_gradient(a);
         F00_[a] = F(0, 0), F01_[a] = F(0, 1), F10_[a] = F(1, 0), F11_[a] = F(1, 1);
+        // An odd-image clamp carries no strain energy: its F (the mirrored field's, one-sided
+        // at the clamp's far side) enters no force and is not guarded.
+        if (imaged(a)) {
+          PB00_[a] = PB01_[a] = PB10_[a] = PB11_[a] = 0.0;
+          return none;
+        }
         const double J = F.determinant();
         if (!(J > 0.0)) { // also NaN
           PB00_[a] = PB01_[a] = PB10_[a] = PB11_[a] = 0.0;
           return a;
-        }
-        if (imaged(a)) { // an odd-image clamp carries no strain energy
-          PB00_[a] = PB01_[a] = PB10_[a] = PB11_[a] = 0.0;
-          return none;
         }
         const Mat2 E = 0.5 * (F.transpose() * F - Mat2::Identity()); // eq. 9
         // eq. 7, P B0 (quadratic: P itself, the correction is in g~_ab)

@@ -148,6 +148,28 @@ inline double mode_shape(double x, double L) {
   return M * (std::cos(k * x) - std::cosh(k * x)) - N * (std::sin(k * x) - std::sinh(k * x));
 }
 
+/// Dynamic relaxation (mass damping 2 omega_1 set in the options) until `measure(s)` (a Vec2)
+/// stops moving: advances in chunks of 1 / omega_1 until each component changes by less than
+/// rtol of its magnitude over two consecutive chunks (critically damped, the change over a
+/// chunk bounds the distance left to equilibrium). Returns the chunks taken, or -1 after
+/// max_chunks without converging.
+template <class Measure>
+int relax_until(TlsphSolid& s, double omega1, Measure measure, double rtol, int max_chunks = 200) {
+  Vec2 last = measure(s);
+  int quiet = 0;
+  for (int chunk = 1; chunk <= max_chunks; ++chunk) {
+    s.advance(s.time(), 1.0 / omega1);
+    const Vec2 now = measure(s);
+    const Vec2 d = now - last;
+    const bool still =
+        std::abs(d.x()) <= rtol * std::abs(now.x()) && std::abs(d.y()) <= rtol * std::abs(now.y());
+    quiet = still ? quiet + 1 : 0;
+    if (quiet == 2) return chunk;
+    last = now;
+  }
+  return -1;
+}
+
 /// Runs dynamic relaxation to static equilibrium: mass damping 2 omega_1 (critical for the
 /// first mode; every other mode decays at least as fast), for `periods` / omega_1.
 inline void relax(TlsphSolid& s, double omega1, double time_constants) {

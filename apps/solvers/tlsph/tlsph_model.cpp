@@ -25,10 +25,11 @@ std::unique_ptr<tlsph::TlsphSolid> build_solid(const Scene& scene, const Structu
   o.pair_damping = t.pair_damping;
   o.mass_damping = t.mass_damping;
   o.interface_tags = t.interface;
-  // The paper's form (eqs. 13-14, clamp inside its block), as validated coupled against the FE
-  // obstacle (tests/apps/test_coupled.cpp: 1.9-5.2 % below it). The library's defaults (the
-  // quadratic correction, the clamp at its face) meet beam theory alone but put this obstacle
-  // 11-18 % below the FE one at 0.05-0.06 s under the same water: not yet explained (issue 19).
+  // The paper's form (eqs. 13-14, clamp inside its block). Its 1.9-5.2 % from the FE obstacle
+  // (tests/apps/test_coupled.cpp) is two errors cancelling; the library's defaults put the clamp
+  // at the clamped box's face, 1 dp above the FE clamp there (-11..-18 %), and with the clamp
+  // below the floor they follow the FE obstacle until a local collapse at the floor corner:
+  // open (docs/solid_tlsph.md, "Coupled"; issue 19).
   o.gradient_correction = tlsph::GradientCorrection::linear;
   std::shared_ptr<const erp::Motion> motion;
   Vec2 pivot = Vec2::Zero();
