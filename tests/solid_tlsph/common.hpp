@@ -141,6 +141,21 @@ inline Vec2 elastica_point(double k, double s, double axial = 0.0, double shear 
   return {z[2], z[3]};
 }
 
+/// dPi/dx_k of the strain energy at positions x by a central difference (step 1e-7).
+inline Vec2 strain_energy_gradient(TlsphSolid& s, const std::vector<Vec2>& x, std::size_t k) {
+  const double d = 1e-7;
+  Vec2 grad;
+  for (int c = 0; c < 2; ++c) {
+    auto xp = x, xm = x;
+    xp[k][c] += d, xm[k][c] -= d;
+    s.set_positions(xp);
+    const double ep = s.energies().strain;
+    s.set_positions(xm);
+    grad[c] = (ep - s.energies().strain) / (2.0 * d);
+  }
+  return grad;
+}
+
 /// First clamped-free mode shape f(x) (Gray, Monaghan & Swift 2001), kL = 1.875.
 inline double mode_shape(double x, double L) {
   const double kL = 1.8751040687119611, k = kL / L;

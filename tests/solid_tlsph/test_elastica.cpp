@@ -135,7 +135,7 @@ TEST_CASE("tlsph: the elastica test beam (L/H = 20) is one Euler's elastica desc
 TEST_CASE("tlsph: elastica within 2 % of Euler's at H/dp = 10 (L/H = 20, k = 1, 2, 5); observed "
           "order over H/dp = 6, 8, 10 against the FE solution of the same beam",
           "[solid_tlsph][elastica][slow]") {
-  // At H/dp = 8 the shortening at k = 1 is +2.28 % of Euler's, +1.91 % of the FE solution of
+  // At H/dp = 8 the shortening at k = 1 is +2.27 % of Euler's, +1.91 % of the FE solution of
   // this beam: 2 % is met from H/dp = 10 (docs/solid_tlsph.md, "Elastica").
   const std::vector<int> layers{6, 8, 10};
   std::vector<std::vector<EndPoint>> sph;

@@ -324,23 +324,6 @@ TEST_CASE("tlsph quadratic: linear and quadratic fields give the exact F everywh
   CHECK_THAT(b.energy_ratio, Catch::Matchers::WithinRel(1.0 - 1.0 / 64.0, 1e-4));
 }
 
-namespace {
-/// dPi/dx_k of the strain energy at positions x by a central difference (step 1e-7).
-Vec2 strain_energy_gradient(TlsphSolid& s, const std::vector<Vec2>& x, std::size_t k) {
-  const double d = 1e-7;
-  Vec2 grad;
-  for (int c = 0; c < 2; ++c) {
-    auto xp = x, xm = x;
-    xp[k][c] += d, xm[k][c] -= d;
-    s.set_positions(xp);
-    const double ep = s.energies().strain;
-    s.set_positions(xm);
-    grad[c] = (ep - s.energies().strain) / (2.0 * d);
-  }
-  return grad;
-}
-} // namespace
-
 TEST_CASE("tlsph quadratic: forces conserve momentum and angular momentum, are -dPi/dx",
           "[solid_tlsph][quadratic]") {
   TlsphSolid s = quadratic_block();

@@ -25,12 +25,8 @@ std::unique_ptr<tlsph::TlsphSolid> build_solid(const Scene& scene, const Structu
   o.pair_damping = t.pair_damping;
   o.mass_damping = t.mass_damping;
   o.interface_tags = t.interface;
-  // The paper's form (eqs. 13-14, clamp inside its block). Its 1.9-5.2 % from the FE obstacle
-  // (tests/apps/test_coupled.cpp) is two errors cancelling; the library's defaults put the clamp
-  // at the clamped box's face, 1 dp above the FE clamp there (-11..-18 %), and with the clamp
-  // below the floor they follow the FE obstacle until a local collapse at the floor corner:
-  // open (docs/solid_tlsph.md, "Coupled"; issue 19).
-  o.gradient_correction = tlsph::GradientCorrection::linear;
+  // The library's defaults (quadratic correction, hourglass control, each clamp at its face
+  // with the free particles: docs/solid_tlsph.md, "Coupled").
   std::shared_ptr<const erp::Motion> motion;
   Vec2 pivot = Vec2::Zero();
   if (!t.clamped_motion.empty()) {
@@ -41,7 +37,6 @@ std::unique_ptr<tlsph::TlsphSolid> build_solid(const Scene& scene, const Structu
   }
   for (const Box& box : t.clamped) {
     tlsph::Clamp c;
-    c.odd_image = false;
     c.contains = [box](const Vec2& X) { return inside(box, X); };
     if (motion) { // the wall's rigid motion at X0
       c.position = [motion, pivot](const Vec2& X, double time) {
