@@ -34,6 +34,13 @@ double point_segment_distance(const Vec2& p, const Vec2& a, const Vec2& b, doubl
   return (p - (a + t * ab)).norm();
 }
 
+/// The quadratic fit's monomials of d = (X_b - X_a) / h (build_quadratic).
+Eigen::Matrix<double, 5, 1> monomials(double dx, double dy) {
+  Eigen::Matrix<double, 5, 1> p;
+  p << dx, dy, 0.5 * dx * dx, dx * dy, 0.5 * dy * dy;
+  return p;
+}
+
 } // namespace
 
 void validate(const TlsphOptions& o) {
@@ -44,6 +51,7 @@ void validate(const TlsphOptions& o) {
   require(o.pair_damping >= 0.0, "pair_damping", o.pair_damping, ">= 0");
   require(o.mass_damping >= 0.0, "mass_damping", o.mass_damping, ">= 0");
   require(o.max_neighbors >= 8, "max_neighbors", o.max_neighbors, ">= 8");
+  require(o.hourglass >= 0.0, "hourglass", o.hourglass, ">= 0");
   if (o.gradient_correction == GradientCorrection::quadratic && !o.kernel_correction)
     throw InputError("tlsph: gradient_correction = quadratic needs kernel_correction = true");
   require(o.gravity.allFinite(), "gravity", o.gravity.transpose(), "finite");
@@ -105,6 +113,15 @@ TlsphSolid::TlsphSolid(SolidGeometry geometry, TlsphOptions options)
   build_reference();
   build_interface(geometry);
   build_images();
+  if (quadratic_ && options_.hourglass > 0.0) { // k_ab = hourglass E V_a w_ab; not on images
+    const std::size_t pairs = pair_b_.size();
+    pair_k_.assign(pairs, 0.0), pair_rx_.assign(pairs, 0.0), pair_ry_.assign(pairs, 0.0);
+    const double k = options_.hourglass * options_.material.youngs_modulus;
+    for (std::size_t a = 0; a < n; ++a)
+      if (!imaged(a))
+        for (std::uint32_t q = pair_start_[a]; q < pair_start_[a + 1]; ++q)
+          pair_k_[q] = k * V0_[a] * pair_dwr_[q];
+  }
   prescribe(0.0);
   compute_stress();
   compute_acceleration();
@@ -173,17 +190,16 @@ void TlsphSolid::build_quadratic() {
   using Mat5 = Eigen::Matrix<double, 5, 5>;
   const std::size_t n = size(), pairs = pair_b_.size();
   pair_qx_.resize(pairs), pair_qy_.resize(pairs), pair_rev_.resize(pairs);
-  auto monomials = [&](std::size_t a, std::size_t b) {
-    const double dx = (X0_[b] - X0_[a]) / h_, dy = (Y0_[b] - Y0_[a]) / h_;
-    Vec5 p;
-    p << dx, dy, 0.5 * dx * dx, dx * dy, 0.5 * dy * dy;
-    return p;
+  auto pair_monomials = [&](std::size_t a, std::size_t b) {
+    return monomials((X0_[b] - X0_[a]) / h_, (Y0_[b] - Y0_[a]) / h_);
   };
+  const bool hourglass = options_.hourglass > 0.0;
+  if (hourglass) pair_fit_.assign(5 * pairs, 0.0);
   std::size_t bad = none;
   for (std::size_t a = 0; a < n; ++a) {
     Mat5 A = Mat5::Zero();
     for (std::uint32_t q = pair_start_[a]; q < pair_start_[a + 1]; ++q) {
-      const Vec5 p = monomials(a, pair_b_[q]);
+      const Vec5 p = pair_monomials(a, pair_b_[q]);
       A += pair_dwr_[q] * h_ * h_ * p * p.transpose(); // w scaled by h^2: A ~ 1
     }
     const Eigen::PartialPivLU<Mat5> lu(A);
@@ -192,8 +208,10 @@ void TlsphSolid::build_quadratic() {
       continue;
     }
     for (std::uint32_t q = pair_start_[a]; q < pair_start_[a + 1]; ++q) {
-      const Vec5 c = lu.solve(monomials(a, pair_b_[q]));
+      const Vec5 c = lu.solve(pair_monomials(a, pair_b_[q]));
       pair_qx_[q] = pair_dwr_[q] * h_ * c(0), pair_qy_[q] = pair_dwr_[q] * h_ * c(1);
+      if (hourglass) // the fit's coefficients are sum_c (u_c - u_a) s_ac^T
+        for (int m = 0; m < 5; ++m) pair_fit_[5 * q + m] = pair_dwr_[q] * h_ * h_ * c(m);
     }
   }
   if (bad != none)
@@ -435,6 +453,26 @@ Mat2 TlsphSolid::correction_matrix(std::size_t a) const {
   return B;
 }
 
+void TlsphSolid::hourglass_residuals(std::size_t a, double* rx, double* ry) const {
+  // r_ab = (u_b - u_a) - C_a p_ab with the fit C_a = sum_c (u_c - u_a) s_ac^T
+  const std::uint32_t start = pair_start_[a], end = pair_start_[a + 1];
+  const double ux_a = x_[a] - X0_[a], uy_a = y_[a] - Y0_[a];
+  double cx[5] = {0.0, 0.0, 0.0, 0.0, 0.0}, cy[5] = {0.0, 0.0, 0.0, 0.0, 0.0};
+  for (std::uint32_t q = start; q < end; ++q) {
+    const std::uint32_t b = pair_b_[q];
+    const double dux = x_[b] - X0_[b] - ux_a, duy = y_[b] - Y0_[b] - uy_a;
+    for (int m = 0; m < 5; ++m)
+      cx[m] += dux * pair_fit_[5 * q + m], cy[m] += duy * pair_fit_[5 * q + m];
+  }
+  for (std::uint32_t q = start; q < end; ++q) {
+    const std::uint32_t b = pair_b_[q];
+    const auto p = monomials((X0_[b] - X0_[a]) / h_, (Y0_[b] - Y0_[a]) / h_);
+    double fx = 0.0, fy = 0.0;
+    for (int m = 0; m < 5; ++m) fx += cx[m] * p(m), fy += cy[m] * p(m);
+    rx[q - start] = x_[b] - X0_[b] - ux_a - fx, ry[q - start] = y_[b] - Y0_[b] - uy_a - fy;
+  }
+}
+
 void TlsphSolid::compute_stress() {
   const materials::Material& law = *material_;
   const std::size_t bad = parallel_reduce(
@@ -442,20 +480,24 @@ void TlsphSolid::compute_stress() {
       [&](std::size_t a) {
         const Mat2 F = deformation_gradient(a);
         F00_[a] = F(0, 0), F01_[a] = F(0, 1), F10_[a] = F(1, 0), F11_[a] = F(1, 1);
+        // An odd-image clamp carries no strain energy: its F (the mirrored field's, one-sided
+        // at the clamp's far side) enters no force and is not guarded.
+        if (imaged(a)) {
+          PB00_[a] = PB01_[a] = PB10_[a] = PB11_[a] = 0.0;
+          return none;
+        }
         const double J = F.determinant();
         if (!(J > 0.0)) { // also NaN
           PB00_[a] = PB01_[a] = PB10_[a] = PB11_[a] = 0.0;
           return a;
-        }
-        if (imaged(a)) { // an odd-image clamp carries no strain energy
-          PB00_[a] = PB01_[a] = PB10_[a] = PB11_[a] = 0.0;
-          return none;
         }
         const Mat2 E = 0.5 * (F.transpose() * F - Mat2::Identity()); // eq. 9
         // eq. 7, P B0 (quadratic: P itself, the correction is in g~_ab)
         const Mat2 P = F * law.stress(E);
         const Mat2 PB = quadratic_ ? P : Mat2(P * correction_matrix(a));
         PB00_[a] = PB(0, 0), PB01_[a] = PB(0, 1), PB10_[a] = PB(1, 0), PB11_[a] = PB(1, 1);
+        if (!pair_k_.empty())
+          hourglass_residuals(a, &pair_rx_[pair_start_[a]], &pair_ry_[pair_start_[a]]);
         return none;
       },
       [](std::size_t a, std::size_t b) { return std::min(a, b); });
@@ -473,6 +515,7 @@ void TlsphSolid::compute_acceleration() {
   const double nu_d = options_.pair_damping * 0.5 * c_s_ * h_;
   const double gamma = options_.mass_damping;
   const double gx = options_.gravity.x(), gy = options_.gravity.y();
+  const bool hourglass = !pair_k_.empty();
   const std::size_t bad = parallel_reduce(
       size(), none,
       [&](std::size_t a) {
@@ -489,6 +532,10 @@ void TlsphSolid::compute_acceleration() {
             const double s_b = V0_[b] * inv_Va, gb0 = s_b * pair_qx_[r], gb1 = s_b * pair_qy_[r];
             sx += PB00_[a] * ga0 + PB01_[a] * ga1 - PB00_[b] * gb0 - PB01_[b] * gb1;
             sy += PB10_[a] * ga0 + PB11_[a] * ga1 - PB10_[b] * gb0 - PB11_[b] * gb1;
+            if (hourglass) { // -dPi_hg/dx_a = sum_b (k_ab r_ab - k_ba r_ba)
+              sx += (pair_k_[p] * pair_rx_[p] - pair_k_[r] * pair_rx_[r]) * inv_Va;
+              sy += (pair_k_[p] * pair_ry_[p] - pair_k_[r] * pair_ry_[r]) * inv_Va;
+            }
             dx += (vx_[b] - vx_[a]) * pair_dwr_[p], dy += (vy_[b] - vy_[a]) * pair_dwr_[p];
           }
         } else {
@@ -729,8 +776,17 @@ TlsphEnergies TlsphSolid::energies() const {
         const Mat2 F = deformation_gradient(i);
         const Mat2 E = 0.5 * (F.transpose() * F - Mat2::Identity());
         const double m = rho0_ * V0_[i];
-        if (clamped_[i]) return Sum{0.0, imaged(i) ? 0.0 : V0_[i] * law.energy(E), 0.0};
-        return Sum{0.5 * m * (vx_[i] * vx_[i] + vy_[i] * vy_[i]), V0_[i] * law.energy(E),
+        if (imaged(i)) return Sum{0.0, 0.0, 0.0};
+        double w = V0_[i] * law.energy(E);
+        if (!pair_k_.empty()) { // Pi_hg = 1/2 sum_b k_ab |r_ab|^2
+          const std::uint32_t start = pair_start_[i], count = pair_start_[i + 1] - start;
+          std::vector<double> rx(count), ry(count);
+          hourglass_residuals(i, rx.data(), ry.data());
+          for (std::uint32_t q = 0; q < count; ++q)
+            w += 0.5 * pair_k_[start + q] * (rx[q] * rx[q] + ry[q] * ry[q]);
+        }
+        if (clamped_[i]) return Sum{0.0, w, 0.0};
+        return Sum{0.5 * m * (vx_[i] * vx_[i] + vy_[i] * vy_[i]), w,
                    m * (g.x() * (x_[i] - X0_[i]) + g.y() * (y_[i] - Y0_[i]))};
       },
       [](Sum a, Sum b) {

@@ -1,11 +1,18 @@
 #pragma once
-// Test helpers over a loaded scene: a probe by name, and the first probe's history through a
-// coupled run.
+// Test helpers over a loaded scene: a probe by name, the first probe's history through a
+// coupled run, and a run continued from a checkpoint against the uninterrupted one.
 #include "fsi_app/coupled_model.hpp"
+#include "fsi_app/output/checkpoint_file.hpp"
+#include "fsi_app/run.hpp"
 #include "fsi_app/scene.hpp"
+#include "fsi_process.hpp"
 
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <iomanip>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -49,6 +56,55 @@ inline void check_tiny_obstacle_follows(const std::string& file,
     CHECK(other[i] > 1e-3);
     CHECK(std::abs(other[i] - reference[i]) < bound * reference[i]);
   }
+}
+
+/// Runs `scene` (which writes checkpoints every `every` steps) whole in `dir`/whole, then again
+/// from its checkpoint at step `every` in a copy; probes.csv and the last checkpoint (at `last`
+/// steps) must be bitwise equal (wall-clock statistics aside), and the checkpoint must hold more
+/// than `values` reals.
+inline void check_restart_bitwise(const Scene& scene, const std::filesystem::path& dir, long every,
+                                  long last, std::size_t values) {
+  namespace fs = std::filesystem;
+  const auto checkpoint = [](long step) {
+    std::ostringstream name;
+    name << "checkpoint_" << std::setw(9) << std::setfill('0') << step << ".h5";
+    return name.str();
+  };
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ostringstream log;
+  {
+    auto models = build_models(scene);
+    RunOptions o;
+    o.out = dir / "whole";
+    o.log = &log;
+    run_scene(scene, models, o);
+  }
+  fs::copy(dir / "whole", dir / "continued");
+  {
+    auto models = build_models(scene);
+    RunOptions o;
+    o.out = dir / "continued";
+    o.log = &log;
+    o.restart = dir / "continued" / checkpoint(every);
+    run_scene(scene, models, o);
+  }
+  CHECK(fsi_test::slurp(dir / "whole" / "probes.csv") ==
+        fsi_test::slurp(dir / "continued" / "probes.csv"));
+  const StateArchive a = read_checkpoint(dir / "whole" / checkpoint(last));
+  const StateArchive b = read_checkpoint(dir / "continued" / checkpoint(last));
+  REQUIRE(a.all_reals().size() == b.all_reals().size());
+  std::size_t compared = 0;
+  for (const auto& [key, x] : a.all_reals()) {
+    if (key.ends_with("seconds")) continue; // wall-clock statistics, not state
+    INFO(key);
+    const auto& y = b.reals(key);
+    REQUIRE(x.size() == y.size());
+    CHECK(std::memcmp(x.data(), y.data(), x.size() * sizeof(double)) == 0);
+    compared += x.size();
+  }
+  CHECK(a.all_integers() == b.all_integers());
+  CHECK(compared > values);
 }
 
 } // namespace fsi::app::test

@@ -128,44 +128,10 @@ TEST_CASE("sph plug-in: a hydrostatic column through the registry: pressure and 
 
 TEST_CASE("sph plug-in: a run continued from a checkpoint is bitwise the uninterrupted run",
           "[apps][sph]") {
-  const fs::path dir = fs::temp_directory_path() / "fsi_test_sph_restart";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  const std::vector<std::string> overrides = {"time.end=0.1",
-                                              "checkpoint={interval_steps: 25, keep: 9}"};
-  const Scene scene = load_scene(FSI_TEST_DATA "/sph_column.yaml", overrides);
-  std::ostringstream log;
-  {
-    auto models = build_models(scene);
-    RunOptions o;
-    o.out = dir / "whole";
-    o.log = &log;
-    run_scene(scene, models, o);
-  }
-  fs::copy(dir / "whole", dir / "continued");
-  {
-    auto models = build_models(scene);
-    RunOptions o;
-    o.out = dir / "continued";
-    o.log = &log;
-    o.restart = dir / "continued" / "checkpoint_000000050.h5";
-    run_scene(scene, models, o);
-  }
-  CHECK(slurp(dir / "whole" / "probes.csv") == slurp(dir / "continued" / "probes.csv"));
-  const StateArchive a = read_checkpoint(dir / "whole" / "checkpoint_000000100.h5");
-  const StateArchive b = read_checkpoint(dir / "continued" / "checkpoint_000000100.h5");
-  REQUIRE(a.all_reals().size() > 10);
-  REQUIRE(a.all_reals().size() == b.all_reals().size());
-  std::size_t compared = 0;
-  for (const auto& [key, x] : a.all_reals()) {
-    INFO(key);
-    const auto& y = b.reals(key);
-    REQUIRE(x.size() == y.size());
-    CHECK(std::memcmp(x.data(), y.data(), x.size() * sizeof(double)) == 0);
-    compared += x.size();
-  }
-  CHECK(a.all_integers() == b.all_integers());
-  CHECK(compared > 10000);
+  const Scene scene = load_scene(FSI_TEST_DATA "/sph_column.yaml",
+                                 {"time.end=0.1", "checkpoint={interval_steps: 25, keep: 9}"});
+  test::check_restart_bitwise(scene, fs::temp_directory_path() / "fsi_test_sph_restart", 50, 100,
+                              10000);
 }
 
 namespace {

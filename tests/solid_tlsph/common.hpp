@@ -141,11 +141,48 @@ inline Vec2 elastica_point(double k, double s, double axial = 0.0, double shear 
   return {z[2], z[3]};
 }
 
+/// dPi/dx_k of the strain energy at positions x by a central difference (step 1e-7).
+inline Vec2 strain_energy_gradient(TlsphSolid& s, const std::vector<Vec2>& x, std::size_t k) {
+  const double d = 1e-7;
+  Vec2 grad;
+  for (int c = 0; c < 2; ++c) {
+    auto xp = x, xm = x;
+    xp[k][c] += d, xm[k][c] -= d;
+    s.set_positions(xp);
+    const double ep = s.energies().strain;
+    s.set_positions(xm);
+    grad[c] = (ep - s.energies().strain) / (2.0 * d);
+  }
+  return grad;
+}
+
 /// First clamped-free mode shape f(x) (Gray, Monaghan & Swift 2001), kL = 1.875.
 inline double mode_shape(double x, double L) {
   const double kL = 1.8751040687119611, k = kL / L;
   const double M = std::sin(kL) + std::sinh(kL), N = std::cos(kL) + std::cosh(kL);
   return M * (std::cos(k * x) - std::cosh(k * x)) - N * (std::sin(k * x) - std::sinh(k * x));
+}
+
+/// Dynamic relaxation (mass damping 2 omega_1 set in the options) until `measure(s)` (a Vec2)
+/// stops moving: advances in chunks of 1 / omega_1 until each component changes by less than
+/// rtol of its magnitude over two consecutive chunks (critically damped, the change over a
+/// chunk bounds the distance left to equilibrium). Returns the chunks taken, or -1 after
+/// max_chunks without converging.
+template <class Measure>
+int relax_until(TlsphSolid& s, double omega1, Measure measure, double rtol, int max_chunks = 200) {
+  Vec2 last = measure(s);
+  int quiet = 0;
+  for (int chunk = 1; chunk <= max_chunks; ++chunk) {
+    s.advance(s.time(), 1.0 / omega1);
+    const Vec2 now = measure(s);
+    const Vec2 d = now - last;
+    const bool still =
+        std::abs(d.x()) <= rtol * std::abs(now.x()) && std::abs(d.y()) <= rtol * std::abs(now.y());
+    quiet = still ? quiet + 1 : 0;
+    if (quiet == 2) return chunk;
+    last = now;
+  }
+  return -1;
 }
 
 /// Runs dynamic relaxation to static equilibrium: mass damping 2 omega_1 (critical for the

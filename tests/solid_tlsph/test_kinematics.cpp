@@ -324,23 +324,6 @@ TEST_CASE("tlsph quadratic: linear and quadratic fields give the exact F everywh
   CHECK_THAT(b.energy_ratio, Catch::Matchers::WithinRel(1.0 - 1.0 / 64.0, 1e-4));
 }
 
-namespace {
-/// dPi/dx_k of the strain energy at positions x by a central difference (step 1e-7).
-Vec2 strain_energy_gradient(TlsphSolid& s, const std::vector<Vec2>& x, std::size_t k) {
-  const double d = 1e-7;
-  Vec2 grad;
-  for (int c = 0; c < 2; ++c) {
-    auto xp = x, xm = x;
-    xp[k][c] += d, xm[k][c] -= d;
-    s.set_positions(xp);
-    const double ep = s.energies().strain;
-    s.set_positions(xm);
-    grad[c] = (ep - s.energies().strain) / (2.0 * d);
-  }
-  return grad;
-}
-} // namespace
-
 TEST_CASE("tlsph quadratic: forces conserve momentum and angular momentum, are -dPi/dx",
           "[solid_tlsph][quadratic]") {
   TlsphSolid s = quadratic_block();
@@ -454,4 +437,41 @@ TEST_CASE("tlsph odd-image clamp: the face from the lattice, a deep clamp, the e
   // neighbour of a free particle.
   CHECK_THROWS_WITH(solid({-0.04, 0.0}, {0.01, 0.08}, [](const Vec2& X) { return X.x() < 0.0; }),
                     Contains("within 2h of free particle") && Contains("mirror position"));
+}
+
+TEST_CASE("tlsph odd-image clamp: an image's F is not guarded (it carries no strain energy)",
+          "[solid_tlsph][image][guards]") {
+  // u = (0, b x y) vanishes on the face x = 0; its odd image is the same field continued, but
+  // an image at depth x' has det F = 1 - b x' (mirrored), <= 0 beyond 1 / b = 0.025, while the
+  // free particles' det F = 1 + b x > 0. Before the fix the guard stopped the run on an image.
+  TlsphOptions o;
+  o.dp = 0.01;
+  Clamp clamp;
+  clamp.contains = [](const Vec2& X) { return X.x() < 0.0; };
+  o.clamps.push_back(clamp);
+  TlsphSolid s(fill_rectangle({-0.04, 0.0}, {0.2, 0.08}, o.dp), o);
+  const double b = 40.0;
+  std::vector<Vec2> x(s.size());
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const Vec2 X = s.reference_position(i);
+    x[i] = X + Vec2(0.0, b * X.x() * X.y());
+  }
+  REQUIRE_NOTHROW(s.set_positions(x));
+  const auto J = s.det_F();
+  double image_min = 1.0, free_min = 2.0, free_err = 0.0;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const Vec2 X = s.reference_position(i);
+    if (s.clamped(i)) {
+      image_min = std::min(image_min, J[i]);
+    } else {
+      free_min = std::min(free_min, J[i]);
+      free_err = std::max(free_err, std::abs(J[i] - (1.0 + b * X.x()))); // quadratic: exact
+    }
+  }
+  INFO("det F: images min " << image_min << ", free min " << free_min << ", free error "
+                            << free_err);
+  CHECK(image_min < 0.0);
+  CHECK(free_min > 1.0);
+  CHECK(free_err < 1e-10);
+  CHECK_NOTHROW(s.advance(0.0, 1e-7));
 }

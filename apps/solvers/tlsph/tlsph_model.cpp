@@ -17,19 +17,10 @@ bool inside(const Box& b, const Vec2& X) {
 
 std::unique_ptr<tlsph::TlsphSolid> build_solid(const Scene& scene, const StructureBlock& block) {
   const TlsphSpec& t = block.as<TlsphSpec>();
-  tlsph::TlsphOptions o;
-  o.material = t.material;
-  o.dp = t.dp;
-  o.h_factor = t.h_factor;
+  tlsph::TlsphOptions o = t.options;
   o.gravity = scene.gravity;
-  o.pair_damping = t.pair_damping;
-  o.mass_damping = t.mass_damping;
-  o.interface_tags = t.interface;
-  // The paper's form (eqs. 13-14, clamp inside its block), as validated coupled against the FE
-  // obstacle (tests/apps/test_coupled.cpp: 1.9-5.2 % below it). The library's defaults (the
-  // quadratic correction, the clamp at its face) meet beam theory alone but put this obstacle
-  // 11-18 % below the FE one at 0.05-0.06 s under the same water: not yet explained (issue 19).
-  o.gradient_correction = tlsph::GradientCorrection::linear;
+  // The library's defaults (quadratic correction, hourglass control, each clamp at its face
+  // with the free particles: docs/solid_tlsph.md, "Coupled").
   std::shared_ptr<const erp::Motion> motion;
   Vec2 pivot = Vec2::Zero();
   if (!t.clamped_motion.empty()) {
@@ -40,7 +31,6 @@ std::unique_ptr<tlsph::TlsphSolid> build_solid(const Scene& scene, const Structu
   }
   for (const Box& box : t.clamped) {
     tlsph::Clamp c;
-    c.odd_image = false;
     c.contains = [box](const Vec2& X) { return inside(box, X); };
     if (motion) { // the wall's rigid motion at X0
       c.position = [motion, pivot](const Vec2& X, double time) {
@@ -54,7 +44,7 @@ std::unique_ptr<tlsph::TlsphSolid> build_solid(const Scene& scene, const Structu
   }
   try {
     return std::make_unique<tlsph::TlsphSolid>(
-        tlsph::fill_rectangle(t.region.min, t.region.max, t.dp), std::move(o));
+        tlsph::fill_rectangle(t.region.min, t.region.max, o.dp), std::move(o));
   } catch (const InputError& e) {
     fail_at(scene, block.line, block.key, e.what());
   }

@@ -18,7 +18,7 @@ void check(const Scene& scene, std::size_t index, Section& s, std::vector<Sectio
   const StructureBlock& block = scene.structures[index];
   const TlsphSpec& t = block.as<TlsphSpec>();
   check_clamped_motion(scene, t.clamped_motion, !t.clamped.empty(), "clamped boxes", s);
-  if (scene.fluid && t.interface.empty()) // a fluid and a structure are coupled
+  if (scene.fluid && t.options.interface_tags.empty()) // a fluid and a structure are coupled
     s.fail("interface", "a structure coupled to the fluid needs the sides it is wetted on");
   for (std::size_t i = 0; i < scene.output.probes.size(); ++i)
     if (scene.output.probes[i].structure == block.name && !scene.output.probes[i].point)
@@ -32,7 +32,7 @@ Footprint footprint(const Scene& scene, std::size_t index) {
   const Vec2 size = t.region.max - t.region.min;
   Footprint e;
   e.key = "dp";
-  e.count = (size.x() / t.dp) * (size.y() / t.dp);
+  e.count = (size.x() / t.options.dp) * (size.y() / t.options.dp);
   e.bytes = e.count * (40 * 8 + 64 * 4 + 64 * 24 + 20 * 8);
   e.counts = significant(e.count, 3) + " solid particles (region area / dp^2)";
   if (e.count > std::numeric_limits<std::uint32_t>::max())

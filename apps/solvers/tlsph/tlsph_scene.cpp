@@ -27,28 +27,26 @@ std::shared_ptr<const SolverSpec> read_tlsph(Section& s) {
                                                  "spacing dp from its lower-left corner; sides "
                                                  "tagged bottom, right, top, left"),
                       "the solid");
-  t.dp = s.real("dp", Range::positive(), "particle spacing dp_S, m");
-  t.h_factor = s.real("h_factor", 1.15, Range::closed(1.0, 2.0),
-                      "smoothing length h = h_factor dp (Wendland C2, support 2h)");
+  OptionReader reader(s);
+  tlsph::visit_options(t.options, reader);
   auto mat = s.required_block("material", "hyperelastic material (materials/)");
-  read_material(mat, t.material);
-  for (auto& box : s.list("clamped", "boxes: particles whose reference position lies inside are "
-                                     "held (or follow clamped_motion)"))
+  read_material(mat, t.options.material);
+  for (auto& box : s.list("clamped", "boxes: the particles whose reference position lies inside "
+                                     "are the clamp, a support beyond the body (fixed: the body "
+                                     "is clamped at the box's face, so the region extends 2 or "
+                                     "more rows into the box; or they follow clamped_motion)"))
     t.clamped.push_back(read_box(box, "a clamped box"));
   t.clamped_motion = s.text("clamped_motion", "",
                             "name of a wall with a motion: the clamped particles follow its rigid "
                             "motion; empty: they stay fixed");
-  t.interface = s.names("interface", {}, "sides wetted by the fluid (bottom, right, top, left)");
-  t.pair_damping = s.real("pair_damping", 0.0, Range::non_negative(),
-                          "pairwise viscosity nu_d = pair_damping c_s h / 2 (0: off)");
-  t.mass_damping = s.real("mass_damping", 0.0, Range::non_negative(),
-                          "mass-proportional damping a -= mass_damping v, 1/s (0: off)");
+  t.options.interface_tags =
+      s.names("interface", {}, "sides wetted by the fluid (bottom, right, top, left)");
   if (!doc) {
     const Vec2 size = t.region.max - t.region.min;
-    if (t.dp * 3.0 > size.minCoeff())
+    if (t.options.dp * 3.0 > size.minCoeff())
       s.fail("dp", "fewer than 3 particles across the region (" + std::to_string(size.x()) + " x " +
                        std::to_string(size.y()) + " m)");
-    for (const auto& tag : t.interface)
+    for (const auto& tag : t.options.interface_tags)
       if (tag != "bottom" && tag != "right" && tag != "top" && tag != "left")
         s.fail("interface", "unknown side '" + tag + "' (bottom, right, top, left)");
   }

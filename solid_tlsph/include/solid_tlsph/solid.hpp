@@ -12,7 +12,9 @@
 #include <vector>
 
 #include "fsi/core/interface_mesh.hpp"
+#include "fsi/core/options.hpp"
 #include "fsi/core/types.hpp"
+#include "materials/energies.hpp"
 #include "materials/material.hpp"
 #include "particles/field_set.hpp"
 #include "solid_tlsph/geometry.hpp"
@@ -81,6 +83,14 @@ struct TlsphOptions {
   /// Mass-proportional damping a -= mass_damping v [1/s], >= 0; 0 = off. For static solutions
   /// by dynamic relaxation (close to 2 omega_1 is critical for the first mode).
   double mass_damping = 0.0;
+  /// Hourglass control of the quadratic correction (`linear`, the paper's form, has none), >= 0;
+  /// 0 = off. A penalty energy
+  /// Pi_hg = 1/2 hourglass E sum_a V_a sum_b w_ab |r_ab|^2 (w_ab = |dW_ab| / r_ab V_b) on r_ab,
+  /// the residual of a's weighted quadratic fit of u_b - u_a: zero for rigid motions and
+  /// quadratic fields (bending), it stiffens the row-alternating zero-energy mode of particle
+  /// integration, which point loads excite next to an odd-image clamp (docs/solid_tlsph.md,
+  /// "Coupled").
+  double hourglass = 0.5;
   std::vector<Clamp> clamps;
   /// Outline tags whose surface particles form the coupling interface; empty: every edge.
   std::vector<std::string> interface_tags;
@@ -90,6 +100,10 @@ struct TlsphOptions {
 /// Throws InputError naming the field, its value and the allowed range.
 void validate(const TlsphOptions& options);
 
+/// The keys a user sets, each once (dp is required; fsi/core/options.hpp); the material's are
+/// materials::visit_options.
+void visit_options(TlsphOptions& options, OptionVisitor& visitor);
+
 /// Everything that evolves; cheap to copy for save/restore in iterative coupling.
 struct TlsphState {
   particles::FieldSet::Snapshot fields;
@@ -98,13 +112,7 @@ struct TlsphState {
   double external_work = 0.0;
 };
 
-struct TlsphEnergies {
-  double kinetic = 0.0;       ///< sum m v^2 / 2
-  double strain = 0.0;        ///< sum V0 W(E)
-  double gravity_work = 0.0;  ///< sum m g . (x - X0)
-  double external_work = 0.0; ///< integral of the interface loads . dx (trapezoidal per step)
-  double total() const { return kinetic + strain - gravity_work - external_work; }
-};
+using TlsphEnergies = materials::SolidEnergies;
 
 class TlsphSolid {
 public:
@@ -114,8 +122,6 @@ public:
   /// empty geometry, a neighbour row over max_neighbors, a singular moment matrix).
   TlsphSolid(SolidGeometry geometry, TlsphOptions options);
   ~TlsphSolid();
-  TlsphSolid(const TlsphSolid&) = delete;
-  TlsphSolid& operator=(const TlsphSolid&) = delete;
 
   std::size_t size() const { return fields_.size(); }
   const TlsphOptions& options() const { return options_; }
@@ -205,6 +211,8 @@ private:
   /// The face of fixed clamp k (its given one, or found from the lattice), oriented outwards
   /// from the clamp.
   void clamp_face(std::size_t k, Vec2& point, Vec2& normal) const;
+  /// Residuals r_ab of particle a's quadratic fit (its row of pairs) at the current positions.
+  void hourglass_residuals(std::size_t a, double* rx, double* ry) const;
   /// True for a particle of a fixed odd-image clamp (no strain energy, not integrated).
   bool imaged(std::size_t i) const { return clamped_[i] && imaged_[clamped_[i] - 1u]; }
   /// F (eq. 13) and P B0 per particle; throws RunError on det F <= 0 or NaN.
@@ -242,6 +250,10 @@ private:
   std::vector<double> pair_qx_, pair_qy_;
   std::vector<std::uint32_t> pair_rev_;
   bool quadratic_ = false;
+  // TlsphOptions::hourglass only: per pair the fit operator s_ab = w_ab h^2 A_a^-1 p_ab (5
+  // values), the penalty stiffness k_ab = hourglass E V_a w_ab (row of a; 0 on image rows) and
+  // the residual r_ab (scratch, compute_stress).
+  std::vector<double> pair_fit_, pair_k_, pair_rx_, pair_ry_;
   // Clamp::odd_image: the free partner of each image particle (none = not an image), and the
   // image of each free particle; scratch force per unit mass of the images.
   std::vector<std::size_t> image_partner_, image_of_;

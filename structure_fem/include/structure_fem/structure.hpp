@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "materials/energies.hpp"
 #include "structure_fem/assembly.hpp"
 #include "structure_fem/linear_solver.hpp"
 #include "structure_fem/material.hpp"
@@ -94,14 +95,7 @@ struct Prediction {
   Vector u, v, a;
 };
 
-struct Energies {
-  double kinetic = 0.0;       ///< v^T M v / 2
-  double strain = 0.0;        ///< integral W(E)
-  double gravity_work = 0.0;  ///< f_g . u (work done by gravity)
-  double external_work = 0.0; ///< integral f_ext . du
-  /// Conserved for beta = 1/4, gamma = 1/2 (to the Newton tolerance) in the linear regime.
-  double total() const { return kinetic + strain - gravity_work - external_work; }
-};
+using Energies = materials::SolidEnergies;
 
 class Structure {
 public:
