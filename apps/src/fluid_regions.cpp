@@ -28,7 +28,8 @@ std::vector<Vec2> read_region(Section s) {
   return polygon;
 }
 
-// Shoelace area of a closed polygon.
+} // namespace
+
 double polygon_area(const Polygon& p) {
   double twice = 0.0;
   for (std::size_t i = 0; i < p.size(); ++i) {
@@ -38,8 +39,6 @@ double polygon_area(const Polygon& p) {
   }
   return 0.5 * std::abs(twice);
 }
-
-} // namespace
 
 ParticleArea read_particle_area(Section& s, double l0) {
   const bool doc = s.context().documenting();

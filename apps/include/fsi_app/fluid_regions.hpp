@@ -25,6 +25,9 @@ ParticleArea read_particle_area(Section& s, double l0);
 std::vector<Vec2> fill_regions(const Scene& scene, const std::vector<Polygon>& regions, double l0,
                                const std::vector<Polygon>& solid);
 
+/// Shoelace area of a closed polygon (either orientation), m^2.
+double polygon_area(const Polygon& p);
+
 /// A particle fluid's memory: area / l0^2 particles of `bytes_per_particle` each, and a cell grid
 /// of side `cell` over the domain (`padding` extra cells per direction, `bytes_per_cell` each).
 struct ParticleGrid {

@@ -15,6 +15,13 @@ bool inside(const Box& b, const Vec2& X) {
   return X.x() >= b.min.x() && X.x() <= b.max.x() && X.y() >= b.min.y() && X.y() <= b.max.y();
 }
 
+// The lattice starts at the lower-left corner of the region's box (a rectangle's min).
+Vec2 lattice_origin(const std::vector<Vec2>& outline) {
+  Vec2 lo = outline.front();
+  for (const Vec2& p : outline) lo = lo.cwiseMin(p);
+  return lo;
+}
+
 std::unique_ptr<tlsph::TlsphSolid> build_solid(const Scene& scene, const StructureBlock& block) {
   const TlsphSpec& t = block.as<TlsphSpec>();
   tlsph::TlsphOptions o = t.options;
@@ -44,7 +51,7 @@ std::unique_ptr<tlsph::TlsphSolid> build_solid(const Scene& scene, const Structu
   }
   try {
     return std::make_unique<tlsph::TlsphSolid>(
-        tlsph::fill_rectangle(t.region.min, t.region.max, o.dp), std::move(o));
+        tlsph::fill_polygon(t.outline, t.tags, o.dp, lattice_origin(t.outline)), std::move(o));
   } catch (const InputError& e) {
     fail_at(scene, block.line, block.key, e.what());
   }
@@ -77,7 +84,7 @@ private:
 };
 
 TlsphModel::TlsphModel(const Scene& scene, const StructureBlock& block)
-    : StructurePart(block.name), region_(block.as<TlsphSpec>().region),
+    : StructurePart(block.name), outline_(block.as<TlsphSpec>().outline),
       solid_(build_solid(scene, block)), interface_(solid_->interface_mesh()),
       adapter_(std::make_unique<Adapter>(*this)) {
   for (const auto& p : scene.output.probes)
@@ -92,8 +99,7 @@ coupling::StructureSolver& TlsphModel::coupling_solver() {
 }
 
 std::vector<Polygon> TlsphModel::occupied_area() const {
-  const Vec2 lo = region_.min, hi = region_.max;
-  return {{lo, {hi.x(), lo.y()}, hi, {lo.x(), hi.y()}}};
+  return {outline_};
 }
 
 void TlsphModel::advance(double time, double dt) {

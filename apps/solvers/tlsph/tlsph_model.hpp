@@ -32,7 +32,7 @@ public:
 
 private:
   class Adapter;
-  Box region_;
+  std::vector<Vec2> outline_;
   std::unique_ptr<tlsph::TlsphSolid> solid_;
   InterfaceMesh interface_;
   std::vector<std::pair<std::string, std::size_t>> probe_particles_; // probe name -> particle

@@ -3,6 +3,7 @@
 #include "tlsph/tlsph_plugin.hpp"
 
 #include "fsi/core/format.hpp"
+#include "fsi_app/fluid_regions.hpp"
 #include "fsi_app/wall_motion.hpp"
 #include "tlsph/tlsph_model.hpp"
 
@@ -29,10 +30,9 @@ void check(const Scene& scene, std::size_t index, Section& s, std::vector<Sectio
 // (64 x 4 B) and the per-pair gradients (64 x 24 B), a saved state for iterative coupling.
 Footprint footprint(const Scene& scene, std::size_t index) {
   const TlsphSpec& t = scene.structures[index].as<TlsphSpec>();
-  const Vec2 size = t.region.max - t.region.min;
   Footprint e;
   e.key = "dp";
-  e.count = (size.x() / t.options.dp) * (size.y() / t.options.dp);
+  e.count = polygon_area(t.outline) / (t.options.dp * t.options.dp);
   e.bytes = e.count * (40 * 8 + 64 * 4 + 64 * 24 + 20 * 8);
   e.counts = significant(e.count, 3) + " solid particles (region area / dp^2)";
   if (e.count > std::numeric_limits<std::uint32_t>::max())

@@ -3,6 +3,8 @@
 
 #include "fsi_app/material_reader.hpp"
 
+#include <algorithm>
+
 namespace fsi::app::tlsph_plugin {
 
 namespace {
@@ -17,16 +19,49 @@ Box read_box(Section s, const std::string& what) {
   return b;
 }
 
+// A rectangle (sides tagged bottom, right, top, left) or a counter-clockwise polygon with a tag
+// per edge (default: every edge "boundary").
+void read_region(Section s, TlsphSpec& t) {
+  const bool doc = s.context().documenting();
+  if (doc || s.has("polygon")) {
+    t.outline = s.points("polygon", 3,
+                         "counter-clockwise polygon filled with particles (lattice from the lower-"
+                         "left corner of its box), m");
+    t.tags = s.names("tags", {},
+                     "a tag per polygon edge, edge i from vertex i to i + 1 "
+                     "(default: every edge 'boundary')");
+    if (!doc && t.tags.empty()) t.tags.assign(t.outline.size(), "boundary");
+    if (!doc && t.tags.size() != t.outline.size())
+      s.fail("tags", std::to_string(t.tags.size()) + " tags for " +
+                         std::to_string(t.outline.size()) + " polygon edges");
+    double twice = 0.0;
+    for (std::size_t i = 0; i < t.outline.size(); ++i) {
+      const Vec2 &a = t.outline[i], &b = t.outline[(i + 1) % t.outline.size()];
+      twice += a.x() * b.y() - b.x() * a.y();
+    }
+    if (!doc && !(twice > 0.0)) s.fail("polygon", "must be counter-clockwise (solid on the left)");
+  }
+  if (doc || !s.has("polygon")) {
+    const Vec2 lo = s.vec2("min", "lower-left corner of a rectangle filled with particles at dp "
+                                  "from it; sides tagged bottom, right, top, left, m");
+    const Vec2 hi = s.vec2("max", "upper-right corner, m");
+    if (!doc && (hi.x() <= lo.x() || hi.y() <= lo.y()))
+      s.fail("max", "must lie above and right of min");
+    if (!doc) {
+      t.outline = {lo, {hi.x(), lo.y()}, hi, {lo.x(), hi.y()}};
+      t.tags = {"bottom", "right", "top", "left"};
+    }
+  }
+  s.finish();
+}
+
 } // namespace
 
 std::shared_ptr<const SolverSpec> read_tlsph(Section& s) {
   auto spec = std::make_shared<TlsphSpec>();
   TlsphSpec& t = *spec;
   const bool doc = s.context().documenting();
-  t.region = read_box(s.required_block("region", "the rectangle filled with solid particles at "
-                                                 "spacing dp from its lower-left corner; sides "
-                                                 "tagged bottom, right, top, left"),
-                      "the solid");
+  read_region(s.required_block("region", "the solid: a rectangle (min, max) or a polygon"), t);
   OptionReader reader(s);
   tlsph::visit_options(t.options, reader);
   auto mat = s.required_block("material", "hyperelastic material (materials/)");
@@ -40,15 +75,18 @@ std::shared_ptr<const SolverSpec> read_tlsph(Section& s) {
                             "name of a wall with a motion: the clamped particles follow its rigid "
                             "motion; empty: they stay fixed");
   t.options.interface_tags =
-      s.names("interface", {}, "sides wetted by the fluid (bottom, right, top, left)");
+      s.names("interface", {},
+              "region edge tags wetted by the fluid (a rectangle: bottom, right, top, left)");
   if (!doc) {
-    const Vec2 size = t.region.max - t.region.min;
+    Vec2 lo = t.outline.front(), hi = lo;
+    for (const Vec2& p : t.outline) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+    const Vec2 size = hi - lo;
     if (t.options.dp * 3.0 > size.minCoeff())
       s.fail("dp", "fewer than 3 particles across the region (" + std::to_string(size.x()) + " x " +
                        std::to_string(size.y()) + " m)");
     for (const auto& tag : t.options.interface_tags)
-      if (tag != "bottom" && tag != "right" && tag != "top" && tag != "left")
-        s.fail("interface", "unknown side '" + tag + "' (bottom, right, top, left)");
+      if (std::find(t.tags.begin(), t.tags.end(), tag) == t.tags.end())
+        s.fail("interface", "no region edge is tagged '" + tag + "'");
   }
   return spec;
 }

@@ -15,11 +15,11 @@ struct Box {
 };
 
 struct TlsphSpec final : SolverSpec {
-  tlsph::TlsphOptions options; ///< the keys solid_tlsph and materials/ declare, the wetted sides
-  Box region;                  ///< the rectangle filled with particles (sides tagged bottom,
-                               ///< right, top, left)
-  std::vector<Box> clamped;    ///< particles with X0 inside a box are clamped (or moved)
-  std::string clamped_motion;  ///< wall whose rigid motion the clamped particles follow
+  tlsph::TlsphOptions options;   ///< the keys solid_tlsph and materials/ declare, the wetted sides
+  std::vector<Vec2> outline;     ///< the region, counter-clockwise, filled with particles
+  std::vector<std::string> tags; ///< a tag per outline edge (rectangle: bottom, right, top, left)
+  std::vector<Box> clamped;      ///< particles with X0 inside a box are clamped (or moved)
+  std::string clamped_motion;    ///< wall whose rigid motion the clamped particles follow
 };
 
 /// Reads the keys of one structures entry (type and name excepted) into a TlsphSpec.
