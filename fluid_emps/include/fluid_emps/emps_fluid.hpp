@@ -113,16 +113,20 @@ private:
   void pressure_gradient(double dt);
   /// The pressure gradient's kernels on particle i: fluid-fluid pairs (eq. 10), and the wall
   /// terms of each face (eqs. 25-27) with their contact part.
-  Vec2 fluid_gradient(std::size_t i) const;
+  Vec2 fluid_gradient(std::size_t i, double* shepard) const;
   struct WallGradient {
     Vec2 wall1 = Vec2::Zero(), wall2 = Vec2::Zero(), contact1 = Vec2::Zero(),
          contact2 = Vec2::Zero();
   };
-  WallGradient wall_gradient(std::size_t i, double dt) const;
+  WallGradient wall_gradient(std::size_t i, double dt, double p_mirror) const;
   void check_finite(long step, double t) const;
-  Vec2 mirror_gradient(std::size_t i, const Vec2& x_wall, const Vec2& n_wall) const;
-  Vec2 mirror_laplacian(std::size_t i, const Vec2& x_wall, const Vec2& n_wall,
-                        const Vec2& v_wall) const;
+  Vec2 mirror_gradient(std::size_t i, const Vec2& x_wall, const Vec2& n_wall,
+                       double p_mirror) const;
+  struct MirrorViscous {
+    Vec2 laplacian, approach;
+  };
+  MirrorViscous mirror_viscous(std::size_t i, const Vec2& x_wall, const Vec2& n_wall,
+                               const Vec2& v_wall, bool approach) const;
   Vec2 repulsion(double r, const Vec2& n_wall) const;
   Vec2 normal_damping(std::size_t i, double r, const Vec2& n_wall, const Vec2& v_wall,
                       double dt) const;
