@@ -34,7 +34,8 @@ namespace fsi::emps {
 /// near a concave corner may also push on a second face (segment2, t2, x_wall2, f2).
 /// f = f_pressure + f_contact + f_viscous on each face: f_contact is V times the repulsive
 /// term (eq. 27, with the wall-normal damping of WallContact::damped), f_viscous the viscous
-/// mirror term; the rest is the pressure mirror term (eqs. 25-26).
+/// mirror term (eq. 24, with wall_approach_viscosity's term); the rest is the pressure mirror
+/// term (eqs. 25-26).
 struct WallForces {
   std::vector<int> segment, segment2; ///< -1 where there is no such wall within r_e
   std::vector<double> t, t2;          ///< local coordinate of x_wall on the segment
@@ -47,7 +48,7 @@ struct WallForces {
 struct WallForceParts {
   Vec2 pressure = Vec2::Zero();  ///< mirror pressure terms (eqs. 25-26, convex corners incl.)
   Vec2 repulsive = Vec2::Zero(); ///< repulsive term (eq. 27) and wall-normal damping
-  Vec2 viscous = Vec2::Zero();   ///< viscous mirror term (eq. 24)
+  Vec2 viscous = Vec2::Zero();   ///< viscous mirror term (eq. 24), approach viscosity
   Vec2 total() const { return pressure + repulsive + viscous; }
 };
 
