@@ -58,6 +58,7 @@ void validate(const FluidOptions& o) {
   if (!(o.skin > 0 && o.skin < 1)) fail("skin must be in (0, 1)");
   if (!(o.wall_damping >= 0)) fail("wall_damping must be >= 0");
   if (!(o.wall_viscosity >= 0)) fail("wall_viscosity must be >= 0");
+  if (!(o.wall_approach_viscosity >= 0)) fail("wall_approach_viscosity must be >= 0");
 }
 
 } // namespace
@@ -68,7 +69,8 @@ EmpsFluid::EmpsFluid(const FluidOptions& options, const std::vector<Vec2>& posit
       locator_(erp::make_wall_locator(walls, options.r_e())),
       z_(options.l0, options.r_e(), particles::MpsWeight(options.r_e())), r_e_(options.r_e()),
       n0_(erp::lattice_n0(options.l0, r_e_, particles::MpsWeight(r_e_))),
-      lambda0_(erp::lattice_lambda0(options.l0, r_e_, particles::MpsWeight(r_e_))),
+      lambda0_(erp::lattice_lambda0(options.l0, r_e_, particles::MpsWeight(r_e_))), w_e_(r_e_),
+      re2_(r_e_ * r_e_),
       grid_(options.domain_min, options.domain_max, r_e_ * (1.0 + options.skin)) {
   locator_->set_second_face(options.corner_faces);
   const std::size_t n = positions.size();
@@ -127,32 +129,45 @@ void EmpsFluid::query_walls() {
   hits_layout_ = layout_;
 }
 
-// <lap v>_i' at the mirror point x_i' = 2 x_wall - x_i (eq. 23) over the real neighbours of x_i'
-// (j = i included), with the mirror velocity v_i' (eq. 24 no-slip, or slip), turned back by
-// R_inv (no-slip) or R_ref (slip); without the 2d/(lambda0 n0) factor.
-Vec2 EmpsFluid::mirror_laplacian(std::size_t i, const Vec2& x_wall, const Vec2& n_wall,
-                                 const Vec2& v_wall) const {
+// At the mirror point x_i' = 2 x_wall - x_i (eq. 23), over the real neighbours of x_i' (j = i
+// included), without the 2d/(lambda0 n0) factor:
+// - laplacian: <lap v>_i' with the mirror velocity v_i' (eq. 24 no-slip, or slip), turned back by
+//   R_inv (no-slip) or R_ref (slip);
+// - approach (with `approach`): the closing-pair sum of the pairs (i, ghost of j) that close in
+//   across the wall. The ghost of j sits at the reflection of x_j and moves with v_wall +
+//   R_ref (v_j - v_wall); R_ref maps x_j - x_i' to the pair's separation and v_j - v_i^s to its
+//   relative velocity (v_i^s: i's slip mirror velocity), so the sum is R_ref sum over closing
+//   pairs of ((v_j - v_i^s) . e) e w, e and r those of x_j - x_i' (as the fluid's closing pairs).
+EmpsFluid::MirrorViscous EmpsFluid::mirror_viscous(std::size_t i, const Vec2& x_wall,
+                                                   const Vec2& n_wall, const Vec2& v_wall,
+                                                   bool approach) const {
   const Particles& p = particles_;
-  const particles::MpsWeight w_e(r_e_);
-  const double re2 = r_e_ * r_e_;
   const bool no_slip = options_.wall_condition == WallCondition::no_slip;
   const Vec2 v_i(p.vx[i], p.vy[i]);
   const Vec2 v_m = no_slip ? erp::mirror_velocity_no_slip(v_i, v_wall, n_wall)
                            : erp::mirror_velocity_slip(v_i, v_wall, n_wall);
+  const Vec2 v_s = erp::mirror_velocity_slip(v_i, v_wall, n_wall);
   const double mpx = 2.0 * x_wall.x() - p.x[i], mpy = 2.0 * x_wall.y() - p.y[i];
-  double ux = 0, uy = 0;
+  double ux = 0, uy = 0, ax = 0, ay = 0;
   grid_.for_each_near(mpx, mpy, [&](std::uint32_t j) {
     const double dx = p.x[j] - mpx, dy = p.y[j] - mpy, r2 = dx * dx + dy * dy;
-    if (r2 >= re2) return;
-    const double w = w_e.inside(std::sqrt(r2));
+    if (r2 >= re2_) return;
+    const double w = w_e_.inside(std::sqrt(r2));
     ux += (p.vx[j] - v_m.x()) * w;
     uy += (p.vy[j] - v_m.y()) * w;
+    if (!approach || r2 == 0.0) return;
+    const double closing = (p.vx[j] - v_s.x()) * dx + (p.vy[j] - v_s.y()) * dy;
+    if (closing >= 0) return;
+    ax += closing * w / r2 * dx;
+    ay += closing * w / r2 * dy;
   });
-  return (no_slip ? erp::R_inv() : erp::R_ref(n_wall)) * Vec2(ux, uy);
+  return {(no_slip ? erp::R_inv() : erp::R_ref(n_wall)) * Vec2(ux, uy),
+          erp::R_ref(n_wall) * Vec2(ax, ay)};
 }
 
 // nu <lap v>^ERP into scratch_ (eqs. 11, 24; advance adds it and g to v, eq. 13); visc_wall_
-// keeps the viscous wall forces.
+// keeps the viscous wall forces (with wall_approach_viscosity alpha_w, also alpha_w c l0 times the
+// mirror closing-pair sum of mirror_viscous, a wall force).
 // With artificial_viscosity alpha, closing pairs also feel alpha c l0 times the eq. 11 operator
 // restricted to their line of centres (Monaghan's artificial viscosity in MPS form; not in the
 // paper, pairwise antisymmetric so momentum is kept).
@@ -160,14 +175,15 @@ void EmpsFluid::viscosity() {
   Timer timer(times_.viscosity);
   Particles& p = particles_;
   const std::size_t n = p.size();
-  const particles::MpsWeight w_e(r_e_);
-  const double re2 = r_e_ * r_e_;
   const double c_lap = 2.0 * dim / (lambda0_ * n0_);
   const double nu = options_.viscosity, mu_V = options_.density * nu * options_.volume();
   const double nu_art = options_.artificial_viscosity * options_.sound_speed * options_.l0;
   const double nu_wall = options_.wall_contact == WallContact::viscous
                              ? options_.wall_viscosity * options_.sound_speed * options_.l0
                              : 0.0;
+  const double nu_approach = options_.wall_approach_viscosity * options_.sound_speed * options_.l0;
+  const bool approach = nu_approach > 0;
+  const double rho_V = options_.density * options_.volume();
   scratch_.resize(2 * n);
   // The closing-pair sum only when alpha > 0: it costs as much as the rest of the loop.
   // near_wall: its part on pairs with a particle within r_e of a wall (WallContact::viscous).
@@ -180,8 +196,8 @@ void EmpsFluid::viscosity() {
       for (std::uint32_t k = 0, c = neighbours_.count(i); k < c; ++k) {
         const std::uint32_t j = row[k];
         const double dx = p.x[j] - xi, dy = p.y[j] - yi, r2 = dx * dx + dy * dy;
-        if (r2 >= re2) continue;
-        const double w = w_e.inside(std::sqrt(r2));
+        if (r2 >= re2_) continue;
+        const double w = w_e_.inside(std::sqrt(r2));
         const double dvx = p.vx[j] - vxi, dvy = p.vy[j] - vyi;
         sx += dvx * w;
         sy += dvy * w;
@@ -197,11 +213,19 @@ void EmpsFluid::viscosity() {
           }
         }
       }
-      Vec2 m1 = Vec2::Zero(), m2 = Vec2::Zero();
-      if (nu > 0 && hits_.segment[i] >= 0)
-        m1 = c_lap * mirror_laplacian(i, hits_.x_wall[i], hits_.n_wall[i], hits_.v_wall[i]);
-      if (nu > 0 && hits_.segment2[i] >= 0)
-        m2 = c_lap * mirror_laplacian(i, hits_.x_wall2[i], hits_.n_wall2[i], hits_.v_wall2[i]);
+      Vec2 m1 = Vec2::Zero(), m2 = Vec2::Zero(), a1 = Vec2::Zero(), a2 = Vec2::Zero();
+      if ((nu > 0 || approach) && hits_.segment[i] >= 0) {
+        const MirrorViscous m =
+            mirror_viscous(i, hits_.x_wall[i], hits_.n_wall[i], hits_.v_wall[i], approach);
+        m1 = c_lap * m.laplacian;
+        a1 = nu_approach * c_lap * m.approach;
+      }
+      if ((nu > 0 || approach) && hits_.segment2[i] >= 0) {
+        const MirrorViscous m =
+            mirror_viscous(i, hits_.x_wall2[i], hits_.n_wall2[i], hits_.v_wall2[i], approach);
+        m2 = c_lap * m.laplacian;
+        a2 = nu_approach * c_lap * m.approach;
+      }
       scratch_[2 * i] = nu * (c_lap * sx + m1.x() + m2.x());
       scratch_[2 * i + 1] = nu * (c_lap * sy + m1.y() + m2.y());
       if constexpr (decltype(artificial)::value) {
@@ -214,6 +238,12 @@ void EmpsFluid::viscosity() {
       }
       visc_wall_[i] = mu_V * m1; // V_i mu R <lap v>_i' (eq. 52, viscous wall part)
       visc_wall2_[i] = mu_V * m2;
+      if (approach) {
+        scratch_[2 * i] += a1.x() + a2.x();
+        scratch_[2 * i + 1] += a1.y() + a2.y();
+        visc_wall_[i] += rho_V * a1;
+        visc_wall2_[i] += rho_V * a2;
+      }
     });
   };
   if (nu_wall > 0)
@@ -230,8 +260,6 @@ void EmpsFluid::density_and_pressure() {
   Timer timer(times_.density);
   Particles& p = particles_;
   const std::size_t n = p.size();
-  const particles::MpsWeight w_e(r_e_);
-  const double re2 = r_e_ * r_e_;
   const double stiffness = options_.sound_speed * options_.sound_speed * options_.density / n0_;
   const double surface = options_.beta * n0_;
   const bool scaled = options_.wall_density == WallDensity::scaled;
@@ -246,8 +274,8 @@ void EmpsFluid::density_and_pressure() {
         for (std::uint32_t k = 0, c = neighbours_.count(i); k < c; ++k) {
           const std::uint32_t j = row[k];
           const double dx = p.x[j] - xi, dy = p.y[j] - yi, r2 = dx * dx + dy * dy;
-          if (r2 >= re2) continue;
-          pnd += w_e.inside(std::sqrt(r2));
+          if (r2 >= re2_) continue;
+          pnd += w_e_.inside(std::sqrt(r2));
           ++within;
         }
         double z = 0.0; // wall part (eq. 20), a corner's overlap counted once
@@ -268,28 +296,29 @@ void EmpsFluid::density_and_pressure() {
 // A concave corner's doubly counted lattice (geometry_erp concave_overlap).
 double EmpsFluid::corner_overlap(std::size_t i) const {
   return erp::concave_overlap(hits_.n_wall[i], hits_.n_wall2[i], hits_.r[i], hits_.r2[i],
-                              options_.l0, r_e_, particles::MpsWeight(r_e_));
+                              options_.l0, r_e_, w_e_);
 }
 
 // The convex corners of particle i's nearest segment (geometry_erp convex_part).
 erp::ConvexPart EmpsFluid::convex_part(std::size_t i) const {
   return erp::convex_part(locator_->walls(), hits_.segment[i], hits_.t[i],
                           Vec2(particles_.x[i], particles_.y[i]), hits_.r[i], hits_.n_wall[i], z_,
-                          options_.l0, r_e_, particles::MpsWeight(r_e_));
+                          options_.l0, r_e_, w_e_);
 }
 
 // R_ref <grad p>_i' (eqs. 25-26) without the d/n0 factor: the gradient sum at the mirror point
-// over the real neighbours of x_i' (j = i included) with p_i' = p_i, reflected back.
-Vec2 EmpsFluid::mirror_gradient(std::size_t i, const Vec2& x_wall, const Vec2& n_wall) const {
+// over the real neighbours of x_i' (j = i included) with p_i' (p_i in eq. 26; see WallPressure),
+// reflected back.
+Vec2 EmpsFluid::mirror_gradient(std::size_t i, const Vec2& x_wall, const Vec2& n_wall,
+                                double p_mirror) const {
   const Particles& p = particles_;
-  const particles::MpsWeight w_e(r_e_);
-  const double re2 = r_e_ * r_e_, p_i = p.p[i];
+  const double p_i = p_mirror;
   const double mpx = 2.0 * x_wall.x() - p.x[i], mpy = 2.0 * x_wall.y() - p.y[i];
   double ux = 0, uy = 0;
   grid_.for_each_near(mpx, mpy, [&](std::uint32_t j) {
     const double dx = p.x[j] - mpx, dy = p.y[j] - mpy, r2 = dx * dx + dy * dy;
-    if (r2 >= re2 || r2 == 0.0) return;
-    const double s = (p.p[j] + p_i) * w_e.inside(std::sqrt(r2)) / r2;
+    if (r2 >= re2_ || r2 == 0.0) return;
+    const double s = (p.p[j] + p_i) * w_e_.inside(std::sqrt(r2)) / r2;
     ux += s * dx;
     uy += s * dy;
   });
@@ -334,37 +363,40 @@ WallForceParts EmpsFluid::wall_force_parts(int first, int last) const {
 }
 
 // Fluid-fluid part of <grad p>_i (eq. 10) without the d/n0 factor: sum over the neighbours of
-// (p_j + p_i) (x_j - x_i) / r_ij^2 w_ij.
-Vec2 EmpsFluid::fluid_gradient(std::size_t i) const {
+// (p_j + p_i) (x_j - x_i) / r_ij^2 w_ij; with `shepard`, also the neighbours' mean pressure
+// sum p_j w_ij / sum w_ij into it (0 without neighbours).
+Vec2 EmpsFluid::fluid_gradient(std::size_t i, double* shepard) const {
   const Particles& p = particles_;
-  const particles::MpsWeight w_e(r_e_);
-  const double re2 = r_e_ * r_e_;
   const double xi = p.x[i], yi = p.y[i], p_i = p.p[i];
-  double gx = 0, gy = 0;
+  double gx = 0, gy = 0, pw = 0, ws = 0;
   const std::uint32_t* row = neighbours_.row(i);
   for (std::uint32_t k = 0, c = neighbours_.count(i); k < c; ++k) {
     const std::uint32_t j = row[k];
     const double dx = p.x[j] - xi, dy = p.y[j] - yi, r2 = dx * dx + dy * dy;
-    if (r2 >= re2 || r2 == 0.0) continue;
-    const double s = (p.p[j] + p_i) * w_e.inside(std::sqrt(r2)) / r2;
+    if (r2 >= re2_ || r2 == 0.0) continue;
+    const double w = w_e_.inside(std::sqrt(r2));
+    const double s = (p.p[j] + p_i) * w / r2;
     gx += s * dx;
     gy += s * dy;
+    if (shepard) pw += p.p[j] * w, ws += w;
   }
+  if (shepard) *shepard = ws > 0 ? pw / ws : 0.0;
   return Vec2(gx, gy);
 }
 
-// Wall parts of <grad p>_i on each face: (d/n0) R_ref <grad p>_i' + f_rep (eqs. 25-27), the
-// convex corners' wedge in place of the mirror in proportion to its share, and the contact
-// part alone (f_rep, with the damping of WallContact::damped).
-EmpsFluid::WallGradient EmpsFluid::wall_gradient(std::size_t i, double dt) const {
+// Wall parts of <grad p>_i on each face: (d/n0) R_ref <grad p>_i' + f_rep (eqs. 25-27) with the
+// mirror pressure p_i', the convex corners' wedge (virtual particles at p_i') in place of the
+// mirror in proportion to its share, and the contact part alone (f_rep, with the damping of
+// WallContact::damped).
+EmpsFluid::WallGradient EmpsFluid::wall_gradient(std::size_t i, double dt, double p_mirror) const {
   const double c_grad = dim / n0_;
   const bool damped = options_.wall_contact == WallContact::damped;
   WallGradient out;
   if (hits_.segment[i] >= 0) {
-    Vec2 mirror = mirror_gradient(i, hits_.x_wall[i], hits_.n_wall[i]);
+    Vec2 mirror = mirror_gradient(i, hits_.x_wall[i], hits_.n_wall[i], p_mirror);
     if (options_.convex_corners) {
       const erp::ConvexPart part = convex_part(i);
-      mirror = (1.0 - part.share) * mirror + part.share * 2.0 * particles_.p[i] * part.g;
+      mirror = (1.0 - part.share) * mirror + part.share * (particles_.p[i] + p_mirror) * part.g;
     }
     out.contact1 = repulsion(hits_.r[i], hits_.n_wall[i]);
     if (damped) out.contact1 += normal_damping(i, hits_.r[i], hits_.n_wall[i], hits_.v_wall[i], dt);
@@ -374,7 +406,8 @@ EmpsFluid::WallGradient EmpsFluid::wall_gradient(std::size_t i, double dt) const
     out.contact2 = repulsion(hits_.r2[i], hits_.n_wall2[i]);
     if (damped)
       out.contact2 += normal_damping(i, hits_.r2[i], hits_.n_wall2[i], hits_.v_wall2[i], dt);
-    out.wall2 = c_grad * mirror_gradient(i, hits_.x_wall2[i], hits_.n_wall2[i]) + out.contact2;
+    out.wall2 =
+        c_grad * mirror_gradient(i, hits_.x_wall2[i], hits_.n_wall2[i], p_mirror) + out.contact2;
   }
   return out;
 }
@@ -387,10 +420,15 @@ void EmpsFluid::pressure_gradient(double dt) {
   const std::size_t n = p.size();
   const double c_grad = dim / n0_;
   const double inv_rho = 1.0 / options_.density, V = options_.volume();
+  const bool neighbours = options_.wall_pressure == WallPressure::neighbours;
   scratch_.resize(2 * n);
   parallel_for_balanced(n, [&](std::size_t i) {
-    const WallGradient wall = wall_gradient(i, dt);
-    const Vec2 grad = c_grad * fluid_gradient(i) + wall.wall1 + wall.wall2;
+    // p_i' (eq. 26, or WallPressure::neighbours for a free-surface particle at a wall)
+    double p_mirror = p.p[i];
+    const bool mean = neighbours && p.surface[i] && hits_.segment[i] >= 0;
+    const Vec2 fluid = fluid_gradient(i, mean ? &p_mirror : nullptr);
+    const WallGradient wall = wall_gradient(i, dt, p_mirror);
+    const Vec2 grad = c_grad * fluid + wall.wall1 + wall.wall2;
     const Vec2 dv = -dt * inv_rho * grad;
     p.vx[i] += dv.x();
     p.vy[i] += dv.y();
@@ -430,6 +468,7 @@ void EmpsFluid::advance(double t, double dt) {
   // The viscous loop writes every particle's viscous wall forces; without it they are zero.
   const bool viscous =
       options_.viscosity > 0 || options_.artificial_viscosity > 0 ||
+      options_.wall_approach_viscosity > 0 ||
       (options_.wall_contact == WallContact::viscous && options_.wall_viscosity > 0);
   if (viscous) {
     visc_wall_.resize(n);
@@ -535,7 +574,7 @@ void EmpsFluid::set_velocities(const std::vector<Vec2>& v) {
 double EmpsFluid::stable_dt(double courant) const {
   double dt = courant * options_.l0 / (options_.sound_speed + max_speed());
   const double alpha =
-      options_.artificial_viscosity +
+      options_.artificial_viscosity + options_.wall_approach_viscosity +
       (options_.wall_contact == WallContact::viscous ? options_.wall_viscosity : 0.0);
   const double nu = options_.viscosity + alpha * options_.sound_speed * options_.l0;
   if (nu > 0) dt = std::min(dt, 0.25 * options_.l0 * options_.l0 / nu);

@@ -25,6 +25,13 @@ void visit_options(FluidOptions& o, OptionVisitor& v) {
          "wall_contact damped: damping rate in units of c / l0");
   v.real("wall_viscosity", o.wall_viscosity, Range::non_negative(),
          "wall_contact viscous: alpha of the near-wall closing-pair viscosity");
+  v.choice("wall_pressure", o.wall_pressure,
+           {{"own", WallPressure::own}, {"neighbours", WallPressure::neighbours}},
+           "p_i' of eqs. 25-26: own, p_i (eq. 26); neighbours, at a free-surface particle within "
+           "r_e of a wall its neighbours' mean pressure, sum p_j w_ij / sum w_ij");
+  v.real("wall_approach_viscosity", o.wall_approach_viscosity, Range::non_negative(),
+         "alpha of the closing-pair viscosity alpha c l0 between a particle and the mirror "
+         "images of its neighbours closing in across a wall (a wall force; 0 = off)");
   v.real("artificial_viscosity", o.artificial_viscosity, Range::non_negative(),
          "alpha: closing particle pairs feel a viscosity alpha c l0 along their line of centres "
          "(damps acoustic noise; not in the paper, 0 = off)");

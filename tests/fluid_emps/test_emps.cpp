@@ -9,6 +9,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <numbers>
@@ -192,12 +193,21 @@ TEST_CASE("emps: without gravity and walls, linear momentum is conserved to 1e-1
 TEST_CASE("emps: what the fluid's momentum loses to the walls, the walls receive (eq. 52)",
           "[emps]") {
   // A blob thrown at a tank's floor and side wall with gravity and viscosity: in every step and for
-  // every wall contact, sum_i m (v_i^{n+1} - v_i^n) = dt (M g + sum_i f_wall,i), the fluid-fluid
-  // terms being antisymmetric in pairs; and the force split of wall_force_parts adds up to
-  // -sum_i f_wall,i, with the repulsive part non-zero (the blob hits the walls).
+  // every wall contact (with either mirror pressure and with the approach viscosity), sum_i m
+  // (v_i^{n+1} - v_i^n) = dt (M g + sum_i f_wall,i), the fluid-fluid terms being antisymmetric
+  // in pairs; and the force split of wall_force_parts adds up to -sum_i f_wall,i, with the
+  // repulsive part non-zero (the blob hits the walls).
   const double l0 = 0.01, dt = 2e-5;
-  const auto contact =
-      GENERATE(emps::WallContact::paper, emps::WallContact::damped, emps::WallContact::viscous);
+  struct Mode {
+    emps::WallContact contact;
+    emps::WallPressure pressure;
+    double approach;
+  };
+  using C = emps::WallContact;
+  using P = emps::WallPressure;
+  const auto mode = GENERATE(Mode{C::paper, P::own, 0.0}, Mode{C::damped, P::own, 0.0},
+                             Mode{C::viscous, P::own, 0.0}, Mode{C::paper, P::neighbours, 0.0},
+                             Mode{C::paper, P::own, 0.1}, Mode{C::viscous, P::neighbours, 0.1});
   erp::WallSet walls;
   walls.add_polyline(open_tank(0.4, 0.4), false, 0);
   auto positions =
@@ -206,7 +216,9 @@ TEST_CASE("emps: what the fluid's momentum loses to the walls, the walls receive
   options.viscosity = 1e-6;
   options.alpha_rep = 1e7;
   options.gravity = {0.0, -9.81};
-  options.wall_contact = contact;
+  options.wall_contact = mode.contact;
+  options.wall_pressure = mode.pressure;
+  options.wall_approach_viscosity = mode.approach;
   options.wall_damping = 2.0;
   options.wall_viscosity = 0.1;
   emps::EmpsFluid fluid(options, positions, walls);
@@ -236,6 +248,99 @@ TEST_CASE("emps: what the fluid's momentum loses to the walls, the walls receive
   CHECK(repulsive > 1.0); // N/m: the contact term took part
   CHECK(worst < 1e-13);
   CHECK(worst_split < 1e-12);
+}
+
+TEST_CASE("emps: the approach viscosity brakes a particle closing in on a wall, not one leaving",
+          "[emps]") {
+  // One particle 0.8 l0 above a floor, no gravity, no viscosity, no repulsion (r > l0/2): the
+  // only wall term on its velocity is the closing-pair viscosity with its own mirror image
+  // (j = i, separation 2r along n, relative velocity 2 u_n n). Approaching (u_n < 0) it loses
+  // dt alpha c l0 (2d / (lambda0 n0)) 2 u_n w(2r) of u_n, and the floor receives the matching
+  // push (f_wall along +n on the particle); leaving, nothing. The tangential velocity is kept.
+  const double l0 = 0.01, dt = 1e-5, r = 0.8 * l0, alpha = 0.1;
+  erp::WallSet walls;
+  walls.add_polyline(open_tank(1.0, 1.0), false, 0);
+  auto options = water(l0);
+  options.wall_approach_viscosity = alpha;
+  const double u_tangent = 0.3;
+  for (const double u_n : {-1.0, 1.0}) {
+    emps::EmpsFluid fluid(options, {{0.5, r}}, walls);
+    fluid.set_velocities({Vec2(u_tangent, u_n)});
+    fluid.advance(0.0, dt);
+    const emps::Particles& p = fluid.particles();
+    const emps::WallForces& w = fluid.wall_forces();
+    const double m = options.density * options.volume();
+    CHECK(p.p[0] == 0.0); // a lone particle: free surface, no pressure terms
+    CHECK(p.vx[0] == u_tangent);
+    if (u_n < 0) {
+      const double r_e = options.r_e(), c_lap = 4.0 / (fluid.lambda0() * fluid.n0());
+      const particles::MpsWeight w_e(r_e);
+      const double brake =
+          -dt * alpha * options.sound_speed * l0 * c_lap * 2.0 * u_n * w_e(2.0 * r);
+      CHECK(brake > 0.0);
+      CHECK_THAT(p.vy[0] - u_n, WithinRel(brake, 1e-10)); // round-off of vy - u_n
+      CHECK_THAT(w.f_viscous[0].y(), WithinRel(m * brake / dt, 1e-10));
+      CHECK(w.f_viscous[0].x() == 0.0);
+    } else {
+      CHECK(p.vy[0] == u_n);
+      CHECK(w.f_viscous[0].norm() == 0.0);
+    }
+  }
+}
+
+TEST_CASE("emps: with the neighbours' mirror pressure the wall pushes back on a free-surface "
+          "particle pressed against it",
+          "[emps]") {
+  // A block squeezed to 0.95 l0 on a floor, the bottom row at l0/2, with a gap of two particles
+  // in the bottom row around one particle: that particle's pnd falls below n0 (free surface,
+  // p = 0) while its neighbours above are under pressure. Eq. 26 (p_i' = 0) leaves the mirror
+  // term only its neighbours' pressure; p_i' = their mean adds the push of its own mirror and
+  // of (p_j + p_i') for every mirror pair, away from the wall (+n): the floor's normal force on
+  // the particle grows by V (d/n0) p_i' sum_j (y_j - y_i') / r^2 w over the real neighbours of
+  // its mirror point (j = i included), up to the step's 1e-12 m motion.
+  const double l0 = 0.01, s = 0.95 * l0;
+  erp::WallSet walls;
+  walls.add_polyline(open_tank(1.0, 1.0), false, 0);
+  std::vector<Vec2> positions;
+  const double x0 = 0.5;
+  for (int row = 0; row < 8; ++row)
+    for (int col = -8; col <= 8; ++col)
+      if (row > 0 || std::abs(col) != 1) positions.emplace_back(x0 + col * s, 0.5 * l0 + row * s);
+  const std::uint32_t lonely_id = 7; // (col 0, row 0): after cols -8..-2
+  REQUIRE(positions[lonely_id].x() == x0);
+  double normal[2] = {0.0, 0.0}, mean_pressure = 0.0, mirror_sum = 0.0, n0 = 0.0;
+  for (const auto mode : {emps::WallPressure::own, emps::WallPressure::neighbours}) {
+    auto options = water(l0);
+    options.wall_pressure = mode;
+    emps::EmpsFluid fluid(options, positions, walls);
+    fluid.advance(0.0, 1e-6);
+    const emps::Particles& p = fluid.particles();
+    const std::size_t lonely =
+        static_cast<std::size_t>(std::find(p.id.begin(), p.id.end(), lonely_id) - p.id.begin());
+    REQUIRE(lonely < p.size());
+    CHECK(p.surface[lonely]);
+    CHECK(p.p[lonely] == 0.0);
+    const emps::WallForces& w = fluid.wall_forces();
+    normal[mode == emps::WallPressure::neighbours] = w.f[lonely].y();
+    CHECK(w.f_contact[lonely].norm() == 0.0); // beyond eq. 27's reach
+    const particles::MpsWeight w_e(options.r_e());
+    const double y_mirror = -p.y[lonely];
+    double pw = 0.0, ws = 0.0;
+    mirror_sum = 0.0;
+    for (std::size_t j = 0; j < p.size(); ++j) {
+      const double r = std::hypot(p.x[j] - p.x[lonely], p.y[j] - p.y[lonely]);
+      const double dy = p.y[j] - y_mirror, rm = std::hypot(p.x[j] - p.x[lonely], dy);
+      if (rm < options.r_e()) mirror_sum += dy / (rm * rm) * w_e(rm);
+      if (j == lonely || r >= options.r_e()) continue;
+      pw += p.p[j] * w_e(r), ws += w_e(r);
+    }
+    mean_pressure = pw / ws;
+    n0 = fluid.n0();
+  }
+  CHECK(mean_pressure > 1000.0); // Pa: the neighbours are under pressure
+  CHECK(normal[1] > normal[0]);  // pushed off the wall harder
+  const double push = l0 * l0 * 2.0 / n0 * mean_pressure * mirror_sum;
+  CHECK_THAT(normal[1] - normal[0], WithinRel(push, 1e-6));
 }
 
 TEST_CASE("emps: a tank rolling +-4 degrees, half full, keeps every particle for 5 periods",

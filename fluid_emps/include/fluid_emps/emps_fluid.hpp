@@ -17,6 +17,7 @@
 #include "geometry_erp/wall_set.hpp"
 #include "geometry_erp/wall_weight.hpp"
 #include "particles/cell_grid.hpp"
+#include "particles/kernels.hpp"
 #include "particles/neighbor_list.hpp"
 
 #include <memory>
@@ -34,7 +35,8 @@ namespace fsi::emps {
 /// near a concave corner may also push on a second face (segment2, t2, x_wall2, f2).
 /// f = f_pressure + f_contact + f_viscous on each face: f_contact is V times the repulsive
 /// term (eq. 27, with the wall-normal damping of WallContact::damped), f_viscous the viscous
-/// mirror term; the rest is the pressure mirror term (eqs. 25-26).
+/// mirror term (eq. 24, with wall_approach_viscosity's term); the rest is the pressure mirror
+/// term (eqs. 25-26).
 struct WallForces {
   std::vector<int> segment, segment2; ///< -1 where there is no such wall within r_e
   std::vector<double> t, t2;          ///< local coordinate of x_wall on the segment
@@ -47,7 +49,7 @@ struct WallForces {
 struct WallForceParts {
   Vec2 pressure = Vec2::Zero();  ///< mirror pressure terms (eqs. 25-26, convex corners incl.)
   Vec2 repulsive = Vec2::Zero(); ///< repulsive term (eq. 27) and wall-normal damping
-  Vec2 viscous = Vec2::Zero();   ///< viscous mirror term (eq. 24)
+  Vec2 viscous = Vec2::Zero();   ///< viscous mirror term (eq. 24), approach viscosity
   Vec2 total() const { return pressure + repulsive + viscous; }
 };
 
@@ -113,16 +115,20 @@ private:
   void pressure_gradient(double dt);
   /// The pressure gradient's kernels on particle i: fluid-fluid pairs (eq. 10), and the wall
   /// terms of each face (eqs. 25-27) with their contact part.
-  Vec2 fluid_gradient(std::size_t i) const;
+  Vec2 fluid_gradient(std::size_t i, double* shepard) const;
   struct WallGradient {
     Vec2 wall1 = Vec2::Zero(), wall2 = Vec2::Zero(), contact1 = Vec2::Zero(),
          contact2 = Vec2::Zero();
   };
-  WallGradient wall_gradient(std::size_t i, double dt) const;
+  WallGradient wall_gradient(std::size_t i, double dt, double p_mirror) const;
   void check_finite(long step, double t) const;
-  Vec2 mirror_gradient(std::size_t i, const Vec2& x_wall, const Vec2& n_wall) const;
-  Vec2 mirror_laplacian(std::size_t i, const Vec2& x_wall, const Vec2& n_wall,
-                        const Vec2& v_wall) const;
+  Vec2 mirror_gradient(std::size_t i, const Vec2& x_wall, const Vec2& n_wall,
+                       double p_mirror) const;
+  struct MirrorViscous {
+    Vec2 laplacian, approach;
+  };
+  MirrorViscous mirror_viscous(std::size_t i, const Vec2& x_wall, const Vec2& n_wall,
+                               const Vec2& v_wall, bool approach) const;
   Vec2 repulsion(double r, const Vec2& n_wall) const;
   Vec2 normal_damping(std::size_t i, double r, const Vec2& n_wall, const Vec2& v_wall,
                       double dt) const;
@@ -135,6 +141,8 @@ private:
   std::unique_ptr<erp::WallLocator> locator_;
   erp::WallWeightTable z_;
   double r_e_, n0_, lambda0_;
+  particles::MpsWeight w_e_; ///< w(r) of eq. 8 at r_e
+  double re2_;               ///< r_e^2 (the pair loops test r^2 < r_e^2)
   Particles particles_;
   particles::CellGrid grid_;
   particles::NeighborList neighbours_;

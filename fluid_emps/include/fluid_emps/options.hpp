@@ -23,6 +23,13 @@ enum class WallDensity { added, scaled };
 ///   pairs with a particle within r_e of a wall only (fluid-fluid, momentum kept).
 enum class WallContact { paper, damped, viscous };
 
+/// p_i' of the mirror pressure terms (eqs. 25-26).
+/// own: p_i' = p_i (eq. 26).
+/// neighbours: a free-surface particle (p_i = 0) within r_e of a wall takes the Shepard mean of
+///   its neighbours' pressure, p_i' = sum_j p_j w_ij / sum_j w_ij: the wall pushes back on a
+///   particle pressed against it by the pressure around it (a wall force, sent to the structure).
+enum class WallPressure { own, neighbours };
+
 struct FluidOptions {
   double density = 1000.0;  ///< rho, kg/m^3
   double viscosity = 0.0;   ///< kinematic nu, m^2/s; 0 skips the viscous loop entirely
@@ -36,6 +43,10 @@ struct FluidOptions {
   WallContact wall_contact = WallContact::paper;
   double wall_damping = 1.0;    ///< damped: gamma in units of c / l0
   double wall_viscosity = 0.05; ///< viscous: alpha of the near-wall closing-pair viscosity
+  WallPressure wall_pressure = WallPressure::own;
+  /// alpha of the closing-pair viscosity alpha c l0 between a particle and the mirror images of
+  /// its neighbours that close in across a wall (a wall force; 0: off).
+  double wall_approach_viscosity = 0.0;
   WallCondition wall_condition = WallCondition::no_slip;
   WallDensity wall_density = WallDensity::added;
   /// At concave corners also apply the second wall face (z, mirror terms and repulsion of the
