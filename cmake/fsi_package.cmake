@@ -65,13 +65,3 @@ install(FILES ${PROJECT_BINARY_DIR}/fsiConfig.cmake ${PROJECT_BINARY_DIR}/fsiCon
               ${PROJECT_SOURCE_DIR}/cmake/FindSuiteSparse.cmake
         DESTINATION ${FSI_CMAKE_DIR})
 
-# Not under the sanitizers or libFuzzer: python3 would load an instrumented module without
-# their runtime.
-set(_fsi_python_default ON)
-if(FSI_SANITIZE OR FSI_FUZZ)
-  set(_fsi_python_default OFF)
-endif()
-option(FSI_BUILD_PYTHON "Build the Python module fsi (python/, pybind11)" ${_fsi_python_default})
-if(FSI_BUILD_PYTHON)
-  add_subdirectory(python)
-endif()
