@@ -42,6 +42,17 @@ template <class Plugin> const Plugin* find(const std::vector<Plugin>& list, std:
 }
 } // namespace
 
+std::set<std::string>
+declared_keys(const std::function<std::shared_ptr<const SolverSpec>(Section&)>& read) {
+  ReadContext ctx;
+  ctx.collector = std::make_unique<std::vector<KeyDoc>>();
+  Section doc(YAML::Node(), "", ctx);
+  read(doc);
+  std::set<std::string> keys;
+  for (const KeyDoc& k : *ctx.collector) keys.insert(k.path.substr(0, k.path.find_first_of(".[")));
+  return keys;
+}
+
 const FluidPlugin* find_fluid_plugin(std::string_view name) {
   return find(fluid_plugins(), name);
 }

@@ -297,8 +297,26 @@ void cross_check(Section& top, const Scene& scene, std::optional<Section>& fluid
         ->check(scene, i, structure_sections[i], probe_sections);
 }
 
-// The fluid block: its type picks the plug-in, which reads the rest. In documentation mode
-// every plug-in's keys are listed, each marked with its type.
+// Another type's block (fluid.emps: {...} in a fluid of type sph) is read by that type's
+// plug-in, with the keys of the enclosing block that plug-in declares, so its keys are checked;
+// then it is set aside.
+template <class Plugin> void check_set_aside(Section& s, const Plugin& p) {
+  const std::set<std::string> own = declared_keys(p.read);
+  YAML::Node view(YAML::NodeType::Map);
+  for (auto it = s.node().begin(); it != s.node().end(); ++it)
+    if (own.count(it->first.Scalar()) || it->first.Scalar() == p.name)
+      view.force_insert(it->first, it->second);
+  Section other(view, s.path(), s.context(), s.line());
+  other.lift(p.name);
+  p.read(other);
+  other.finish();
+  s.set_aside(p.name);
+}
+
+// A solver block: its type picks the plug-in, which reads the rest. A block named after a type
+// holds keys for that type only: the chosen type's is read as part of the solver block, the
+// others' are checked and set aside, so one scene runs with any type by `--set ...type=`. In
+// documentation mode every plug-in's keys are listed, each marked with its type.
 template <class Plugin, class Block>
 void read_solver_block(Section& s, const std::vector<Plugin>& plugins, Block& block,
                        const std::string& what) {
@@ -308,11 +326,17 @@ void read_solver_block(Section& s, const std::vector<Plugin>& plugins, Block& bl
   block.type = s.choice("type", types, types.front(), what + " solver (apps/solvers/<type>/)");
   if (!s.context().documenting()) {
     for (const auto& p : plugins)
+      if (p.name != block.type && s.has(p.name)) check_set_aside(s, p);
+    s.lift(block.type);
+    for (const auto& p : plugins)
       if (p.name == block.type) block.spec = p.read(s);
     return;
   }
   auto& docs = *s.context().collector;
   for (const auto& p : plugins) {
+    docs.push_back({s.path() + "." + p.name, "block", "optional", "",
+                    "keys for type " + p.name + " only: read as keys of " + s.path() +
+                        " when type is " + p.name + ", checked and set aside otherwise"});
     const std::size_t first = docs.size();
     p.read(s);
     for (std::size_t k = first; k < docs.size(); ++k)
@@ -393,6 +417,11 @@ std::string scene_reference() {
       << "SI units throughout. Unknown keys, wrong types and out-of-range values are errors\n"
       << "(`FILE:LINE: KEY: what is wrong`, exit status 2). Any key can be overridden with\n"
       << "`--set key.path=value` (list entries as `structures[0].material.density`).\n\n"
+      << "A solver block's `type` picks its solver. Keys for one type only may sit in a block\n"
+      << "named after it (`fluid.emps`, `fluid.sph`, `structures[].fem`, `structures[].tlsph`):\n"
+      << "the chosen type's is read as keys of the solver block, the others are checked and set\n"
+      << "aside, so one scene runs with any fluid and any structure by `--set fluid.type=sph\n"
+      << "--set structures[0].type=tlsph` (tests/apps/data/tiny_any_pair.yaml).\n\n"
       << "| key | type | default | allowed | meaning |\n|---|---|---|---|---|\n";
   for (const auto& k : *ctx.collector)
     out << "| `" << k.path << "` | " << k.type << " | " << k.fallback << " | " << k.range << " | "

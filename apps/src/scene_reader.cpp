@@ -149,7 +149,9 @@ Section::Section(YAML::Node node, std::string path, ReadContext& ctx, int key_li
 
 std::string Section::key_path(const std::string& key) const {
   if (key.empty()) return path_;
-  return path_.empty() ? key : path_ + "." + key;
+  const auto from = lifted_.find(key);
+  const std::string name = from == lifted_.end() ? key : from->second + "." + key;
+  return path_.empty() ? name : path_ + "." + name;
 }
 
 namespace {
@@ -219,6 +221,31 @@ void Section::missing(const std::string& key) const {
       hint += " (block '" + path + "' is not in the scene file: --set " + shown(text) +
               " created it, so give its required keys too)";
   fail(key, "required key missing" + hint);
+}
+
+void Section::lift(const std::string& key) {
+  read_.push_back(key);
+  if (ctx_->documenting() || !has(key)) return;
+  const Section sub(node_[key], key_path(key), *ctx_, key_line_of(node_, key));
+  if (!sub.node_.IsMap()) return;
+  // A new map (node_ rebound, the scene's tree untouched) holding this block's pairs and the
+  // sub-block's, each key node with its own line.
+  YAML::Node merged(YAML::NodeType::Map);
+  for (auto it = node_.begin(); it != node_.end(); ++it) merged.force_insert(it->first, it->second);
+  for (auto it = sub.node_.begin(); it != sub.node_.end(); ++it) {
+    const std::string name = it->first.Scalar();
+    if (has(name))
+      sub.fail(name, "also given as " + key_path(name) + " (" + location(name) + "); give it once");
+    if (std::find(read_.begin(), read_.end(), name) != read_.end())
+      sub.fail(name, "belongs in " + path_ + " itself (it is read before " + key_path(key) + ")");
+    merged.force_insert(it->first, it->second);
+    lifted_[name] = key;
+  }
+  node_.reset(merged);
+}
+
+void Section::set_aside(const std::string& key) {
+  read_.push_back(key);
 }
 
 bool Section::has(const std::string& key) const {

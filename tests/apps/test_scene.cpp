@@ -1,9 +1,12 @@
 // Scene parsing: a valid scene reads back its values; each class of bad input gives one line
 // `FILE:LINE: KEY: what` and exit status 2; overrides apply and fail the same way.
+#include "emps/emps_spec.hpp"
 #include "fem/fem_spec.hpp"
 #include "fsi/core/error.hpp"
 #include "fsi_app/cli.hpp"
 #include "fsi_app/scene.hpp"
+#include "sph/sph_spec.hpp"
+#include "tlsph/tlsph_spec.hpp"
 
 #include <catch2/catch.hpp>
 #include <fstream>
@@ -130,6 +133,68 @@ TEST_CASE("apps: a bad override fails like a bad scene entry", "[apps][scene]") 
   r = cli({"check", scene, "--set", "time.end"});
   CHECK(r.status == 2);
   CHECK(r.err.find("expected key.path=value") != std::string::npos);
+}
+
+TEST_CASE("apps: a block named after a solver type holds its keys: any pair by two overrides",
+          "[apps][scene]") {
+  const std::string scene = data + "tiny_any_pair.yaml";
+  for (const std::string fluid : {"emps", "sph"})
+    for (const std::string structure : {"fem", "tlsph"}) {
+      INFO(fluid + " + " + structure);
+      const Scene s = load_scene(scene, {"fluid.type=" + fluid, "structures[0].type=" + structure});
+      REQUIRE(s.fluid->type == fluid);
+      REQUIRE(s.structures[0].type == structure);
+      // The chosen type's block is read as keys of the solver block.
+      if (fluid == "emps")
+        CHECK(dynamic_cast<const emps_plugin::FluidSpec&>(*s.fluid->spec).options.alpha_rep ==
+              1.0e7);
+      else
+        CHECK(dynamic_cast<const sph_plugin::SphSpec&>(*s.fluid->spec).options.dp == 4.0e-3);
+      if (structure == "fem") {
+        const auto& fem = dynamic_cast<const fem_plugin::StructureSpec&>(*s.structures[0].spec);
+        CHECK(fem.mesh.width == 0.012);
+        CHECK(fem.clamped == std::vector<std::string>{"bottom"});
+      } else {
+        const auto& tl = dynamic_cast<const tlsph_plugin::TlsphSpec&>(*s.structures[0].spec);
+        CHECK(tl.options.dp == 2.0e-3);
+        REQUIRE(tl.clamped.size() == 1);
+        CHECK(tl.clamped[0].max.y() == 0.0);
+      }
+      CHECK(cli({"check", scene, "--set", "fluid.type=" + fluid, "--set",
+                 "structures[0].type=" + structure})
+                .status == 0);
+    }
+  // The other types' blocks are checked by their plug-ins: a bad value there is named by its path.
+  auto r = cli({"check", scene, "--set", "fluid.sph.correction=bogus"});
+  CHECK(r.status == 2);
+  CHECK(r.err == scene + ": --set fluid.sph.correction=bogus: fluid.sph.correction: expected one "
+                         "of none, rkgc, got 'bogus'\n");
+  r = cli({"check", scene, "--set", "structures[0].tlsph.dp=-1"});
+  CHECK(r.err == scene + ": --set structures[0].tlsph.dp=-1: structures[0].tlsph.dp: must be > 0, "
+                         "got -1\n");
+  // A key both in the block and in the chosen type's block, or one read before it: named twice.
+  r = cli({"check", scene, "--set", "fluid.emps.l0=0.01"});
+  CHECK(r.status == 2);
+  CHECK(r.err == scene + ": --set fluid.emps.l0=0.01: fluid.emps.l0: also given as fluid.l0 (" +
+                     scene + ":23); give it once\n");
+  r = cli({"check", scene, "--set", "fluid.type=sph", "--set", "fluid.sph.type=emps"});
+  CHECK(r.err.find("fluid.sph.type: also given as fluid.type") != std::string::npos);
+  std::ifstream in(scene);
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string untyped = text.str();
+  untyped.erase(untyped.find("  type: emps\n"), 13); // the fluid's type by default
+  try {
+    parse_scene(untyped, "scene.yaml", {"fluid.emps.type=sph"});
+    FAIL("a type inside the type's block was accepted");
+  } catch (const fsi::InputError& e) {
+    CHECK(std::string(e.what()) == "scene.yaml: --set fluid.emps.type=sph: fluid.emps.type: "
+                                   "belongs in fluid itself (it is read before fluid.emps)");
+  }
+  // An EMPS key outside the emps block while the type is sph: named with where it could go.
+  r = cli({"check", FSI_SOURCE_DIR "/data/scenes/dam_break_rigid.yaml", "--set", "fluid.type=sph"});
+  CHECK(r.err.find("fluid.alpha_rep: is a key of fluid type emps, not of sph (remove it, or move "
+                   "it into a block fluid.emps: to keep it for that type)") != std::string::npos);
 }
 
 TEST_CASE("apps: docs/scenes.md is the generated scene reference", "[apps][scene]") {

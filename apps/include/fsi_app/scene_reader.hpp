@@ -87,6 +87,14 @@ public:
   std::vector<Section> list(const std::string& key, const std::string& doc);
 
   bool has(const std::string& key) const;
+  /// Reads sub-block `key` as part of this block: with `fluid.sph: {correction: none}`, lift("sph")
+  /// makes `correction` a key of `fluid`, messages still naming fluid.sph.correction and its line.
+  /// A key given both here and in the sub-block is an InputError naming both lines.
+  void lift(const std::string& key);
+  /// Marks `key` as read without reading it (a sub-block another reader has checked).
+  void set_aside(const std::string& key);
+  /// The block's keys and values, for a reader that checks a view of them.
+  const YAML::Node& node() const { return node_; }
   /// Every key present must have been read: anything else is an unknown key.
   void finish() const;
   /// Throws the one-line error for `key` of this block (or the block itself if key is empty).
@@ -108,6 +116,7 @@ private:
   ReadContext* ctx_;
   int key_line_;
   mutable std::vector<std::string> read_;
+  std::map<std::string, std::string> lifted_; ///< key -> the sub-block it was lifted from
 };
 
 /// Reads the options a component declares once (its visit_options, fsi/core/options.hpp) from

@@ -12,6 +12,7 @@
 
 #include <functional>
 #include <memory>
+#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -123,6 +124,9 @@ const std::vector<StructurePlugin>& structure_plugins();
 /// any scene is read; it then takes part in reading, the reference and building like the others.
 void add_fluid_plugin(FluidPlugin plugin);
 void add_structure_plugin(StructurePlugin plugin);
+/// The top-level keys a plug-in's `read` declares (read in documentation mode).
+std::set<std::string>
+declared_keys(const std::function<std::shared_ptr<const SolverSpec>(Section&)>& read);
 /// By name; nullptr for an unknown name.
 const FluidPlugin* find_fluid_plugin(std::string_view name);
 const StructurePlugin* find_structure_plugin(std::string_view name);

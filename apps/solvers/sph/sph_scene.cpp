@@ -9,25 +9,15 @@ namespace fsi::app::sph_plugin {
 
 namespace {
 
-// The top-level keys a fluid plug-in declares (its read in documentation mode).
-std::set<std::string> declared_keys(const FluidPlugin& plugin) {
-  ReadContext ctx;
-  ctx.collector = std::make_unique<std::vector<KeyDoc>>();
-  Section doc(YAML::Node(), "", ctx);
-  plugin.read(doc);
-  std::set<std::string> keys;
-  for (const KeyDoc& k : *ctx.collector) keys.insert(k.path.substr(0, k.path.find_first_of(".[")));
-  return keys;
-}
-
 // A key of another fluid type (e.g. emps' alpha_rep) given to sph: name it and its type.
 void refuse_foreign_keys(Section& s) {
-  const std::set<std::string> own = declared_keys(*find_fluid_plugin("sph"));
+  const std::set<std::string> own = declared_keys(find_fluid_plugin("sph")->read);
   for (const FluidPlugin& p : fluid_plugins()) {
     if (p.name == "sph") continue;
-    for (const std::string& key : declared_keys(p))
+    for (const std::string& key : declared_keys(p.read))
       if (!own.count(key) && s.has(key))
-        s.fail(key, "is a key of fluid type " + p.name + ", not of sph (remove it to run sph)");
+        s.fail(key, "is a key of fluid type " + p.name + ", not of sph (remove it, or move it " +
+                        "into a block " + s.path() + "." + p.name + ": to keep it for that type)");
   }
 }
 
