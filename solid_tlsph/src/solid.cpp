@@ -272,7 +272,9 @@ void TlsphSolid::build_interface(const SolidGeometry& geometry) {
   for (std::size_t i = 0; i < n; ++i) {
     const Vec2 X(X0_[i], Y0_[i]);
     // The nearest tagged edge places the particle along the outline (a corner particle
-    // belongs to every edge within the band; the first tagged one wins a tie).
+    // belongs to every edge within the band; the first tagged one wins a tie). Only a
+    // projection inside the edge counts: past a concave vertex (an interface edge ending on a
+    // clamp's face) it would land on the vertex, which has its own node.
     double best = std::numeric_limits<double>::max(), best_xi = 0.0;
     std::size_t best_e = m;
     for (std::size_t e = 0; e < m; ++e) {
@@ -281,7 +283,7 @@ void TlsphSolid::build_interface(const SolidGeometry& geometry) {
       const double d = point_segment_distance(X, a, b, &xi);
       if (d >= band) continue;
       surface_[i] = 1;
-      if (tagged(e) && d < best) best = d, best_e = e, best_xi = xi;
+      if (tagged(e) && d < best && xi > 0.0 && xi < 1.0) best = d, best_e = e, best_xi = xi;
     }
     if (best_e == m) continue;
     const Vec2 &a = outline[best_e], &b = outline[(best_e + 1) % m];

@@ -111,6 +111,26 @@ TEST_CASE("tlsph: the interface lies on the outline, ordered counter-clockwise",
   CHECK(mr.X0.front().y() == 0.0);
   CHECK(mr.X0.back().y() == 0.12);
   for (const auto& e : mr.edges) CHECK(mr.X0[e[2]].y() > mr.X0[e[0]].y()); // upwards on the right
+
+  // An interface edge between two concave vertices (a plate's top between its clamps, the ends
+  // extended 4 dp): the particles past each vertex are not projected onto it (they would land on
+  // the vertex, a zero-length edge), so 30 projections and the 2 vertices, dp apart or less.
+  const double e4 = 4.0 * o.dp;
+  o.interface_tags = {"top"};
+  TlsphSolid p(
+      fill_polygon(
+          {{-e4, -0.05}, {0.3 + e4, -0.05}, {0.3 + e4, 0.0}, {0.3, 0.0}, {0.0, 0.0}, {-e4, 0.0}},
+          {"bottom", "end", "end", "top", "end", "end"}, o.dp),
+      o);
+  const auto mp = p.interface_mesh();
+  CHECK(mp.node_count() == 32);
+  CHECK(mp.edges.size() == 31);
+  for (const auto& e : mp.edges) {
+    const double length = (mp.X0[e[2]] - mp.X0[e[0]]).norm();
+    CHECK(length > 0.49 * o.dp);
+    CHECK(length < 1.01 * o.dp);
+  }
+  for (const auto& X : mp.X0) CHECK((X.y() == 0.0 && X.x() >= 0.0 && X.x() <= 0.3));
 }
 
 TEST_CASE("tlsph: normals rotate with F, loads move the interface particles",
