@@ -407,7 +407,7 @@ TEST_CASE("sph: a wall group follows its rigid motion with step-averaged velocit
   CHECK(still == 0.0);
 }
 
-TEST_CASE("sph: tracked walls get the exact reaction; the reference code's form loses momentum",
+TEST_CASE("sph: tracked walls get the exact reaction, the reference code's form loses momentum",
           "[sph][wall]") {
   // A 0.1 m block slumping on a floor under gravity, all wall particles tracked: the fluid's
   // momentum change is M g t minus the impulse handed to the walls. The exact reaction closes it
