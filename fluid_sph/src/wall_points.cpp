@@ -29,18 +29,20 @@ void SphFluid::append_wall_points(const std::vector<WallPoint>& points) {
   }
 }
 
-void SphFluid::track_wall_forces(std::size_t first) {
+void SphFluid::track_wall_forces(std::size_t first, Reaction reaction) {
   if (first > walls_.size())
     throw InputError("fluid_sph: tracked walls from " + std::to_string(first) + " of " +
                      std::to_string(walls_.size()));
   tracked_ = first;
+  reaction_ = reaction;
   wfx_.assign(walls_.size() - first, 0.0);
   wfy_.assign(walls_.size() - first, 0.0);
   wall_viscous_reaction(); // for the current advection step
 }
 
 // The wall terms of first_half for each pair (i, a) with a tracked, times -V_i: the force on a,
-// plus the viscous force of this advection step (kept in fvx, fvy).
+// plus the viscous force of this advection step (kept in fvx, fvy). Reaction::reference_code
+// takes B_i = I in the pressure part (the reference code's reaction, method notes).
 // Sequential scatter over the fluid particles (deterministic for any thread count).
 void SphFluid::wall_reaction() {
   const auto& f = fluid_;
@@ -51,9 +53,11 @@ void SphFluid::wall_reaction() {
             wfx_.begin());
   std::copy(walls_.fvy.begin() + static_cast<std::ptrdiff_t>(tracked_), walls_.fvy.end(),
             wfy_.begin());
+  const bool exact = reaction_ == Reaction::exact;
   for (std::size_t i = 0; i < f.size(); ++i) {
     const double p_i = f.p[i], vx_i = f.vx[i], vy_i = f.vy[i], rho_i = f.rho[i];
-    const double b00 = f.b00[i], b01 = f.b01[i], b11 = f.b11[i], V_i = f.vol[i];
+    const double b00 = exact ? f.b00[i] : 1.0, b01 = exact ? f.b01[i] : 0.0;
+    const double b11 = exact ? f.b11[i] : 1.0, V_i = f.vol[i];
     for (std::uint32_t k = wstart_[i]; k < wstart_[i + 1]; ++k) {
       const std::uint32_t a = wj_[k];
       if (a < tracked_) continue;

@@ -117,10 +117,15 @@ public:
   /// points): before each advance set x, y, nx, ny at the step's end and vx, vy, ax, ay averaged
   /// over it (eq. 17); the pairs follow at the next advection step, as for a WallMotion.
   WallParticles& moved_walls() { return walls_; }
+  /// How the force on a tracked wall is formed. exact: the reaction of the wall terms the fluid
+  /// particles felt (action = -reaction). reference_code: the RKGC paper's code, whose reaction
+  /// takes the dummy pressure of eq. 16 without B_i (method notes): a measurement of the momentum
+  /// it does not conserve (bench/fluid_sph/interface_momentum.cpp), not a model to run with.
+  enum class Reaction { exact, reference_code };
   /// From now on the force of the fluid on each wall particle a >= first is kept: wall_force(a)
-  /// after each advance, N/m, the exact reaction of the wall terms the fluid particles felt in
-  /// that acoustic step (eqs. 15-17 and the no-slip viscous term frozen over Dt).
-  void track_wall_forces(std::size_t first);
+  /// after each advance, N/m, formed as `reaction` says (eqs. 15-17 and the no-slip viscous term
+  /// frozen over Dt).
+  void track_wall_forces(std::size_t first, Reaction reaction = Reaction::exact);
   Vec2 wall_force(std::size_t a) const { return {wfx_[a - tracked_], wfy_[a - tracked_]}; }
 
   /// The acoustic step allowed now: min(acoustic criterion, what is left of the current Dt), or
@@ -219,6 +224,7 @@ private:
   std::size_t removed_ = 0;
   std::size_t tracked_ = static_cast<std::size_t>(-1); // first tracked wall particle
   std::vector<double> wfx_, wfy_;                      // their force, last acoustic step
+  Reaction reaction_ = Reaction::exact;
 };
 
 /// Lattice points (x0 + (i + 1/2) dp, y0 + (j + 1/2) dp) inside the rectangle [lo, hi].
