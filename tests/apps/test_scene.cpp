@@ -100,6 +100,8 @@ TEST_CASE("apps: each class of bad input names file, line and key, exit status 2
        ":11: structures[0].region.file: ", "the boundary is more than one loop"},
       {"bad_tlsph_mesh_pinched.yaml",
        ":11: structures[0].region.file: ", "the boundary touches itself at node 3 (0.01, 0.01)"},
+      {"bad_tlsph_mesh_two_groups.yaml", ":11: structures[0].region.file: ",
+       "is in two physical groups, 'left' and 'wall' (a side has one tag)"},
       {"bad_tlsph_mesh_tag.yaml", ":14: structures[0].interface: ",
        "no region edge is tagged 'wall' (the region's tags: bottom, left, right, top)"},
   };
