@@ -89,14 +89,13 @@ TlsphModel::TlsphModel(const Scene& scene, const StructureBlock& block)
       adapter_(std::make_unique<Adapter>(*this)) {
   for (const auto& p : scene.output.probes) {
     if (p.structure != block.name) continue;
-    tlsph::ProbeStencil stencil{{static_cast<std::uint32_t>(solid_->nearest_particle(*p.point))},
-                                {1.0}};
-    if (p.interpolate) try {
-        stencil = solid_->interpolation_stencil(*p.point);
-      } catch (const InputError& e) {
-        fail_at(scene, p.line, p.key + ".point", e.what());
-      }
-    probe_stencils_.emplace_back(p.name, std::move(stencil));
+    const auto nearest = static_cast<std::uint32_t>(solid_->nearest_particle(*p.point));
+    try { // the kernel interpolation at the point, or its nearest particle with weight 1
+      probe_stencils_.emplace_back(p.name, p.interpolate ? solid_->interpolation_stencil(*p.point)
+                                                         : tlsph::ProbeStencil{{nearest}, {1.0}});
+    } catch (const InputError& e) {
+      fail_at(scene, p.line, p.key + ".point", e.what());
+    }
   }
 }
 
