@@ -92,12 +92,17 @@ ProbeSpec read_probe(Section s) {
                         "N/m, of the last step");
   p.structure = s.text("structure", "", "structure name, for displacement probes");
   p.node = s.optional_integer("node", Range::non_negative(), "FE node index (or give point)");
-  p.point = s.optional_vec2("point", "reference position of the FE node, or the fluid point, m");
+  p.point = s.optional_vec2(
+      "point", "reference position of the FE node or the TL-SPH point, or the fluid point, m");
   p.box_min = s.optional_vec2("min", "mean_pressure: lower-left corner of the box, m");
   p.box_max = s.optional_vec2("max", "mean_pressure: upper-right corner of the box, m");
   p.part = s.choice("part", kForceParts, "total",
                     "wall_force: the wall term carried: pressure (mirror, eqs. 25-26), repulsive "
                     "(eq. 27 and wall damping), viscous (eq. 24) or their total");
+  p.interpolate = s.boolean("interpolate", false,
+                            "(type tlsph) displacement at point by the kernel interpolation of "
+                            "the particles' displacements (linear correction, reference "
+                            "configuration); false: the particle nearest to point");
   if (!s.context().documenting()) {
     const bool ok_name = !p.name.empty() && std::all_of(p.name.begin(), p.name.end(), [](char c) {
       return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
@@ -106,6 +111,8 @@ ProbeSpec read_probe(Section s) {
     const auto on = structure_quantities();
     const bool on_structure = std::find(on.begin(), on.end(), p.quantity) != on.end();
     if (on_structure && p.structure.empty()) s.fail("structure", "required key missing");
+    if (p.interpolate && !on_structure)
+      s.fail("interpolate", "only a structure's displacement probes interpolate");
     if (p.quantity == "pressure" && !p.point) s.fail("point", "required key missing");
     if (p.quantity == "mean_pressure") {
       if (!p.box_min) s.fail("min", "required key missing");

@@ -754,18 +754,6 @@ std::size_t TlsphSolid::nearest_particle(const Vec2& X) const {
   return best;
 }
 
-Vec2 TlsphSolid::interpolate_displacement(const Vec2& X) const {
-  const particles::WendlandC2 kernel(h_);
-  Vec2 sum = Vec2::Zero();
-  double weight = 0.0;
-  for (std::size_t i = 0; i < size(); ++i) {
-    const double w = kernel.W((Vec2(X0_[i], Y0_[i]) - X).norm()) * V0_[i];
-    sum += w * displacement(i), weight += w;
-  }
-  if (!(weight > 0.0)) throw InputError("tlsph: probe point outside the solid's support");
-  return sum / weight;
-}
-
 TlsphEnergies TlsphSolid::energies() const {
   struct Sum {
     double k, s, g;

@@ -92,6 +92,18 @@ TEST_CASE("apps: each class of bad input names file, line and key, exit status 2
       {"bad_probe_node.yaml", ":12: output.probes[0].node: ", "node 45 does not exist"},
       {"bad_probe_point.yaml", ":12: output.probes[0].point: ", "no node of structure 'beam'"},
       {"bad_yaml_syntax.yaml", ":4: yaml: ", "end of sequence"},
+      // A TL-SPH region from a Gmsh mesh (structures[].region.file).
+      {"bad_tlsph_mesh_missing.yaml", ":11: structures[0].region.file: ", "file not found"},
+      {"bad_tlsph_mesh_no_triangles.yaml",
+       ":11: structures[0].region.file: ", "the mesh has no T6 elements"},
+      {"bad_tlsph_mesh_hole.yaml",
+       ":11: structures[0].region.file: ", "the boundary is more than one loop"},
+      {"bad_tlsph_mesh_pinched.yaml",
+       ":11: structures[0].region.file: ", "the boundary touches itself at node 3 (0.01, 0.01)"},
+      {"bad_tlsph_mesh_two_groups.yaml", ":11: structures[0].region.file: ",
+       "is in two physical groups, 'left' and 'wall' (a side has one tag)"},
+      {"bad_tlsph_mesh_tag.yaml", ":14: structures[0].interface: ",
+       "no region edge is tagged 'wall' (the region's tags: bottom, left, right, top)"},
   };
   for (const auto& c : cases) {
     INFO(c.file);

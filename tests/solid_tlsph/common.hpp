@@ -141,6 +141,20 @@ inline Vec2 elastica_point(double k, double s, double axial = 0.0, double shear 
   return {z[2], z[3]};
 }
 
+/// The patch tests' linear displacement field u = A X + c (A not symmetric, |A| ~ 0.02).
+struct LinearField {
+  fsi::Mat2 A = (fsi::Mat2() << 0.013, -0.021, 0.007, 0.017).finished();
+  Vec2 c{0.3, -0.2};
+  Vec2 at(const Vec2& X) const { return A * X + c; }
+  /// Moves every particle of s to X0 + u(X0).
+  void apply(TlsphSolid& s) const {
+    std::vector<Vec2> x(s.size());
+    for (std::size_t i = 0; i < s.size(); ++i)
+      x[i] = s.reference_position(i) + at(s.reference_position(i));
+    s.set_positions(x);
+  }
+};
+
 /// dPi/dx_k of the strain energy at positions x by a central difference (step 1e-7).
 inline Vec2 strain_energy_gradient(TlsphSolid& s, const std::vector<Vec2>& x, std::size_t k) {
   const double d = 1e-7;

@@ -29,14 +29,9 @@ struct PatchErrors {
 
 /// Max |F - (I + A)| over interior and surface particles for u = A X + c.
 PatchErrors patch(TlsphSolid& s) {
-  fsi::Mat2 A;
-  A << 0.013, -0.021, 0.007, 0.017;
-  const Vec2 c(0.3, -0.2);
-  std::vector<Vec2> x(s.size());
-  for (std::size_t i = 0; i < s.size(); ++i)
-    x[i] = s.reference_position(i) + A * s.reference_position(i) + c;
-  s.set_positions(x);
-  const fsi::Mat2 F_exact = fsi::Mat2::Identity() + A;
+  const LinearField u;
+  u.apply(s);
+  const fsi::Mat2 F_exact = fsi::Mat2::Identity() + u.A;
   PatchErrors e;
   for (std::size_t i = 0; i < s.size(); ++i) {
     const double err = (s.deformation_gradient(i) - F_exact).cwiseAbs().maxCoeff();

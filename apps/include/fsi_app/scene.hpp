@@ -28,6 +28,7 @@ struct ProbeSpec {
   std::optional<Vec2> point; ///< reference position of a node / a fluid point
   std::optional<Vec2> box_min, box_max; ///< mean_pressure: the box averaged over
   std::string part = "total";           ///< wall_force: total|pressure|repulsive|viscous
+  bool interpolate = false;             ///< tlsph: kernel interpolation at point, not nearest
   int line = 0;                         ///< scene line, for late messages
   std::string key;                      ///< its path in messages, `output.probes[2]`
 };

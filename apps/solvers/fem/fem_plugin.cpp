@@ -63,6 +63,7 @@ void check(const Scene& scene, std::size_t index, Section& s, std::vector<Sectio
     const auto& p = scene.output.probes[i];
     if (p.structure != block.name) continue;
     if (!p.node && !p.point) probes[i].fail("", "give node or point");
+    if (p.interpolate) probes[i].fail("interpolate", "an FE probe samples its node");
     if (st.mesh.kind == "rectangle") check_rectangle_probe(st.mesh, p, probes[i]);
     if (p.quantity.ends_with("_tank") && st.clamped_motion.empty())
       probes[i].fail("quantity", "'" + p.quantity + "' needs structure '" + p.structure +

@@ -87,9 +87,16 @@ TlsphModel::TlsphModel(const Scene& scene, const StructureBlock& block)
     : StructurePart(block.name), outline_(block.as<TlsphSpec>().outline),
       solid_(build_solid(scene, block)), interface_(solid_->interface_mesh()),
       adapter_(std::make_unique<Adapter>(*this)) {
-  for (const auto& p : scene.output.probes)
-    if (p.structure == block.name)
-      probe_particles_.emplace_back(p.name, solid_->nearest_particle(*p.point));
+  for (const auto& p : scene.output.probes) {
+    if (p.structure != block.name) continue;
+    const auto nearest = static_cast<std::uint32_t>(solid_->nearest_particle(*p.point));
+    try { // the kernel interpolation at the point, or its nearest particle with weight 1
+      probe_stencils_.emplace_back(p.name, p.interpolate ? solid_->interpolation_stencil(*p.point)
+                                                         : tlsph::ProbeStencil{{nearest}, {1.0}});
+    } catch (const InputError& e) {
+      fail_at(scene, p.line, p.key + ".point", e.what());
+    }
+  }
 }
 
 TlsphModel::~TlsphModel() = default;
@@ -125,9 +132,9 @@ void TlsphModel::write_frame(FieldsFile& file, const std::vector<std::string>& f
 }
 
 std::optional<double> TlsphModel::probe(const ProbeSpec& probe) const {
-  for (const auto& [name, i] : probe_particles_)
+  for (const auto& [name, stencil] : probe_stencils_)
     if (name == probe.name)
-      return solid_->displacement(i)[probe.quantity == "displacement_y" ? 1 : 0];
+      return solid_->displacement_at(stencil)[probe.quantity == "displacement_y" ? 1 : 0];
   return std::nullopt;
 }
 

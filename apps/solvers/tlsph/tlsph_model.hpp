@@ -18,7 +18,8 @@ public:
   void advance(double time, double dt) override;
   /// The particles as a point grid named after the structure.
   void write_frame(FieldsFile& file, const std::vector<std::string>& fields) const override;
-  /// displacement_x / displacement_y of the particle nearest the probe's point.
+  /// displacement_x / displacement_y at the probe's point: its nearest particle's, or the
+  /// kernel interpolation (interpolate: true).
   std::optional<double> probe(const ProbeSpec& probe) const override;
   void report(JsonObject& run) const override;
   /// The solid and its counters under "structures/<name>/".
@@ -35,7 +36,7 @@ private:
   std::vector<Vec2> outline_;
   std::unique_ptr<tlsph::TlsphSolid> solid_;
   InterfaceMesh interface_;
-  std::vector<std::pair<std::string, std::size_t>> probe_particles_; // probe name -> particle
+  std::vector<std::pair<std::string, tlsph::ProbeStencil>> probe_stencils_; // by probe name
   std::unique_ptr<Adapter> adapter_;
   long steps_ = 0, substeps_ = 0;
   mutable std::vector<double> xy_, u_, v_; // output buffers

@@ -23,7 +23,8 @@ void check(const Scene& scene, std::size_t index, Section& s, std::vector<Sectio
     s.fail("interface", "a structure coupled to the fluid needs the sides it is wetted on");
   for (std::size_t i = 0; i < scene.output.probes.size(); ++i)
     if (scene.output.probes[i].structure == block.name && !scene.output.probes[i].point)
-      probes[i].fail("point", "required key missing (the particle nearest to it is probed)");
+      probes[i].fail("point", "required key missing (the particle nearest to it, or the kernel "
+                              "interpolation at it, is probed)");
 }
 
 // Per particle: the FieldSet arrays (about 40 doubles and flags), the reference neighbour rows

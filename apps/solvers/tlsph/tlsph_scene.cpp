@@ -1,7 +1,10 @@
 // The TL-SPH solid's scene keys, each declared once where it is read.
 #include "tlsph/tlsph_spec.hpp"
 
+#include "fsi/core/error.hpp"
 #include "fsi_app/material_reader.hpp"
+#include "structure_fem/gmsh_reader.hpp"
+#include "tlsph/tlsph_mesh_outline.hpp"
 
 #include <algorithm>
 
@@ -19,10 +22,33 @@ Box read_box(Section s, const std::string& what) {
   return b;
 }
 
-// A rectangle (sides tagged bottom, right, top, left) or a counter-clockwise polygon with a tag
-// per edge (default: every edge "boundary").
+// "a, b, c": the distinct names, sorted.
+std::string listed(std::vector<std::string> names) {
+  std::sort(names.begin(), names.end());
+  names.erase(std::unique(names.begin(), names.end()), names.end());
+  std::string all;
+  for (const auto& n : names) all += (all.empty() ? "" : ", ") + n;
+  return all;
+}
+
+// A rectangle (sides tagged bottom, right, top, left), a counter-clockwise polygon with a tag
+// per edge (default: every edge "boundary") or a Gmsh mesh's boundary (tlsph_mesh_outline.hpp).
 void read_region(Section s, TlsphSpec& t) {
   const bool doc = s.context().documenting();
+  if (doc || s.has("file")) {
+    const auto file = s.file(
+        "file", "Gmsh .msh of the region, as the fem type's mesh.file (format 4.1 ASCII or "
+                "binary, or 2.2 ASCII; 6-node triangles): its boundary, one loop without holes, "
+                "filled like a polygon; each edge tagged with its line's physical group (none: "
+                "'boundary')");
+    if (!doc && s.has("polygon")) s.fail("file", "give a polygon or a file, not both");
+    if (!doc) try {
+        MeshOutline mesh = mesh_outline(fem::read_gmsh(file.string()));
+        t.outline = std::move(mesh.outline), t.tags = std::move(mesh.tags);
+      } catch (const InputError& e) {
+        s.fail("file", e.what());
+      }
+  }
   if (doc || s.has("polygon")) {
     t.outline = s.points("polygon", 3,
                          "counter-clockwise polygon filled with particles (lattice from the lower-"
@@ -41,7 +67,7 @@ void read_region(Section s, TlsphSpec& t) {
     }
     if (!doc && !(twice > 0.0)) s.fail("polygon", "must be counter-clockwise (solid on the left)");
   }
-  if (doc || !s.has("polygon")) {
+  if (doc || (!s.has("polygon") && !s.has("file"))) {
     const Vec2 lo = s.vec2("min", "lower-left corner of a rectangle filled with particles at dp "
                                   "from it; sides tagged bottom, right, top, left, m");
     const Vec2 hi = s.vec2("max", "upper-right corner, m");
@@ -61,7 +87,9 @@ std::shared_ptr<const SolverSpec> read_tlsph(Section& s) {
   auto spec = std::make_shared<TlsphSpec>();
   TlsphSpec& t = *spec;
   const bool doc = s.context().documenting();
-  read_region(s.required_block("region", "the solid: a rectangle (min, max) or a polygon"), t);
+  read_region(s.required_block("region", "the solid: a rectangle (min, max), a polygon or a Gmsh "
+                                         "mesh (file)"),
+              t);
   OptionReader reader(s);
   tlsph::visit_options(t.options, reader);
   auto mat = s.required_block("material", "hyperelastic material (materials/)");
@@ -86,7 +114,8 @@ std::shared_ptr<const SolverSpec> read_tlsph(Section& s) {
                        std::to_string(size.y()) + " m)");
     for (const auto& tag : t.options.interface_tags)
       if (std::find(t.tags.begin(), t.tags.end(), tag) == t.tags.end())
-        s.fail("interface", "no region edge is tagged '" + tag + "'");
+        s.fail("interface", "no region edge is tagged '" + tag +
+                                "' (the region's tags: " + listed(t.tags) + ")");
   }
   return spec;
 }

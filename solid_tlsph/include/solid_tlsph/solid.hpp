@@ -50,6 +50,13 @@ struct Clamp {
   Vec2 face_normal{0.0, 0.0};
 };
 
+/// A probe's displacement as a fixed combination of particle displacements,
+/// u = sum_k weights[k] u(particles[k]) (the nearest particle: one entry of weight 1).
+struct ProbeStencil {
+  std::vector<std::uint32_t> particles;
+  std::vector<double> weights;
+};
+
 /// How the reference kernel gradient is corrected (eq. 14 or its second-order extension).
 enum class GradientCorrection {
   /// The paper's B0 (eq. 14): F exact for linear displacement fields. At a surface particle the
@@ -183,8 +190,17 @@ public:
   std::vector<double> von_mises() const;
   /// Index of the particle whose reference position is nearest to X0 (a probe).
   std::size_t nearest_particle(const Vec2& X0) const;
-  /// Kernel interpolation of the displacement at reference point X0, sum u_b W V_b / sum W V_b.
-  Vec2 interpolate_displacement(const Vec2& X0) const;
+  /// Kernel interpolation at reference point X0 with the linear correction (probe.cpp): the
+  /// weighted least-squares fit u(X) = a + G (X - X0) over the particles b within 2h, weights
+  /// W(|X_b - X0|) V_b, gives u(X0) = a = sum_b c_b u_b. Exact for linear displacement fields
+  /// (at the surface too); Shepard's sum u_b W V_b / sum W V_b where the support is symmetric.
+  /// Throws InputError when the particles within 2h do not span the plane (X0 off the solid).
+  ProbeStencil interpolation_stencil(const Vec2& X0) const;
+  /// sum_k weights[k] u(particles[k]).
+  Vec2 displacement_at(const ProbeStencil& stencil) const;
+  Vec2 interpolate_displacement(const Vec2& X0) const {
+    return displacement_at(interpolation_stencil(X0));
+  }
   TlsphEnergies energies() const;
 
   /// Sets positions and velocities (e.g. an initial velocity or a prescribed displacement field
