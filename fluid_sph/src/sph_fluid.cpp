@@ -547,16 +547,20 @@ void SphFluid::build_pairs() {
                    where(behind, step_, t_));
 }
 
+double SphFluid::kernel_sum(std::size_t i) const {
+  double sigma = kernel_.W(0.0);
+  for (std::uint32_t k = pstart_[i]; k < pstart_[i + 1]; ++k) sigma += kernel_.W(pr_[k]);
+  for (std::uint32_t k = wstart_[i]; k < wstart_[i + 1]; ++k) sigma += kernel_.W(wr_[k]);
+  return sigma;
+}
+
 void SphFluid::reinitialise_density() {
   auto& f = fluid_;
-  const double w0 = kernel_.W(0.0), rho0 = options_.rho0, inv_sigma0 = 1.0 / sigma0_;
+  const double rho0 = options_.rho0, inv_sigma0 = 1.0 / sigma0_;
   const bool free_surface = options_.free_surface;
   const double dp2 = options_.dp * options_.dp;
   parallel_for(f.size(), [&](std::size_t i) {
-    double sigma = w0;
-    for (std::uint32_t k = pstart_[i]; k < pstart_[i + 1]; ++k) sigma += kernel_.W(pr_[k]);
-    for (std::uint32_t k = wstart_[i]; k < wstart_[i + 1]; ++k) sigma += kernel_.W(wr_[k]);
-    const double rho_sum = rho0 * sigma * inv_sigma0;
+    const double rho_sum = rho0 * kernel_sum(i) * inv_sigma0;
     if (free_surface) {
       f.rho[i] = std::max(rho_sum, rho0);
       f.vol[i] = dp2;
@@ -714,8 +718,11 @@ double SphFluid::pressure_at(const Vec2& point) const {
 }
 
 double SphFluid::surge_front() const {
+  // The largest x of the bulk, as the EMPS fluid's probe (pnd >= n0/2): a particle whose kernel
+  // sum is below sigma0 / 2 (fewer than about half a support of neighbours) is spray, skipped.
   double front = -std::numeric_limits<double>::max();
-  for (std::size_t i = 0; i < fluid_.size(); ++i) front = std::max(front, fluid_.x[i]);
+  for (std::size_t i = 0; i < fluid_.size(); ++i)
+    if (kernel_sum(i) >= 0.5 * sigma0_) front = std::max(front, fluid_.x[i]);
   return front;
 }
 

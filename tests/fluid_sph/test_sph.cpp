@@ -69,6 +69,18 @@ TEST_CASE("sph: sigma0 is the lattice sum of the Wendland C2 kernel", "[sph]") {
       CHECK_THAT(p.rho[i], WithinRel(1000.0, 1e-13));
 }
 
+TEST_CASE("sph: the surge front is the bulk's, a drop ahead of it is spray", "[sph]") {
+  const double dp = 0.01;
+  auto x = sph::fill_rectangle({0, 0}, {0.1, 0.1}, dp); // largest x 0.095
+  x.push_back({0.5, 0.05});                             // a lone particle: kernel sum W(0)
+  x.push_back({0.108, 0.05}); // touching the block: about a third of a support
+  sph::SphFluid f(base(dp), x);
+  CHECK(f.surge_front() == 0.095);
+  // One more lattice column on the face: the particle at 0.108 is then inside the bulk, counted.
+  for (double y = 0.005; y < 0.1; y += dp) x.push_back({0.105, y});
+  CHECK(sph::SphFluid(base(dp), x).surge_front() == 0.108);
+}
+
 TEST_CASE("sph: RKGC gradient consistency on a disordered set and its convergence order",
           "[sph][consistency]") {
   // Lattice perturbed by 0.1 dp: B_i = A_i^-1 (eq. 19) makes the gradient of a linear field exact

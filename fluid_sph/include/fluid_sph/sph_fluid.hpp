@@ -155,7 +155,7 @@ public:
   Vec2 momentum() const;
   /// Kernel-weighted (Shepard) pressure at a point, from the fluid particles within 2h; 0 if none.
   double pressure_at(const Vec2& point) const;
-  /// Largest x of the fluid particles (the surge front of a dam break).
+  /// Largest x of the bulk fluid (kernel sum >= sigma0 / 2): the surge front of a dam break.
   double surge_front() const;
   /// Pressure of the last step, p = c0^2 (rho - rho0), per particle.
   double pressure(std::size_t i) const { return fluid_.p[i]; }
@@ -193,6 +193,8 @@ private:
   void per_advection_step(); // wrap, remove, sort, pairs, density, B, viscous, transport, Dt
   void build_pairs();        // from xb, yb (fluid) and xb, yb (walls)
   void reinitialise_density();
+  /// sum_j W_ij over fluid i's fluid and wall neighbours and itself, at the last list build.
+  double kernel_sum(std::size_t i) const;
   void correction_matrices();
   void prior_acceleration();
   void transport_shift();
