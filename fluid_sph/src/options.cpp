@@ -31,6 +31,9 @@ void visit_options(SphOptions& o, OptionVisitor& v) {
   v.real("acoustic_cfl", o.acoustic_cfl, Range::left_open(0.0, 1.0),
          "acoustic step dt = acoustic_cfl h / max(c0 + |v|, sqrt(4 h |a|)) (sph steps by its own "
          "criteria: time.courant is not used)");
+  v.real("fixed_dt", o.fixed_dt, Range::non_negative(),
+         "> 0: every acoustic step is fixed_dt, s, and the advection step Dt a whole number of "
+         "them (a hydrostatic case); 0: both steps by the dual criteria");
 }
 
 } // namespace fsi::sph

@@ -67,6 +67,10 @@ TEST_CASE("sph plug-in: the EMPS scene's shared keys, another type's keys refuse
   CHECK(o.correction == sph::Correction::rkgc);
   CHECK(o.h_over_dp == 1.3);
   CHECK(o.u_advection() == 2.0); // u_ref 0: sound_speed / 10
+  CHECK(o.fixed_dt == 0.0);        // the dual criteria
+  const Scene fixed = load_scene(FSI_SOURCE_DIR "/data/scenes/dam_break_rigid_sph.yaml",
+                                 {"fluid.fixed_dt=2.5e-5"});
+  CHECK(sph_plugin::sph_options(fixed).fixed_dt == 2.5e-5);
   // The EMPS scene itself with --set fluid.type=sph: its EMPS-only key is named, with its type.
   const std::string emps_only =
       error_of(slurp(FSI_SOURCE_DIR "/data/scenes/dam_break_rigid.yaml"), {"fluid.type=sph"});
@@ -85,6 +89,9 @@ TEST_CASE("sph plug-in: the EMPS scene's shared keys, another type's keys refuse
   CHECK(error_of(sph_scene("  wkgc_alpha: 2.0\n  regions:\n    - min: [0, 0]\n      max: [0.1, "
                            "0.1]\n"))
             .find("fluid.wkgc_alpha") != std::string::npos);
+  CHECK(error_of(sph_scene("  fixed_dt: -1.0e-5\n  regions:\n    - min: [0, 0]\n      max: [0.1, "
+                           "0.1]\n"))
+            .find("fluid.fixed_dt") != std::string::npos);
   CHECK(error_of(sph_scene("  transport_velocity: true\n  regions:\n    - min: [0, 0]\n      "
                            "max: [0.1, 0.1]\n"))
             .find("fluid.transport_velocity: needs free_surface: false") != std::string::npos);
