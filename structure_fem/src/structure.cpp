@@ -143,6 +143,7 @@ void Structure::newton(Vector& u, Residual&& residual, StepReport& report) {
   const double force_scale = dofs_->restrict_to_free(f_ext_next_ + f_g_).norm();
   report.history.clear();
   report.halvings = 0;
+  report.roundoff_stops = 0;
   Vector R, du;
   double R_ref = 0.0;
   residual(u, R);
@@ -157,10 +158,14 @@ void Structure::newton(Vector& u, Residual&& residual, StepReport& report) {
     const bool increment_ok = k == 0 ? r <= o.residual_atol
                                      : report.history.back().increment_norm <=
                                            o.increment_atol + o.increment_rtol * u.norm();
+    const auto& h = report.history;
     const bool at_roundoff =
-        k > 0 && report.history.back().increment_norm <= o.roundoff_rtol * u.norm();
+        (k > 0 && h.back().increment_norm <= o.roundoff_rtol * u.norm()) ||
+        (residual_ok && k >= 2 &&
+         h[h.size() - 1].increment_norm > 0.5 * h[h.size() - 2].increment_norm);
     if ((residual_ok && increment_ok) || at_roundoff) {
       report.iterations = k;
+      if (!(residual_ok && increment_ok)) report.roundoff_stops = 1;
       return;
     }
     if (k == o.max_iterations) {
@@ -210,6 +215,7 @@ const StepReport& Structure::advance(double dt) {
         const StepReport r = step(i == n ? start.time + dt - state_.time : dt / n);
         total.iterations += r.iterations;
         total.halvings += r.halvings;
+        total.roundoff_stops += r.roundoff_stops;
         total.final_residual = r.final_residual;
         total.history.insert(total.history.end(), r.history.begin(), r.history.end());
       }

@@ -132,3 +132,40 @@ TEST_CASE("fem: Newton failure is a RunError naming the step", "[structure_fem][
   CHECK_THROWS_WITH(s.solve_static({1}),
                     Catch::Contains("Newton did not converge") && Catch::Contains("load step 1"));
 }
+
+TEST_CASE("fem: Newton ends at the round-off floor once the residual is met and the increment "
+          "stops halving",
+          "[structure_fem][newton]") {
+  // An increment tolerance no double can meet (and the 1e-13 floor test off): the iteration can
+  // only end by the stall test, with the residual met and the solution unchanged. L / h = 10:
+  // the residual's round-off floor lies below its tolerance (at L / h = 100 it does not, and the
+  // 1e-13 floor test ends the loop).
+  Beam b = slender_beam();
+  b.h = 0.1, b.E = 12.0 / (b.h * b.h * b.h);
+  b.ex = 40, b.ey = 4;
+  auto options = beam_options(b);
+  options.newton.increment_rtol = 0.0;
+  options.newton.increment_atol = 0.0;
+  options.newton.roundoff_rtol = 0.0;
+  options.newton.max_iterations = 40;
+  Structure s(beam_mesh(b), options);
+  s.set_external_forces(tip_load(s.mesh(), b, 1.0));
+  const auto reports = s.solve_static({2});
+  const int tip = tip_node(s.mesh(), b);
+  const ElasticaTip ref = elastica(1.0);
+  for (const auto& r : reports) {
+    const auto& h = r.history;
+    INFO("iterations " << r.iterations << ", last increments " << h[h.size() - 2].increment_norm
+                       << ", " << h.back().increment_norm << ", residual " << r.final_residual);
+    CHECK(r.roundoff_stops == 1);
+    CHECK(r.iterations < 40);
+    CHECK(h.back().increment_norm > 0.5 * h[h.size() - 2].increment_norm);
+    CHECK(r.final_residual <= options.newton.residual_atol +
+                                  options.newton.residual_rtol * h.front().residual_norm);
+  }
+  CHECK_THAT(-s.displacement()[2 * tip + 1], Catch::Matchers::WithinRel(ref.v, 0.02));
+  // With the default tolerances the same load ends by the increment test, not at the floor.
+  Structure d(beam_mesh(b), beam_options(b));
+  d.set_external_forces(tip_load(d.mesh(), b, 1.0));
+  for (const auto& r : d.solve_static({2})) CHECK(r.roundoff_stops == 0);
+}

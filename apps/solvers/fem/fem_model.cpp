@@ -211,6 +211,7 @@ void FemModel::advance(double /*time*/, double dt) {
   newton_halvings_ += report.halvings;
   steps_with_halvings_ += report.halvings > 0 ? 1 : 0;
   if (report.substeps > 1) ++substepped_steps_, substeps_ += report.substeps;
+  roundoff_stops_ += report.roundoff_stops;
   ++steps_;
 }
 
@@ -258,6 +259,7 @@ void FemModel::write_state(StateArchive& archive) const {
   archive.put("run/" + prefix + "halvings",
               std::vector<std::int64_t>{newton_halvings_, steps_with_halvings_, substepped_steps_,
                                         substeps_});
+  archive.put("run/" + prefix + "roundoff_stops", std::vector<std::int64_t>{roundoff_stops_});
 }
 
 void FemModel::read_state(const StateArchive& archive) {
@@ -270,6 +272,8 @@ void FemModel::read_state(const StateArchive& archive) {
     newton_halvings_ = h[0], steps_with_halvings_ = h[1];
     substepped_steps_ = h[2], substeps_ = h[3];
   }
+  if (archive.all_integers().count("run/" + prefix + "roundoff_stops")) // absent before the count
+    roundoff_stops_ = archive.integers("run/" + prefix + "roundoff_stops", 1)[0];
 }
 
 void FemModel::report(JsonObject& run) const {
@@ -282,7 +286,8 @@ void FemModel::report(JsonObject& run) const {
       .add("newton_halvings", static_cast<long long>(newton_halvings_))
       .add("steps_with_newton_halvings", static_cast<long long>(steps_with_halvings_))
       .add("substepped_steps", static_cast<long long>(substepped_steps_))
-      .add("substeps", static_cast<long long>(substeps_));
+      .add("substeps", static_cast<long long>(substeps_))
+      .add("newton_roundoff_stops", static_cast<long long>(roundoff_stops_));
   run.add("structure_" + name(), s);
 }
 

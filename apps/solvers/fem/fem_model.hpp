@@ -70,6 +70,7 @@ private:
   int newton_max_ = 0;
   long newton_halvings_ = 0, steps_with_halvings_ = 0; ///< Newton safeguard (Structure::newton)
   long substepped_steps_ = 0, substeps_ = 0;           ///< retried steps, their sub-steps
+  long roundoff_stops_ = 0; ///< Newton solves ended at the round-off floor (fem::NewtonOptions)
 };
 
 } // namespace fsi::app::fem_plugin

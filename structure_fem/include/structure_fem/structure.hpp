@@ -27,7 +27,11 @@ namespace fsi::fem {
 /// and, for k >= 1, ||du_k|| <= increment_atol + increment_rtol * ||u||,
 /// with R on the free dofs. A step with ||R_0|| <= residual_atol needs no iteration. It has also
 /// converged when ||du_k|| <= roundoff_rtol * ||u||: the residual is then at its round-off floor
-/// (which grows with the condition number) and no further progress is possible in double.
+/// (which grows with the condition number) and no further progress is possible in double; and
+/// when the residual test holds and, for k >= 2, ||du_k|| > ||du_{k-1}|| / 2: Newton's increments
+/// shrink quadratically until they reach the round-off of the linear solve, so one that no longer
+/// halves is that floor (a nearly incompressible rubber beam stalls at 6e-10 ||u||). Both are
+/// counted (StepReport::roundoff_stops).
 struct NewtonOptions {
   int max_iterations = 20;       ///< >= 1
   double residual_rtol = 1e-8;   ///< >= 0
@@ -65,11 +69,12 @@ struct NewtonIterationLog {
 
 /// What one Newton solve did; the caller logs it.
 struct StepReport {
-  long step = 0;      ///< dynamic: index of the step just taken; static: load step
-  double time = 0.0;  ///< dynamic: t^{n+1}; static: load factor
-  int iterations = 0; ///< Newton iterations (linear solves)
-  int halvings = 0;   ///< increments halved because the iterate had an inverted element
-  int substeps = 1;   ///< dynamic: sub-steps the step needed (1: none; NewtonOptions)
+  long step = 0;          ///< dynamic: index of the step just taken; static: load step
+  double time = 0.0;      ///< dynamic: t^{n+1}; static: load factor
+  int iterations = 0;     ///< Newton iterations (linear solves)
+  int halvings = 0;       ///< increments halved because the iterate had an inverted element
+  int roundoff_stops = 0; ///< Newton solves ended at the round-off floor (NewtonOptions)
+  int substeps = 1;       ///< dynamic: sub-steps the step needed (1: none; NewtonOptions)
   double final_residual = 0.0;
   std::vector<NewtonIterationLog> history;
 };
