@@ -67,9 +67,9 @@ TEST_CASE("sph plug-in: the EMPS scene's shared keys, another type's keys refuse
   CHECK(o.correction == sph::Correction::rkgc);
   CHECK(o.h_over_dp == 1.3);
   CHECK(o.u_advection() == 2.0); // u_ref 0: sound_speed / 10
-  CHECK(o.fixed_dt == 0.0);        // the dual criteria
-  const Scene fixed = load_scene(FSI_SOURCE_DIR "/data/scenes/dam_break_rigid_sph.yaml",
-                                 {"fluid.fixed_dt=2.5e-5"});
+  CHECK(o.fixed_dt == 0.0);      // the dual criteria
+  const Scene fixed =
+      load_scene(FSI_SOURCE_DIR "/data/scenes/dam_break_rigid_sph.yaml", {"fluid.fixed_dt=2.5e-5"});
   CHECK(sph_plugin::sph_options(fixed).fixed_dt == 2.5e-5);
   // The EMPS scene itself with --set fluid.type=sph: its EMPS-only key is named, with its type.
   const std::string emps_only =
@@ -292,6 +292,10 @@ TEST_CASE("sph + fem: the tiny obstacle under the SPH fluid follows it under the
   // Measured corner x at 0.02 .. 0.06 s: SPH +12.8, +11.9, +9.6, +4.4, +3.0 % from EMPS with the
   // dummy pressure of eq. 16 extrapolated to every dummy (the side-wall fix; before it +8.1, +6.6,
   // +7.2, -0.6, -3.6 %); held to 15 % (a regression bound between two methods, not an accuracy
-  // claim).
-  test::check_tiny_obstacle_follows(FSI_TEST_DATA "/tiny_coupled_sph.yaml", {}, 0.15);
+  // claim). The EMPS reference keeps the paper's wall (wall_approach_viscosity 0), as measured:
+  // at this scene's l0 = 4 mm (375 particles) the default approach viscosity, alpha_w c l0 =
+  // 0.034 m^2/s, brakes the whole tongue (EMPS corner -17, -14, -12, -9.4 % at 0.02 .. 0.05 s),
+  // a term the SPH fluid does not have (docs/validation.md, "Any fluid with any structure").
+  test::check_tiny_obstacle_follows(FSI_TEST_DATA "/tiny_coupled_sph.yaml", {}, 0.15,
+                                    {"fluid.wall_approach_viscosity=0"});
 }
