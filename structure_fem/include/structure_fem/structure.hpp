@@ -30,8 +30,7 @@ namespace fsi::fem {
 /// (which grows with the condition number) and no further progress is possible in double; and
 /// when the residual test holds and, for k >= 2, ||du_k|| > ||du_{k-1}|| / 2: Newton's increments
 /// shrink quadratically until they reach the round-off of the linear solve, so one that no longer
-/// halves is that floor (a nearly incompressible rubber beam stalls at 6e-10 ||u||). Both are
-/// counted (StepReport::roundoff_stops).
+/// halves is that floor. Both are counted (StepReport::roundoff_stops).
 struct NewtonOptions {
   int max_iterations = 20;       ///< >= 1
   double residual_rtol = 1e-8;   ///< >= 0
