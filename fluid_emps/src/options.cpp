@@ -31,8 +31,7 @@ void visit_options(FluidOptions& o, OptionVisitor& v) {
            "r_e of a wall its neighbours' mean pressure, sum p_j w_ij / sum w_ij");
   v.real("wall_approach_viscosity", o.wall_approach_viscosity, Range::non_negative(),
          "alpha of the closing-pair viscosity alpha c l0 between a particle and the mirror "
-         "images of its neighbours closing in across a wall (a wall force; 0 = off, the "
-         "paper's wall)");
+         "images of its neighbours closing in across a wall (a wall force; 0 = off)");
   v.real("artificial_viscosity", o.artificial_viscosity, Range::non_negative(),
          "alpha: closing particle pairs feel a viscosity alpha c l0 along their line of centres "
          "(damps acoustic noise; not in the paper, 0 = off)");

@@ -39,15 +39,13 @@ inline std::vector<double> first_probe_history(const Scene& scene, int steps, in
 }
 
 /// The tiny obstacle's corner (tests/apps/data/tiny_coupled*.yaml: the first probe, dt = 2e-5 s)
-/// at t = 0.01 .. 0.06 s, under EMPS + FEM (CSS, with `reference_overrides`) and under `file`
-/// with `overrides`; the second follows the first within `bound` (relative) at 0.02 .. 0.06 s,
-/// both pushed in +x.
+/// at t = 0.01 .. 0.06 s, under EMPS + FEM (CSS) and under `file` with `overrides`; the second
+/// follows the first within `bound` (relative) at 0.02 .. 0.06 s, both pushed in +x.
 inline void check_tiny_obstacle_follows(const std::string& file,
-                                        const std::vector<std::string>& overrides, double bound,
-                                        std::vector<std::string> reference_overrides = {}) {
-  reference_overrides.insert(reference_overrides.end(), {"coupling.scheme=css", "time.end=0.06"});
+                                        const std::vector<std::string>& overrides, double bound) {
   const auto reference = first_probe_history(
-      load_scene(FSI_TEST_DATA "/tiny_coupled.yaml", reference_overrides), 3000, 500);
+      load_scene(FSI_TEST_DATA "/tiny_coupled.yaml", {"coupling.scheme=css", "time.end=0.06"}),
+      3000, 500);
   const auto other = first_probe_history(load_scene(file, overrides), 3000, 500);
   REQUIRE(reference.size() == 6);
   REQUIRE(other.size() == 6);

@@ -292,10 +292,6 @@ TEST_CASE("sph + fem: the tiny obstacle under the SPH fluid follows it under the
   // Measured corner x at 0.02 .. 0.06 s: SPH +12.8, +11.9, +9.6, +4.4, +3.0 % from EMPS with the
   // dummy pressure of eq. 16 extrapolated to every dummy (the side-wall fix; before it +8.1, +6.6,
   // +7.2, -0.6, -3.6 %); held to 15 % (a regression bound between two methods, not an accuracy
-  // claim). The EMPS reference keeps the paper's wall (wall_approach_viscosity 0), as measured:
-  // at this scene's l0 = 4 mm (375 particles) the default approach viscosity, alpha_w c l0 =
-  // 0.034 m^2/s, brakes the whole tongue (EMPS corner -17, -14, -12, -9.4 % at 0.02 .. 0.05 s),
-  // a term the SPH fluid does not have (docs/validation.md, "Any fluid with any structure").
-  test::check_tiny_obstacle_follows(FSI_TEST_DATA "/tiny_coupled_sph.yaml", {}, 0.15,
-                                    {"fluid.wall_approach_viscosity=0"});
+  // claim).
+  test::check_tiny_obstacle_follows(FSI_TEST_DATA "/tiny_coupled_sph.yaml", {}, 0.15);
 }

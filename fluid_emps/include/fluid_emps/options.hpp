@@ -45,9 +45,8 @@ struct FluidOptions {
   double wall_viscosity = 0.05; ///< viscous: alpha of the near-wall closing-pair viscosity
   WallPressure wall_pressure = WallPressure::own;
   /// alpha of the closing-pair viscosity alpha c l0 between a particle and the mirror images of
-  /// its neighbours that close in across a wall (a wall force). 0: off, the paper's wall; 0.5
-  /// puts the Walhorn obstacle's load on pressure (issue 16, docs/validation.md).
-  double wall_approach_viscosity = 0.5;
+  /// its neighbours that close in across a wall (a wall force; 0: off).
+  double wall_approach_viscosity = 0.0;
   WallCondition wall_condition = WallCondition::no_slip;
   WallDensity wall_density = WallDensity::added;
   /// At concave corners also apply the second wall face (z, mirror terms and repulsion of the
