@@ -160,8 +160,8 @@ TEST_CASE("fem: Newton ends at the round-off floor once the residual is met and 
     CHECK(r.roundoff_stops == 1);
     CHECK(r.iterations < 40);
     CHECK(h.back().increment_norm > 0.5 * h[h.size() - 2].increment_norm);
-    CHECK(r.final_residual <= options.newton.residual_atol +
-                                  options.newton.residual_rtol * h.front().residual_norm);
+    CHECK(r.final_residual <=
+          options.newton.residual_atol + options.newton.residual_rtol * h.front().residual_norm);
   }
   CHECK_THAT(-s.displacement()[2 * tip + 1], Catch::Matchers::WithinRel(ref.v, 0.02));
   // With the default tolerances the same load ends by the increment test, not at the floor.
