@@ -86,12 +86,10 @@ TEST_CASE("sph plug-in: the EMPS scene's shared keys, another type's keys refuse
                                           {"fluid.correction=none"});
   CHECK(correction.find("fluid.correction: unknown key") != std::string::npos);
   // Values out of range and cross-checks against the scene: one line, before any computation.
-  CHECK(error_of(sph_scene("  wkgc_alpha: 2.0\n  regions:\n    - min: [0, 0]\n      max: [0.1, "
-                           "0.1]\n"))
-            .find("fluid.wkgc_alpha") != std::string::npos);
-  CHECK(error_of(sph_scene("  fixed_dt: -1.0e-5\n  regions:\n    - min: [0, 0]\n      max: [0.1, "
-                           "0.1]\n"))
-            .find("fluid.fixed_dt") != std::string::npos);
+  const std::string region = "  regions:\n    - min: [0, 0]\n      max: [0.1, 0.1]\n";
+  for (const std::string key : {"wkgc_alpha: 2.0", "fixed_dt: -1.0e-5"})
+    CHECK(error_of(sph_scene("  " + key + "\n" + region))
+              .find("fluid." + key.substr(0, key.find(':'))) != std::string::npos);
   CHECK(error_of(sph_scene("  transport_velocity: true\n  regions:\n    - min: [0, 0]\n      "
                            "max: [0.1, 0.1]\n"))
             .find("fluid.transport_velocity: needs free_surface: false") != std::string::npos);
