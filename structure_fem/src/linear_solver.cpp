@@ -57,6 +57,21 @@ public:
     if constexpr (requires(Solver & s) { s.cholmod(); })
       this->solver_.cholmod().print = 0; // no stderr
   }
+  void factorize(const SparseMatrix& K) override {
+    EigenSolver<Solver>::factorize(K);
+    // LDL^T without pivoting factorises an indefinite K too: a pivot D_kk <= 0 says K is not
+    // positive definite, as CHOLMOD's LL^T reports it (Newton's K_eff must be).
+    if constexpr (requires(Solver & s) { s.vectorD(); }) {
+      Eigen::Index k = 0;
+      if (this->solver_.vectorD().size() > 0 && !(this->solver_.vectorD().minCoeff(&k) > 0.0)) {
+        std::ostringstream s;
+        s << "linear solver " << to_string(this->kind_)
+          << ": factorisation failed: matrix not positive definite (pivot " << k << " of "
+          << this->solver_.vectorD().size() << " is " << this->solver_.vectorD()[k] << ")";
+        throw RunError(s.str());
+      }
+    }
+  }
   Vector solve(const Vector& b) override {
     Vector x = this->solver_.solve(b);
     check(this->solver_.info(), this->kind_, "solve");

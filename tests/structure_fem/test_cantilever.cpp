@@ -78,7 +78,7 @@ TEST_CASE("fem: linear solvers give the same solution", "[structure_fem][solver]
   }
 }
 
-TEST_CASE("fem: CHOLMOD refuses an indefinite matrix", "[structure_fem][solver]") {
+TEST_CASE("fem: CHOLMOD and LDLT refuse an indefinite matrix", "[structure_fem][solver]") {
   SparseMatrix A(3, 3);
   A.insert(0, 0) = 1.0;
   A.insert(1, 1) = -2.0;
@@ -87,6 +87,10 @@ TEST_CASE("fem: CHOLMOD refuses an indefinite matrix", "[structure_fem][solver]"
   auto cholmod = make_linear_solver({LinearSolverKind::cholmod, 1e-12, 0});
   cholmod->analyze(A);
   CHECK_THROWS_AS(cholmod->factorize(A), fsi::RunError);
+  auto ldlt = make_linear_solver({LinearSolverKind::simplicial_ldlt, 1e-12, 0});
+  ldlt->analyze(A);
+  CHECK_THROWS_WITH(ldlt->factorize(A),
+                    Catch::Contains("not positive definite (pivot 1 of 3 is -2)"));
   auto umfpack = make_linear_solver({LinearSolverKind::umfpack, 1e-12, 0});
   umfpack->analyze(A);
   umfpack->factorize(A);
@@ -94,7 +98,7 @@ TEST_CASE("fem: CHOLMOD refuses an indefinite matrix", "[structure_fem][solver]"
   CHECK_THAT(x[1], Catch::Matchers::WithinAbs(-0.5, 1e-15));
 }
 
-TEST_CASE("fem: past the buckling load CHOLMOD stops and UMFPACK follows the straight path",
+TEST_CASE("fem: past the buckling load CHOLMOD and LDLT stop, UMFPACK follows the straight path",
           "[structure_fem][solver]") {
   // Slender plane-stress column, EI = 1, Euler load of a cantilever pi^2 EI / (4 L^2) = 2.47;
   // an axial dead load of 4 on the perfect column leaves it straight with an indefinite K_T.
@@ -113,6 +117,9 @@ TEST_CASE("fem: past the buckling load CHOLMOD stops and UMFPACK follows the str
   CHECK_THROWS_WITH(solve(LinearSolverKind::cholmod), Catch::Contains("cholmod") &&
                                                           Catch::Contains("factorisation failed") &&
                                                           Catch::Contains("load step"));
+  CHECK_THROWS_WITH(solve(LinearSolverKind::simplicial_ldlt),
+                    Catch::Contains("simplicial_ldlt") &&
+                        Catch::Contains("not positive definite") && Catch::Contains("load step"));
   const Vector u = solve(LinearSolverKind::umfpack);
   const Beam& c = b;
   const int tip = tip_node(beam_mesh(c), c);

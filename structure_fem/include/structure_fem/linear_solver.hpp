@@ -18,7 +18,8 @@ enum class LinearSolverKind {
 };
 
 struct LinearSolverOptions {
-  LinearSolverKind kind = LinearSolverKind::cholmod;
+  /// The default: fastest on 2D meshes of 48-20,000 T6 (docs/performance.md "structure_fem").
+  LinearSolverKind kind = LinearSolverKind::simplicial_ldlt;
   double cg_tolerance = 1e-12; ///< relative residual ||K x - b|| / ||b|| of CG, in (0, 1)
   int cg_max_iterations = 0;   ///< 0: Eigen's default (2 n); else >= 1
 };
