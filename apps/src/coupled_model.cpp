@@ -6,6 +6,8 @@
 #include "fsi_app/output/text_file.hpp"
 #include "fsi_app/solver_plugin.hpp"
 
+#include <algorithm>
+
 namespace fsi::app {
 
 // The fluid adapter as the coupler sees it, keeping the last wall motion it was given: what
@@ -88,6 +90,13 @@ CoupledModel::CoupledModel(const Scene& scene) {
     fail_at(scene, c.line, "coupling", e.what());
   }
   scheme_->initialize(0.0);
+}
+
+std::optional<double> CoupledModel::stable_dt(double courant) const {
+  std::optional<double> dt = fluid_->stable_dt(courant);
+  for (const auto& s : structures_)
+    if (auto d = s->stable_dt(courant)) dt = dt ? std::min(*dt, *d) : *d;
+  return dt;
 }
 
 void CoupledModel::advance(double time, double dt) {

@@ -28,7 +28,8 @@ TimeSpec read_time(Section s) {
   t.dt = s.optional_real("dt", Range::positive(), "fixed time step, s (give dt or courant)");
   t.courant = s.optional_real("courant", Range::left_open(0.0, 1.0),
                               "adaptive step from this Courant number on c and the fastest "
-                              "particle, with the viscous limit (fluid scenes)");
+                              "particle, with the viscous limit (fluid and coupled scenes: "
+                              "the coupling step is the fluid's)");
   if (!s.context().documenting()) {
     if (t.dt && t.courant) s.fail("courant", "give either dt or courant, not both");
     if (!t.dt && !t.courant) s.fail("", "one of dt or courant is required");

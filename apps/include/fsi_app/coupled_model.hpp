@@ -31,6 +31,9 @@ public:
   explicit CoupledModel(const Scene& scene);
   ~CoupledModel() override;
   void advance(double time, double dt) override;
+  /// The smallest of the fluid's and the structures' stable steps for the Courant number
+  /// (time.courant): the coupling step follows the fluid's step.
+  std::optional<double> stable_dt(double courant) const override;
   /// DIR/coupling.csv: one row per coupling step (iterations, residuals of eq. 68, relaxation,
   /// convergence, wall times), flushed every 1000 rows and at the end. With
   /// coupling.record_interface also DIR/interface.h5 (row 0 at t = 0, then one row per step;
