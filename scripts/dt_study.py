@@ -16,7 +16,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from sweep import read_probe, run_case, run_plan, status, write_doc  # noqa: E402
+from sweep import (add_run_arguments, read_probe, run_case, run_plan, status,  # noqa: E402
+                   write_doc)
 
 # What each scene is measured by. The rigid dam break: the surge front x(t), at the output
 # times where the reference front has not yet reached `front_until` (the right wall is at
@@ -73,12 +74,7 @@ def main():
     p.add_argument("--courants", default="0.025,0.05,0.1,0.2,0.3,0.4,0.5,0.6,0.8",
                    help="Courant numbers on c; the smallest is the reference")
     p.add_argument("--end", type=float, default=0.3, help="end time, s")
-    p.add_argument("--set", action="append", default=[], help="extra scene override for all")
-    p.add_argument("--jobs", type=int, default=2, help="cases run at once (1 thread each)")
-    p.add_argument("--png", help="error-vs-wall-time plot (default OUT/dt_study.png)")
-    p.add_argument("--doc", help="Markdown file whose sweep:NAME block gets the table")
-    p.add_argument("--name", help="block name in --doc (default: dt_STUDY)")
-    p.add_argument("--dry-run", action="store_true", help="list the cases and stop")
+    add_run_arguments(p, "dt_study.png", "dt_STUDY")
     args = p.parse_args()
 
     study = STUDIES[args.study]

@@ -211,6 +211,17 @@ def write_doc(path, section, text):
         f.write(doc)
 
 
+def add_run_arguments(p, png, name):
+    """The options a resumable study shares (sweep, dt_study): overrides, parallel cases, the
+    plot (default OUT/png), the Markdown block (default name) and --dry-run."""
+    p.add_argument("--set", action="append", default=[], help="extra scene override for all")
+    p.add_argument("--jobs", type=int, default=2, help="cases run at once (1 thread each)")
+    p.add_argument("--png", help=f"error-vs-wall-time plot (default OUT/{png})")
+    p.add_argument("--doc", help="Markdown file whose sweep:NAME block gets the table")
+    p.add_argument("--name", help=f"block name in --doc (default: {name})")
+    p.add_argument("--dry-run", action="store_true", help="list the cases and stop")
+
+
 def run_plan(plan, args, run, label):
     """Lists the plan's cases (--dry-run, returns False) or runs them, args.jobs at once."""
     if args.dry_run:
@@ -236,12 +247,7 @@ def main():
     p.add_argument("--end", type=float, default=0.3, help="end time, s")
     p.add_argument("--schemes", default=",".join(SCHEMES), help="variants at the middle level")
     p.add_argument("--dt-factors", default="2,4", help="CSS at the middle level with dt x these")
-    p.add_argument("--set", action="append", default=[], help="extra scene override for all")
-    p.add_argument("--jobs", type=int, default=2, help="cases run at once (1 thread each)")
-    p.add_argument("--png", help="error-vs-wall-time plot (default OUT/pareto.png)")
-    p.add_argument("--doc", help="Markdown file whose sweep:NAME block gets the table")
-    p.add_argument("--name", help="block name in --doc (default: the scene)")
-    p.add_argument("--dry-run", action="store_true", help="list the cases and stop")
+    add_run_arguments(p, "pareto.png", "the scene")
     args = p.parse_args()
 
     scene = SCENES[args.scene]
