@@ -116,7 +116,8 @@ void EmpsFluid::refresh_neighbours(bool allow_reorder, long step, double t) {
     grid_.bin(p.x.data(), p.y.data(), n);
   }
   ++builds_;
-  if (!neighbours_.build(grid_, p.x.data(), p.y.data(), n, r_e_ * (1.0 + options_.skin), capacity_))
+  if (!neighbours_.build(grid_, p.x.data(), p.y.data(), n, r_e_ * (1.0 + options_.skin), capacity_,
+                         options_.vector_kernels))
     throw RunError("fluid: more than " + std::to_string(capacity_) + " neighbours at " +
                    where(p, neighbours_.overflow(), step, t) +
                    " (particles clustered: the step is likely unstable)");
@@ -191,17 +192,21 @@ void EmpsFluid::viscosity() {
     parallel_for_balanced(n, [&](std::size_t i) {
       const double xi = p.x[i], yi = p.y[i], vxi = p.vx[i], vyi = p.vy[i];
       double sx = 0, sy = 0, ax = 0, ay = 0, bx = 0, by = 0;
-      const bool wall_i = hits_.segment[i] >= 0;
-      const std::uint32_t* row = neighbours_.row(i);
-      for (std::uint32_t k = 0, c = neighbours_.count(i); k < c; ++k) {
-        const std::uint32_t j = row[k];
-        const double dx = p.x[j] - xi, dy = p.y[j] - yi, r2 = dx * dx + dy * dy;
-        if (r2 >= re2_) continue;
-        const double w = w_e_.inside(std::sqrt(r2));
-        const double dvx = p.vx[j] - vxi, dvy = p.vy[j] - vyi;
-        sx += dvx * w;
-        sy += dvy * w;
-        if constexpr (decltype(artificial)::value) {
+      if constexpr (!decltype(artificial)::value) { // eq. 11's fluid part alone (pair_sums)
+        const VecSum lap = laplacian_sum(pair_row(i), p.x.data(), p.y.data(), p.vx.data(),
+                                         p.vy.data(), vxi, vyi, options_.vector_kernels);
+        sx = lap.x, sy = lap.y;
+      } else {
+        const bool wall_i = hits_.segment[i] >= 0;
+        const std::uint32_t* row = neighbours_.row(i);
+        for (std::uint32_t k = 0, c = neighbours_.count(i); k < c; ++k) {
+          const std::uint32_t j = row[k];
+          const double dx = p.x[j] - xi, dy = p.y[j] - yi, r2 = dx * dx + dy * dy;
+          if (r2 >= re2_) continue;
+          const double w = w_e_.inside(std::sqrt(r2));
+          const double dvx = p.vx[j] - vxi, dvy = p.vy[j] - vyi;
+          sx += dvx * w;
+          sy += dvy * w;
           const double approach = dvx * dx + dvy * dy; // < 0: the pair closes in
           if (approach < 0 && r2 > 0) {
             const double s = approach * w / r2; // ((v_j - v_i) . e) e w / r
@@ -267,17 +272,8 @@ void EmpsFluid::density_and_pressure() {
   const std::size_t pairs = parallel_reduce_balanced(
       n, std::size_t{0},
       [&](std::size_t i) {
-        const double xi = p.x[i], yi = p.y[i];
-        double pnd = 0;
-        std::size_t within = 0;
-        const std::uint32_t* row = neighbours_.row(i);
-        for (std::uint32_t k = 0, c = neighbours_.count(i); k < c; ++k) {
-          const std::uint32_t j = row[k];
-          const double dx = p.x[j] - xi, dy = p.y[j] - yi, r2 = dx * dx + dy * dy;
-          if (r2 >= re2_) continue;
-          pnd += w_e_.inside(std::sqrt(r2));
-          ++within;
-        }
+        const PndSum sum = pnd_sum(pair_row(i), p.x.data(), p.y.data(), options_.vector_kernels);
+        double pnd = sum.pnd;
         double z = 0.0; // wall part (eq. 20), a corner's overlap counted once
         if (hits_.segment[i] >= 0) z += z_(hits_.r[i]);
         if (hits_.segment2[i] >= 0) z += z_(hits_.r2[i]) - corner_overlap(i);
@@ -287,7 +283,7 @@ void EmpsFluid::density_and_pressure() {
         const bool free = pnd < surface;
         p.surface[i] = free;
         p.p[i] = free ? 0.0 : stiffness * (pnd - n0_);
-        return within;
+        return std::size_t{sum.within};
       },
       [](std::size_t a, std::size_t b) { return a + b; });
   mean_neighbours_ = n ? static_cast<double>(pairs) / static_cast<double>(n) : 0.0;
@@ -368,6 +364,11 @@ WallForceParts EmpsFluid::wall_force_parts(int first, int last) const {
 Vec2 EmpsFluid::fluid_gradient(std::size_t i, double* shepard) const {
   const Particles& p = particles_;
   const double xi = p.x[i], yi = p.y[i], p_i = p.p[i];
+  if (!shepard) {
+    const VecSum g =
+        gradient_sum(pair_row(i), p.x.data(), p.y.data(), p.p.data(), p_i, options_.vector_kernels);
+    return Vec2(g.x, g.y);
+  }
   double gx = 0, gy = 0, pw = 0, ws = 0;
   const std::uint32_t* row = neighbours_.row(i);
   for (std::uint32_t k = 0, c = neighbours_.count(i); k < c; ++k) {
@@ -378,9 +379,9 @@ Vec2 EmpsFluid::fluid_gradient(std::size_t i, double* shepard) const {
     const double s = (p.p[j] + p_i) * w / r2;
     gx += s * dx;
     gy += s * dy;
-    if (shepard) pw += p.p[j] * w, ws += w;
+    pw += p.p[j] * w, ws += w;
   }
-  if (shepard) *shepard = ws > 0 ? pw / ws : 0.0;
+  *shepard = ws > 0 ? pw / ws : 0.0;
   return Vec2(gx, gy);
 }
 
@@ -654,7 +655,8 @@ void EmpsFluid::read_state(const StateArchive& a, const std::string& prefix) {
       throw InputError("checkpoint: '" + prefix +
                        "neighbours/x_build' does not match the particles");
     grid_.bin(xb.data(), yb.data(), n);
-    if (!neighbours_.build(grid_, xb.data(), yb.data(), n, r_e_ * (1.0 + options_.skin), capacity_))
+    if (!neighbours_.build(grid_, xb.data(), yb.data(), n, r_e_ * (1.0 + options_.skin), capacity_,
+                           options_.vector_kernels))
       throw InputError("checkpoint: the stored neighbour list overflows");
   }
   hits_layout_ = -1;

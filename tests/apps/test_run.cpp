@@ -8,6 +8,7 @@
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
 
 using namespace fsi::app;
@@ -112,4 +113,24 @@ TEST_CASE("apps: a fluid run writes its particles, the surge front and its count
   text << json.rdbuf();
   CHECK(text.str().find("\"particles_initial\": 200") != std::string::npos);
   CHECK(text.str().find("\"removed_particles\": 0") != std::string::npos);
+  // The fluid's list builds (at least the first, at most two a step) and its time split, whose
+  // parts add up to no more than the run's wall time.
+  const std::string run_json = text.str();
+  std::smatch m;
+  REQUIRE(std::regex_search(run_json, m, std::regex("\"neighbour_list_builds\": (\\d+)")));
+  const long builds = std::stol(m[1]);
+  REQUIRE(std::regex_search(run_json, m, std::regex("\"steps\": (\\d+)")));
+  CHECK(builds >= 1);
+  CHECK(builds <= 2 * std::stol(m[1]));
+  REQUIRE(std::regex_search(run_json, m, std::regex("\"seconds\": \\{([^}]*)\\}")));
+  const std::string parts = m[1];
+  double sum = 0;
+  int count = 0;
+  const std::regex number(": ([0-9.e+-]+)");
+  for (std::sregex_iterator it(parts.begin(), parts.end(), number), end; it != end; ++it, ++count)
+    sum += std::stod((*it)[1]);
+  CHECK(count == 6);
+  REQUIRE(std::regex_search(run_json, m, std::regex("\"wall_seconds\": ([0-9.e+-]+)")));
+  CHECK(sum > 0);
+  CHECK(sum <= std::stod(m[1]));
 }

@@ -148,7 +148,17 @@ void EmpsModel::report(JsonObject& run) const {
       .add("particles", static_cast<long long>(fluid_->particles().size()))
       .add("removed_particles", static_cast<long long>(fluid_->removed()))
       .add("mean_neighbours", fluid_->mean_neighbours())
-      .add("n0", fluid_->n0());
+      .add("n0", fluid_->n0())
+      .add("neighbour_list_builds", static_cast<long long>(fluid_->neighbour_builds()));
+  const emps::StepTimes& t = fluid_->times();
+  JsonObject seconds; // this process's wall seconds per part of the fluid's step
+  seconds.add("neighbours", t.neighbours)
+      .add("walls", t.walls)
+      .add("viscosity", t.viscosity)
+      .add("density", t.density)
+      .add("pressure_gradient", t.pressure_gradient)
+      .add("other", t.other);
+  f.add("seconds", seconds);
   run.add("fluid", f);
 }
 

@@ -11,6 +11,7 @@
 // Walls: the caller owns the WallSet and moves its nodes (rigid motion, FE interface) to their
 // state at t + dt before calling advance(); the fluid refits its wall index each step.
 #include "fluid_emps/options.hpp"
+#include "fluid_emps/pair_sums.hpp"
 #include "fluid_emps/particles.hpp"
 #include "geometry_erp/convex_corner.hpp"
 #include "geometry_erp/wall_locator.hpp"
@@ -113,6 +114,11 @@ private:
   void viscosity();
   void density_and_pressure();
   void pressure_gradient(double dt);
+  /// Particle i's neighbour-list row for the pair sums (pair_sums.hpp).
+  PairRow pair_row(std::size_t i) const {
+    return {neighbours_.row(i), neighbours_.count(i), particles_.x[i], particles_.y[i], re2_,
+            w_e_.inv_re};
+  }
   /// The pressure gradient's kernels on particle i: fluid-fluid pairs (eq. 10), and the wall
   /// terms of each face (eqs. 25-27) with their contact part.
   Vec2 fluid_gradient(std::size_t i, double* shepard) const;

@@ -61,16 +61,17 @@ struct FluidOptions {
   Vec2 gravity = Vec2::Zero();
   double damping_time = 0.0; ///< T_d: velocities damped at rate 20/T_d (1 - t/T_d) for t < T_d
   Vec2 domain_min = Vec2::Zero(), domain_max = Vec2::Zero(); ///< outside: removed and counted
-  int reorder_interval = 1; ///< neighbour-list builds between reorderings of particles by cell
-  double skin = 0.15;       ///< neighbour-list margin, fraction of r_e
+  int reorder_interval = 1;   ///< neighbour-list builds between reorderings of particles by cell
+  double skin = 0.15;         ///< neighbour-list margin, fraction of r_e
+  bool vector_kernels = true; ///< AVX-512 pair sums and list build where the CPU has them
 
   double r_e() const { return re_over_l0 * l0; }
   double volume() const { return l0 * l0; } ///< V_i = l0^d (eq. 43)
 };
 
 /// The options a user sets, each once: key, member, range, doc; the member's initial value is the
-/// default (density, l0 and sound_speed have none). Gravity, domain, reordering and the list skin
-/// are set by the caller.
+/// default (density, l0 and sound_speed have none). Gravity, domain, reordering, the list skin and
+/// the vector kernels are set by the caller.
 void visit_options(FluidOptions& options, OptionVisitor& visitor);
 
 } // namespace fsi::emps

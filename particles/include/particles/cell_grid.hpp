@@ -27,14 +27,21 @@ public:
     return start_[static_cast<std::size_t>(cy * nx_ + cx)];
   }
 
+  /// The 3 x 3 cell block around a point, clamped to the grid: cells x0..x1 of rows y0..y1. Row
+  /// r's particles are order()[begin(x0, r) .. begin(x1 + 1, r)).
+  struct Block {
+    int x0, x1, y0, y1;
+  };
+  Block block_near(double px, double py) const {
+    const int cx = cell_x(px), cy = cell_y(py);
+    return {cx > 0 ? cx - 1 : 0, cx + 1 < nx_ ? cx + 1 : nx_ - 1, cy > 0 ? cy - 1 : 0,
+            cy + 1 < ny_ ? cy + 1 : ny_ - 1};
+  }
   /// f(j) for every binned particle j in the 3 x 3 cell block around (px, py), clamped to the grid.
   template <class F> void for_each_near(double px, double py, F&& f) const {
-    const int cx = cell_x(px), cy = cell_y(py);
-    const int x0 = cx > 0 ? cx - 1 : 0, x1 = cx + 1 < nx_ ? cx + 1 : nx_ - 1;
-    for (int r = (cy > 0 ? cy - 1 : 0); r <= (cy + 1 < ny_ ? cy + 1 : ny_ - 1); ++r) {
-      const std::uint32_t a = begin(x0, r), b = begin(x1 + 1, r);
-      for (std::uint32_t k = a; k < b; ++k) f(order_[k]);
-    }
+    const Block b = block_near(px, py);
+    for (int r = b.y0; r <= b.y1; ++r)
+      for (std::uint32_t k = begin(b.x0, r), end = begin(b.x1 + 1, r); k < end; ++k) f(order_[k]);
   }
 
 private:
