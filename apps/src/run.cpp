@@ -353,8 +353,9 @@ RunResult run_scene(const Scene& scene, std::vector<std::unique_ptr<Model>>& mod
   RunResult result;
   // The step: fixed (time = step * dt exactly, frames every round(interval / dt) steps, the last
   // step shortened to end at time.end), or the smallest stable step of the models for the
-  // Courant number, shortened to land on frames. An adaptive step so small that more than
-  // kMaxSteps steps would remain stops the run.
+  // Courant number, shortened to land on frames (the last two steps before a frame share what is
+  // left when it is under two steps, so no sliver of a step). An adaptive step so small that more
+  // than kMaxSteps steps would remain stops the run.
   const long fixed_total =
       scene.time.dt ? std::max(1L, static_cast<long>(std::ceil(fixed_steps - 1e-9))) : 0;
   const long fixed_per_frame =
@@ -376,7 +377,10 @@ RunResult run_scene(const Scene& scene, std::vector<std::unique_ptr<Model>>& mod
           ", t = " + format_g(c.time) + " s: reaching time.end = " + format_g(end) +
           " s would take " + format_g((end - c.time) / dt) + " more steps, above the limit of " +
           format_g(kMaxSteps) + " (check time.courant, fluid.viscosity, fluid.sound_speed)");
-    return std::min(dt, c.next_frame - c.time);
+    // Land on the next frame without a sliver of a step: what is left of the frame in one step
+    // if it fits, in two equal ones if it is under two steps.
+    const double left = c.next_frame - c.time;
+    return left <= dt ? left : left < 2.0 * dt ? 0.5 * left : dt;
   };
   auto last_checkpoint = std::chrono::steady_clock::now();
   auto run_json = [&](const std::string& run_status, const std::string& run_message,
