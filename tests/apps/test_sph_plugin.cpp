@@ -2,7 +2,8 @@
 // fluid, the errors for another type's keys, a hydrostatic column (pressure and the walls' force
 // against the weight), a restart through the run driver that continues bitwise, and the moving
 // boundary on a structure's interface mesh: a column resting on a rigid interface carries its
-// weight, and a coupled throw of fluid at a free rigid body conserves the total momentum.
+// weight, a coupled throw of fluid at a free rigid body conserves the total momentum, and the
+// SPH fluid with either structure continues bitwise from a checkpoint.
 #include "fsi/core/error.hpp"
 #include "fsi_app/coupled_model.hpp"
 #include "fsi_app/output/checkpoint_file.hpp"
@@ -292,4 +293,40 @@ TEST_CASE("sph + fem: the tiny obstacle under the SPH fluid follows it under the
   // +7.2, -0.6, -3.6 %); held to 15 % (a regression bound between two methods, not an accuracy
   // claim).
   test::check_tiny_obstacle_follows(FSI_TEST_DATA "/tiny_coupled_sph.yaml", {}, 0.15);
+}
+
+namespace {
+
+/// tiny_any_pair.yaml as sph + `structure` to 0.004 s (200 coupling steps, 6 advection steps),
+/// continued from its checkpoint at step 100 (inside an advection step): bitwise the
+/// uninterrupted run, the obstacle's corner pushed in +x. With fluid.interface_acceleration the
+/// interface velocity at the checkpoint (fluid/interface/motion) feeds the walls' mean
+/// acceleration, so the test fails without it.
+void check_sph_pair_restart(const std::string& structure) {
+  const Scene scene = load_scene(
+      FSI_TEST_DATA "/tiny_any_pair.yaml",
+      {"fluid.type=sph", "fluid.interface_acceleration=true", "structures[0].type=" + structure,
+       "time.end=0.004", "output.interval=0.001", "checkpoint={interval_steps: 100, keep: 9}"});
+  const fs::path dir = fs::temp_directory_path() / ("fsi_test_sph_" + structure + "_restart");
+  test::check_restart_bitwise(scene, dir, 100, 200, 2000);
+  std::ifstream csv(dir / "whole" / "probes.csv");
+  std::string line, last;
+  std::getline(csv, line);
+  REQUIRE(line == "time,corner_x,front");
+  while (std::getline(csv, line)) last = line;
+  const double corner = std::stod(last.substr(last.find(',') + 1));
+  INFO("corner_x at 0.004 s: " << corner << " m");
+  CHECK(corner > 1e-6);
+}
+
+} // namespace
+
+TEST_CASE("sph + fem continued from a checkpoint is bitwise the uninterrupted run",
+          "[apps][sph][coupled]") {
+  check_sph_pair_restart("fem");
+}
+
+TEST_CASE("sph + tlsph continued from a checkpoint is bitwise the uninterrupted run",
+          "[apps][sph][coupled]") {
+  check_sph_pair_restart("tlsph");
 }
