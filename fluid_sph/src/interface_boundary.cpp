@@ -88,7 +88,22 @@ std::vector<WallPoint> InterfaceBoundary::wall_points(int group) const {
   std::vector<Vec2> x, n;
   place(mesh_.X0, x, n);
   std::vector<WallPoint> out(size());
-  for (std::size_t p = 0; p < size(); ++p) out[p] = {x[p], n[p], group};
+  for (std::size_t p = 0; p < size(); ++p) {
+    // Depth along the point's normal to its edge's chord line: depth_ on a face; on a corner's
+    // bisector depth_ / cos(half the angle), the distance to the corner.
+    const Vec2 n0 = chord_frame(mesh_, mesh_.X0, edge_[p]).second;
+    const double d = depth_[p] / n[p].dot(n0);
+    // A convex corner: the anchor on the edge is behind the other edge's line (at a concave one
+    // both are the corner).
+    double corner = 0.0;
+    if (tie_[p] != kNone) {
+      const Vec2 n1 = chord_frame(mesh_, mesh_.X0, tie_[p]).second;
+      const Vec2 anchor = edge_point(mesh_, mesh_.X0, edge_[p], xi_[p]);
+      if ((anchor - mesh_.X0[mesh_.edges[tie_[p]][0]]).dot(n1) < -1e-9 * depth_[p])
+        corner = 0.5 * (n0 - n1).norm();
+    }
+    out[p] = {x[p], n[p], group, d, corner};
+  }
   return out;
 }
 

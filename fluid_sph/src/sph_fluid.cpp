@@ -137,9 +137,11 @@ SphFluid::SphFluid(const SphOptions& options, const std::vector<Vec2>& positions
 void SphFluid::fill_walls(const std::vector<WallPolyline>& walls) {
   // Dummy particles: lattice points at (i + 1/2) dp from each polyline's first point that lie on
   // the wall side (right of the nearest segment; at a vertex, of the sum of the two normals) within
-  // 4 dp of the polyline. Their normal is that of the nearest feature, into the fluid.
+  // 4 dp of the polyline. Their normal is that of the nearest feature, into the fluid, and their
+  // depth the distance behind that feature's line along it ((k + 1/2) dp for layer k of a wall).
   const double dp = options_.dp, depth = 4.0 * dp;
   std::vector<Vec2> xs, ns;
+  std::vector<double> ds;
   std::vector<std::uint32_t> groups;
   for (const WallPolyline& w : walls) {
     const std::size_t m = w.points.size();
@@ -192,6 +194,7 @@ void SphFluid::fill_walls(const std::vector<WallPolyline>& walls) {
         if (open_end || best >= depth || side >= 0.0) continue;
         xs.push_back(q);
         ns.push_back(n_best);
+        ds.push_back(-side);
         groups.push_back(static_cast<std::uint32_t>(w.group));
       }
   }
@@ -203,6 +206,7 @@ void SphFluid::fill_walls(const std::vector<WallPolyline>& walls) {
     walls_.y[a] = walls_.y0[a] = walls_.yb[a] = xs[a].y();
     walls_.nx[a] = walls_.nx0[a] = ns[a].x();
     walls_.ny[a] = walls_.ny0[a] = ns[a].y();
+    walls_.depth[a] = ds[a];
   }
 }
 
@@ -517,7 +521,21 @@ void SphFluid::build_pairs() {
     const std::size_t m = wstart_[n] + wstart_[n] / 8 + 16;
     wj_.resize(m), wex_.resize(m), wey_.resize(m), wdw_.resize(m), wr_.resize(m);
   }
-  // Fill, in the same visiting order; the wall nearest each particle checks it is in front.
+  // Fill, in the same visiting order, then the through-a-wall guard (issue 20, Antoci's gate):
+  // from wall point a, with p = (x_i - x_a) . n_a - depth_a and q = (x_i - x_a) x n_a, the
+  // particle's signed distance to the wall surface is s_a = p on a face, the same from every
+  // point of a flat face (all layers); on the bisector of a convex corner whose faces' normals
+  // are 2 phi apart, with corner_a = sin(phi), s_a = cos(phi) p + sin(phi) |q|, the larger of
+  // the signed distances to the two faces' lines through the corner. A particle is behind the
+  // walls when s_a < -dp/2 (the first layer's plane, the guard's tolerance) for the nearest
+  // point AND every point within 1.5 dp more (the nearest's lattice neighbours, dp and
+  // sqrt(2) dp away): the intersection of half-planes, the inside test at a convex corner,
+  // where a particle beside a thin body's end is behind the end face's plane but in front of
+  // the side face. Given up: a particle through a face near a concave corner is caught only
+  // once it is out of the other face's range (about a dp from it); acceptable for a guard,
+  // which only has to stop a run whose particles get well through a wall. At a flat wall it
+  // flags what the nearest point's plane did, and a particle past the first layer too.
+  const double reach = 1.5 * options_.dp, tolerance = -0.5 * options_.dp;
   const std::size_t behind = parallel_reduce_balanced(
       n, none,
       [&](std::size_t i) {
@@ -529,17 +547,26 @@ void SphFluid::build_pairs() {
           if (j == i || r2 >= cut2 || r2 <= 0.0) return;
           store_pair(k++, j, dx, dy, kernel_, pj_, pex_, pey_, pdw_, pr_);
         });
-        std::uint32_t kw = wstart_[i];
+        const std::uint32_t kw0 = wstart_[i];
+        std::uint32_t kw = kw0;
         double nearest = cut2;
-        bool in_front = true;
         wall_grid_.for_each_near(xi, yi, [&](std::uint32_t a, double sx, double sy) {
           const double dx = xi - walls_.xb[a] - sx, dy = yi - walls_.yb[a] - sy;
           const double r2 = dx * dx + dy * dy;
           if (r2 >= cut2 || r2 <= 0.0) return;
           store_pair(kw++, a, dx, dy, kernel_, wj_, wex_, wey_, wdw_, wr_);
-          if (r2 < nearest) nearest = r2, in_front = dx * walls_.nx[a] + dy * walls_.ny[a] >= 0.0;
+          nearest = std::min(nearest, r2);
         });
-        return in_front ? none : i;
+        const double within = std::sqrt(nearest) + reach;
+        for (std::uint32_t k = kw0; k < kw; ++k) {
+          if (wr_[k] > within) continue;
+          const std::uint32_t a = wj_[k];
+          const double nx = walls_.nx[a], ny = walls_.ny[a], sine = walls_.corner[a];
+          const double p = wr_[k] * (wex_[k] * nx + wey_[k] * ny) - walls_.depth[a];
+          const double q = wr_[k] * (wex_[k] * ny - wey_[k] * nx);
+          if (std::sqrt(1.0 - sine * sine) * p + sine * std::abs(q) >= tolerance) return none;
+        }
+        return kw > kw0 ? i : none;
       },
       [](std::size_t a, std::size_t b) { return std::min(a, b); });
   if (behind != none)

@@ -20,12 +20,17 @@ void SphFluid::append_wall_points(const std::vector<WallPoint>& points) {
     if (q.group < 0) throw InputError("fluid_sph: wall group " + std::to_string(q.group) + " < 0");
     if (!(std::abs(q.n.norm() - 1.0) < 1e-9))
       throw InputError("fluid_sph: wall point " + std::to_string(k) + " has no unit normal");
+    if (!(q.depth >= 0.0 && q.corner >= 0.0 && q.corner < 1.0))
+      throw InputError("fluid_sph: wall point " + std::to_string(k) +
+                       " has a depth < 0 or a corner outside [0, 1)");
     const std::size_t a = first + k;
     walls_.group[a] = static_cast<std::uint32_t>(q.group);
     walls_.x[a] = walls_.x0[a] = walls_.xb[a] = q.x.x();
     walls_.y[a] = walls_.y0[a] = walls_.yb[a] = q.x.y();
     walls_.nx[a] = walls_.nx0[a] = q.n.x();
     walls_.ny[a] = walls_.ny0[a] = q.n.y();
+    walls_.depth[a] = q.depth;
+    walls_.corner[a] = q.corner;
   }
 }
 

@@ -1,5 +1,6 @@
 // Riemann-SPH fluid: operator consistency (RKGC, eqs. 18-19), the sign of every term, momentum
 // conservation, restart and thread-count bitwise reproducibility.
+#include "fluid_sph/interface_boundary.hpp"
 #include "fluid_sph/sph_fluid.hpp"
 #include "fsi/core/error.hpp"
 #include "fsi/core/parallel.hpp"
@@ -372,6 +373,43 @@ TEST_CASE("sph: guards name the particle, step and time", "[sph][guard]") {
   auto bad = base(0.01);
   bad.c0 = -1.0;
   CHECK_THROWS_AS(sph::SphFluid(bad, {{0.5, 0.5}}), InputError);
+}
+
+TEST_CASE("sph: the through-a-wall guard at a thin body's convex end (issue 20: Antoci)",
+          "[sph][guard]") {
+  // A body 2 dp thick with its interface on the left, bottom and right (the Antoci gate's free
+  // end): its bottom row of boundary points is 0.3 dp above the end face, so the corner point
+  // takes the end face's normal. A particle beside the corner, outside the body, is behind that
+  // point's plane (the old guard's false positive) but in front of the upstream face.
+  const double dp = 0.01;
+  InterfaceMesh mesh;
+  mesh.X0 = {{0.5, 0.4},    {0.5, 0.351},  {0.5, 0.302}, {0.51, 0.302},
+             {0.52, 0.302}, {0.52, 0.351}, {0.52, 0.4}};
+  mesh.edges = {{0, 1, 2}, {2, 3, 4}, {4, 5, 6}};
+  const sph::InterfaceBoundary body(mesh, dp, 4);
+  const auto points = body.wall_points(0);
+  const auto o = base(dp);
+  // Every layer sees a flat face at the same place, x_a + depth_a n_a, as the dummies of a wall.
+  for (const auto& p : points)
+    if (p.n.x() < -0.99) CHECK_THAT((p.x + p.depth * p.n).x(), WithinAbs(0.5, 1e-12));
+  const sph::SphFluid floor(o, {{0.5, 0.1}}, {{{{0.0, 0.0}, {1.0, 0.0}}}});
+  const auto& w = floor.walls();
+  for (std::size_t a = 0; a < w.size(); ++a) CHECK_THAT(w.y[a] + w.depth[a], WithinAbs(0.0, 1e-12));
+  CHECK_NOTHROW(sph::SphFluid(o, {{0.497, 0.309}}, {}, points));
+  // Inside the body: on its mid-plane (dp behind both faces), 0.7 dp behind the upstream face.
+  CHECK_THROWS_WITH(sph::SphFluid(o, {{0.51, 0.35}}, {}, points),
+                    Catch::Matchers::Contains("through a wall"));
+  CHECK_THROWS_WITH(sph::SphFluid(o, {{0.507, 0.37}}, {}, points),
+                    Catch::Matchers::Contains("through a wall"));
+  // The end 0.2 dp lower: its corner points are on the bisectors (TL-SPH's gate at 0.075 s). A
+  // particle 0.2 dp below the end face's middle is behind both bisectors' lines through the
+  // corners by more than dp/2, but in front of the end face: the corner's two faces decide.
+  mesh.X0 = {{0.5, 0.4},  {0.5, 0.35},  {0.5, 0.3}, {0.51, 0.3},
+             {0.52, 0.3}, {0.52, 0.35}, {0.52, 0.4}};
+  const auto ends = sph::InterfaceBoundary(mesh, dp, 4).wall_points(0);
+  CHECK_NOTHROW(sph::SphFluid(o, {{0.51, 0.298}}, {}, ends));
+  CHECK_THROWS_WITH(sph::SphFluid(o, {{0.507, 0.307}}, {}, ends),
+                    Catch::Matchers::Contains("through a wall"));
 }
 
 TEST_CASE("sph: a wall group follows its rigid motion with step-averaged velocity", "[sph][wall]") {

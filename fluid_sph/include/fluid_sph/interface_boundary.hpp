@@ -30,7 +30,9 @@ public:
   double xi(std::size_t p) const { return xi_[p]; }
   double along(std::size_t p) const { return along_[p]; }
   double depth(std::size_t p) const { return depth_[p]; }
-  /// The points at the reference positions X0, as wall particles of `group`.
+  /// The points at the reference positions X0, as wall particles of `group`; their depth is along
+  /// their normal to their edge's chord line (on a corner's bisector: to the corner), and a point
+  /// on a convex corner's bisector gets the sine of half the angle between the two normals.
   std::vector<WallPoint> wall_points(int group) const;
   /// Positions and unit normals (into the fluid) of the points for node positions `x`:
   /// x(xi) + along t - depth n with (t, n) the chord's tangent and fluid-side normal; the normal

@@ -49,10 +49,14 @@ struct RigidMotion {
 using WallMotion = std::function<RigidMotion(double t)>;
 
 /// A wall particle given directly (e.g. a boundary point of a structure's interface,
-/// fluid_sph/interface_boundary.hpp): reference position, unit normal into the fluid, group.
+/// fluid_sph/interface_boundary.hpp): reference position, unit normal into the fluid, group,
+/// depth behind the wall surface along n (>= 0) and, on the bisector of a convex corner of the
+/// solid, the sine of half the angle between its faces' normals (0 elsewhere; < 1): the
+/// through-a-wall guard's geometry.
 struct WallPoint {
   Vec2 x = Vec2::Zero(), n = Vec2::Zero();
   int group = 0;
+  double depth = 0.0, corner = 0.0;
 };
 
 /// The fluid's struct-of-arrays particles (registered in one FieldSet).
@@ -97,6 +101,11 @@ struct WallParticles {
   std::vector<double>&xb = fields.add_real("xb"), &yb = fields.add_real("yb");
   /// Tracked walls: the viscous force of the fluid on them, per Dt.
   std::vector<double>&fvx = fields.add_real("fvx"), &fvy = fields.add_real("fvy");
+  /// Depth behind the wall surface along the normal and, on a convex corner's bisector, the sine
+  /// of half the angle between the faces' normals (WallPoint): reference geometry fixed by the
+  /// constructor (as the wall count is), so not state.
+  std::vector<double>& depth = fields.add_real("depth", false);
+  std::vector<double>& corner = fields.add_real("corner", false);
   std::size_t size() const { return fields.size(); }
 };
 
