@@ -4,6 +4,7 @@
 #include "geometry_erp/csv_table.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 
 namespace fsi::app {
@@ -54,6 +55,21 @@ const WallSpec& moving_wall(const Scene& scene, const std::string& name, int lin
   return *it;
 }
 
+Vec2 WallFrame::displacement(const Vec2& X, const Vec2& x, double t) const {
+  const erp::RigidKinematics k = motion->at(t);
+  const Vec2 r = x - pivot - k.d;
+  const Vec2 local(std::cos(k.theta) * r.x() + std::sin(k.theta) * r.y(),
+                   -std::sin(k.theta) * r.x() + std::cos(k.theta) * r.y());
+  return local + pivot - X;
+}
+
+std::optional<WallFrame> wall_frame(const Scene& scene, const std::string& wall, int line,
+                                    const std::string& key) {
+  if (wall.empty()) return std::nullopt;
+  const WallSpec& w = moving_wall(scene, wall, line, key);
+  return WallFrame{make_motion(w), w.motion->pivot};
+}
+
 void check_clamped_motion(const Scene& scene, const std::string& wall, bool clamped,
                           const std::string& clamps, Section& s) {
   if (wall.empty()) return;
@@ -62,6 +78,12 @@ void check_clamped_motion(const Scene& scene, const std::string& wall, bool clam
                               [&](const WallSpec& x) { return x.name == wall; });
   if (w == scene.walls.end()) s.fail("clamped_motion", "no wall named '" + wall + "'");
   if (!w->motion) s.fail("clamped_motion", "wall '" + wall + "' has no motion");
+}
+
+void check_frame_probe(const ProbeSpec& probe, const std::string& wall, Section& s) {
+  if (probe.quantity.ends_with("_tank") && wall.empty())
+    s.fail("quantity", "'" + probe.quantity + "' needs structure '" + probe.structure +
+                           "' to have a clamped_motion");
 }
 
 } // namespace fsi::app

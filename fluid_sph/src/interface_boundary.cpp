@@ -119,6 +119,30 @@ void InterfaceBoundary::place(const std::vector<Vec2>& x, std::vector<Vec2>& pos
   }
 }
 
+double InterfaceBoundary::signed_distance(const std::vector<Vec2>& x, const Vec2& q) const {
+  double best = std::numeric_limits<double>::max();
+  Vec2 foot = Vec2::Zero(), normal = Vec2::Zero();
+  auto chord = [&](const Vec2& a, const Vec2& b) {
+    const Vec2 ab = b - a;
+    const double t = std::clamp((q - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
+    const Vec2 f = a + t * ab, n = Vec2(ab.y(), -ab.x()).normalized();
+    const double d = (q - f).norm(), tie = 1e-12 * (d + ab.norm());
+    if (d < best - tie)
+      best = d, foot = f, normal = n;
+    else if (d <= best + tie && (f - foot).norm() <= tie) // the same vertex, from the next chord
+      normal += n;
+  };
+  for (const auto& k : mesh_.edges) {
+    if (mesh_.order == 1) {
+      chord(x[k[0]], x[k[2]]);
+    } else {
+      chord(x[k[0]], x[k[1]]);
+      chord(x[k[1]], x[k[2]]);
+    }
+  }
+  return (q - foot).dot(normal) >= 0.0 ? best : -best;
+}
+
 void InterfaceBoundary::interpolate(const std::vector<Vec2>& nodal,
                                     std::vector<Vec2>& at_points) const {
   at_points.resize(size());

@@ -235,6 +235,13 @@ void SphFluid::set_wall_motion(int group, WallMotion motion) {
   motions_[static_cast<std::size_t>(group)] = std::move(motion);
 }
 
+void SphFluid::set_wall_distance(int group, WallDistance distance) {
+  if (group < 0) throw InputError("fluid_sph: wall group " + std::to_string(group) + " < 0");
+  if (distances_.size() <= static_cast<std::size_t>(group))
+    distances_.resize(static_cast<std::size_t>(group) + 1);
+  distances_[static_cast<std::size_t>(group)] = std::move(distance);
+}
+
 double SphFluid::next_dt() const {
   if (options_.fixed_dt > 0.0) return options_.fixed_dt;
   return std::min(dt_acoustic_, Dt_ - elapsed_);
@@ -534,7 +541,11 @@ void SphFluid::build_pairs() {
   // the side face. Given up: a particle through a face near a concave corner is caught only
   // once it is out of the other face's range (about a dp from it); acceptable for a guard,
   // which only has to stop a run whose particles get well through a wall. At a flat wall it
-  // flags what the nearest point's plane did, and a particle past the first layer too.
+  // flags what the nearest point's plane did, and a particle past the first layer too. Where the
+  // caller gave the nearest point's group an exact surface (set_wall_distance), a particle is
+  // flagged only if that surface puts it behind the tolerance too: the end face of a body 2 dp
+  // thick may have no point of its own (its row nearer the side faces), and a particle above
+  // that end is then behind both sides' planes.
   const double reach = 1.5 * options_.dp, tolerance = -0.5 * options_.dp;
   const std::size_t behind = parallel_reduce_balanced(
       n, none,
@@ -550,12 +561,13 @@ void SphFluid::build_pairs() {
         const std::uint32_t kw0 = wstart_[i];
         std::uint32_t kw = kw0;
         double nearest = cut2;
+        std::uint32_t a_nearest = 0;
         wall_grid_.for_each_near(xi, yi, [&](std::uint32_t a, double sx, double sy) {
           const double dx = xi - walls_.xb[a] - sx, dy = yi - walls_.yb[a] - sy;
           const double r2 = dx * dx + dy * dy;
           if (r2 >= cut2 || r2 <= 0.0) return;
           store_pair(kw++, a, dx, dy, kernel_, wj_, wex_, wey_, wdw_, wr_);
-          nearest = std::min(nearest, r2);
+          if (r2 < nearest) nearest = r2, a_nearest = a;
         });
         const double within = std::sqrt(nearest) + reach;
         for (std::uint32_t k = kw0; k < kw; ++k) {
@@ -566,7 +578,12 @@ void SphFluid::build_pairs() {
           const double q = wr_[k] * (wex_[k] * ny - wey_[k] * nx);
           if (std::sqrt(1.0 - sine * sine) * p + sine * std::abs(q) >= tolerance) return none;
         }
-        return kw > kw0 ? i : none;
+        if (kw == kw0) return none;
+        // The group's exact surface, where the caller gave it (at the positions of the pairs).
+        const std::size_t g = walls_.group[a_nearest];
+        if (g < distances_.size() && distances_[g] && distances_[g](Vec2(xi, yi)) >= tolerance)
+          return none;
+        return i;
       },
       [](std::size_t a, std::size_t b) { return std::min(a, b); });
   if (behind != none)

@@ -207,3 +207,53 @@ TEST_CASE("tlsph plug-in: interpolate is refused where it has no meaning", "[app
   }
   CHECK(fe.find("output.probes[0].interpolate: an FE probe samples its node") != std::string::npos);
 }
+
+TEST_CASE("tlsph plug-in: a tank-frame probe undoes its clamp wall's rigid motion",
+          "[apps][tlsph]") {
+  // The wall turned by theta = 0.3 rad about p at t = 0 (phase pi/2); the solid set to that
+  // rotation of X + A X + c: in the tank's frame the displacement is A X + c, exactly.
+  const std::string probes =
+      "walls:\n  - name: tank\n    polyline: [[-1.0, 1.0], [-1.0, -1.0], [1.0, -1.0], [1.0, 1.0]]\n"
+      "    motion: {kind: sinusoid, dof: rotation, pivot: [0.01, -0.02], amplitude: 0.3, "
+      "period: 1.0, phase: 1.5707963267948966}\n"
+      "output:\n  interval: 0.001\n  probes:\n"
+      "    - {name: tx, quantity: displacement_x_tank, structure: block, point: [0.0123, 0.0311], "
+      "interpolate: true}\n"
+      "    - {name: ty, quantity: displacement_y_tank, structure: block, point: [0.0123, 0.0311], "
+      "interpolate: true}\n"
+      "    - {name: x, quantity: displacement_x, structure: block, point: [0.0123, 0.0311], "
+      "interpolate: true}\n";
+  std::string text = scene_with("{min: [0.0, 0.0], max: [0.02, 0.04]}", "[top]") +
+                     "    clamped_motion: tank\n    clamped: [{min: [0.0, 0.0], max: [0.02, "
+                     "0.004]}]\n";
+  text.replace(text.find("output: {interval: 0.001}\n"), 26, probes);
+  const Scene scene = parse_scene(text, "scene.yaml", {});
+  TlsphModel model(scene, scene.structures.front());
+  fsi::Mat2 A, R;
+  A << 0.013, -0.021, 0.007, 0.017;
+  R << std::cos(0.3), -std::sin(0.3), std::sin(0.3), std::cos(0.3);
+  const Vec2 c(1e-3, -2e-3), p(0.01, -0.02);
+  std::vector<Vec2> x(model.solid().size());
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const Vec2 X = model.solid().reference_position(i);
+    x[i] = p + R * (X + A * X + c - p);
+  }
+  model.solid().set_positions(x);
+  const auto& pr = scene.output.probes;
+  const Vec2 X = *pr[0].point, u_tank = A * X + c, u_lab = p + R * (X + u_tank - p) - X;
+  INFO("tank " << *model.probe(pr[0]) << ", " << *model.probe(pr[1]) << "; lab "
+               << *model.probe(pr[2]));
+  CHECK(std::abs(*model.probe(pr[0]) - u_tank.x()) < 1e-15);
+  CHECK(std::abs(*model.probe(pr[1]) - u_tank.y()) < 1e-15);
+  CHECK(std::abs(*model.probe(pr[2]) - u_lab.x()) < 1e-15);
+  CHECK(std::abs(u_lab.x() - u_tank.x()) > 1e-3); // the rotation moves the point by mm
+}
+
+TEST_CASE("tlsph plug-in: a tank-frame probe needs a clamped_motion", "[apps][tlsph]") {
+  std::string text = scene_with("{min: [0.0, 0.0], max: [0.02, 0.04]}", "[top]");
+  text.replace(text.find("output: {interval: 0.001}\n"), 26,
+               "output:\n  interval: 0.001\n  probes:\n    - {name: tx, quantity: "
+               "displacement_x_tank, structure: block, point: [0.01, 0.03]}\n");
+  CHECK(error_of(text) == "scene.yaml:6: output.probes[0].quantity: 'displacement_x_tank' needs "
+                          "structure 'block' to have a clamped_motion");
+}

@@ -412,6 +412,47 @@ TEST_CASE("sph: the through-a-wall guard at a thin body's convex end (issue 20: 
                     Catch::Matchers::Contains("through a wall"));
 }
 
+TEST_CASE("sph: the through-a-wall guard asks the interface's exact surface at an end without "
+          "points (issue 20: rolling tank)",
+          "[sph][guard]") {
+  // A body 2 dp thick whose end face lies 0.8 dp below its last row of boundary points: that
+  // row is nearer the side faces (dp/2), so no point carries the end face's normal and a
+  // particle just below the end, outside, is behind both sides' planes.
+  const double dp = 0.01;
+  InterfaceMesh mesh;
+  mesh.X0 = {{0.5, 0.4},    {0.5, 0.3485},  {0.5, 0.297}, {0.51, 0.297},
+             {0.52, 0.297}, {0.52, 0.3485}, {0.52, 0.4}};
+  mesh.edges = {{0, 1, 2}, {2, 3, 4}, {4, 5, 6}};
+  const sph::InterfaceBoundary body(mesh, dp, 4);
+  const auto points = body.wall_points(0);
+  // The exact signed distance: 0.3 dp below the end, dp inside both sides, off the corner.
+  CHECK_THAT(body.signed_distance(mesh.X0, {0.51, 0.294}), WithinAbs(0.003, 1e-14));
+  CHECK_THAT(body.signed_distance(mesh.X0, {0.51, 0.35}), WithinAbs(-0.01, 1e-14));
+  CHECK_THAT(body.signed_distance(mesh.X0, {0.49, 0.29}),
+             WithinAbs(std::hypot(0.01, 0.007), 1e-14));
+  CHECK_THAT(body.signed_distance(mesh.X0, {0.503, 0.3}), WithinAbs(-0.003, 1e-14));
+  const Vec2 below(0.51, 0.294), inside(0.51, 0.35);
+  const auto o = base(dp);
+  // The points' planes alone flag the particle below the end (the constructor's guard).
+  CHECK_THROWS_WITH(sph::SphFluid(o, {below}, {}, points),
+                    Catch::Matchers::Contains("through a wall"));
+  // Built 0.5 m away, moved into place, the next pair build judges with the exact surface.
+  auto away = points;
+  for (auto& p : away) p.x.y() += 0.5;
+  auto moved_in = [&](const Vec2& particle, bool exact) {
+    sph::SphFluid f(o, {particle}, {}, away);
+    if (exact)
+      f.set_wall_distance(0, [&](const Vec2& q) { return body.signed_distance(mesh.X0, q); });
+    auto& w = f.moved_walls();
+    for (std::size_t a = 0; a < w.size(); ++a) w.y[a] -= 0.5;
+    const long builds = f.advection_steps();
+    while (f.advection_steps() == builds) f.advance(f.next_dt()); // to the next pair build
+  };
+  CHECK_NOTHROW(moved_in(below, true));
+  CHECK_THROWS_WITH(moved_in(below, false), Catch::Matchers::Contains("through a wall"));
+  CHECK_THROWS_WITH(moved_in(inside, true), Catch::Matchers::Contains("through a wall"));
+}
+
 TEST_CASE("sph: a wall group follows its rigid motion with step-averaged velocity", "[sph][wall]") {
   const double dp = 0.01;
   auto o = base(dp);

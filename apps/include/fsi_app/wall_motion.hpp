@@ -6,6 +6,7 @@
 #include "geometry_erp/motion.hpp"
 
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace fsi::app {
@@ -23,9 +24,29 @@ void check_motion_tables(const Scene& scene);
 const WallSpec& moving_wall(const Scene& scene, const std::string& name, int line,
                             const std::string& key);
 
+/// The moving frame of a wall with a motion (a structure's clamped_motion wall): that wall's rigid
+/// motion about its pivot.
+struct WallFrame {
+  std::shared_ptr<const erp::Motion> motion;
+  Vec2 pivot;
+  /// The displacement, in this frame's axes, of the material point with reference position X
+  /// that is at x at time t: X_t - X for the frame-fixed point X_t = R^T (x - p - d) + p that it
+  /// is at now (the rigid motion undone).
+  Vec2 displacement(const Vec2& X, const Vec2& x, double t) const;
+};
+
+/// The frame of the wall a structure's clamped_motion names (`wall`; empty: nullopt, clamped in
+/// place); fail_at(line, key) if there is no such wall or it has no motion.
+std::optional<WallFrame> wall_frame(const Scene& scene, const std::string& wall, int line,
+                                    const std::string& key);
+
 /// A structure's `clamped_motion` key in its block `s`: it names a wall with a motion and the
 /// structure has clamps (`clamps`: what they are, for the message) to move with it.
 void check_clamped_motion(const Scene& scene, const std::string& wall, bool clamped,
                           const std::string& clamps, Section& s);
+
+/// A probe of a structure whose clamped_motion wall is `wall`: a frame quantity
+/// (displacement_*_tank) needs one (the probe's section `s` fails otherwise).
+void check_frame_probe(const ProbeSpec& probe, const std::string& wall, Section& s);
 
 } // namespace fsi::app

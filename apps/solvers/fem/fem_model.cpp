@@ -76,13 +76,12 @@ int probe_node(const Scene& scene, const fem::Mesh& mesh, const ProbeSpec& probe
   return best;
 }
 
-std::optional<TankFrame> tank_frame(const Scene& scene, const StructureBlock& block) {
-  const StructureSpec& spec = block.as<StructureSpec>();
-  if (spec.clamped_motion.empty()) return std::nullopt;
-  const WallSpec& wall =
-      moving_wall(scene, spec.clamped_motion, block.line, block.key + ".clamped_motion");
-  return TankFrame{make_motion(wall), wall.motion->pivot};
+namespace {
+std::optional<WallFrame> tank_frame(const Scene& scene, const StructureBlock& block) {
+  return wall_frame(scene, block.as<StructureSpec>().clamped_motion, block.line,
+                    block.key + ".clamped_motion");
 }
+} // namespace
 
 fem::Mesh checked_mesh(const Scene& scene, const StructureBlock& block) {
   const StructureSpec& spec = block.as<StructureSpec>();
@@ -238,15 +237,9 @@ std::optional<double> FemModel::probe(const ProbeSpec& probe) const {
     if (name != probe.name) continue;
     const int c = probe.quantity.starts_with("displacement_y") ? 1 : 0;
     if (!probe.quantity.ends_with("_tank")) return structure_->displacement()[2 * node + c];
-    // In the tank's frame: x = p + d + R (X_t - p) for the tank-fixed point X_t that the node is
-    // at now, so X_t - X = R^T (x - p - d) + p - X (the rigid motion undone).
-    const erp::RigidKinematics k = frame_->motion->at(structure_->time());
-    const Vec2 X = structure_->mesh().X[static_cast<std::size_t>(node)];
-    const Vec2 x = structure_->positions()[static_cast<std::size_t>(node)];
-    const Vec2 r = x - frame_->pivot - k.d;
-    const Vec2 local(std::cos(k.theta) * r.x() + std::sin(k.theta) * r.y(),
-                     -std::sin(k.theta) * r.x() + std::cos(k.theta) * r.y());
-    return (local + frame_->pivot - X)[c];
+    const auto i = static_cast<std::size_t>(node);
+    return frame_->displacement(structure_->mesh().X[i], structure_->positions()[i],
+                                structure_->time())[c];
   }
   return std::nullopt;
 }

@@ -5,7 +5,7 @@
 #include "coupling/interface.hpp"
 #include "fem/fem_spec.hpp"
 #include "fsi_app/solver_plugin.hpp"
-#include "geometry_erp/motion.hpp"
+#include "fsi_app/wall_motion.hpp"
 #include "structure_fem/interface_mesh.hpp"
 #include "structure_fem/structure.hpp"
 
@@ -24,16 +24,6 @@ std::vector<Polygon> occupied_triangles(const fem::Mesh& mesh);
 /// The FEM structure of one scene entry: mesh built, options mapped. Throws InputError (scene
 /// file and line) for tags or meshes that do not fit.
 std::unique_ptr<fem::Structure> build_structure(const Scene& scene, const StructureBlock& block);
-
-/// The moving frame a structure is clamped in (its clamped_motion wall): that wall's rigid motion
-/// about its pivot.
-struct TankFrame {
-  std::shared_ptr<const erp::Motion> motion;
-  Vec2 pivot;
-};
-
-/// The frame of the structure's clamped_motion wall, or nullopt if it is clamped in place.
-std::optional<TankFrame> tank_frame(const Scene& scene, const StructureBlock& block);
 
 /// The FE node a displacement probe names (by index, or by reference position).
 int probe_node(const Scene& scene, const fem::Mesh& mesh, const ProbeSpec& probe);
@@ -63,7 +53,7 @@ private:
   class Adapter;
   std::unique_ptr<fem::Structure> structure_;
   fem::FeInterface interface_;
-  std::optional<TankFrame> frame_; // the clamped_motion wall's motion (tank-frame probes)
+  std::optional<WallFrame> frame_; // the clamped_motion wall's motion (tank-frame probes)
   std::vector<std::pair<std::string, int>> probe_nodes_; // probe name -> node
   std::unique_ptr<Adapter> adapter_;
   long newton_iterations_ = 0, steps_ = 0;

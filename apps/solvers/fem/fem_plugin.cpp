@@ -65,9 +65,7 @@ void check(const Scene& scene, std::size_t index, Section& s, std::vector<Sectio
     if (!p.node && !p.point) probes[i].fail("", "give node or point");
     if (p.interpolate) probes[i].fail("interpolate", "an FE probe samples its node");
     if (st.mesh.kind == "rectangle") check_rectangle_probe(st.mesh, p, probes[i]);
-    if (p.quantity.ends_with("_tank") && st.clamped_motion.empty())
-      probes[i].fail("quantity", "'" + p.quantity + "' needs structure '" + p.structure +
-                                     "' to have a clamped_motion");
+    check_frame_probe(p, st.clamped_motion, probes[i]);
   }
 }
 

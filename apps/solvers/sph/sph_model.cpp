@@ -46,6 +46,16 @@ public:
     loads_ = coupling::InterfaceLoads::zeros(nodes_);
     x_.resize(model.boundaries_.size());
     a_.resize(model.boundaries_.size());
+    // The guard's exact surface of each interface: its chords where its points are now.
+    std::size_t a = model.first_point_;
+    for (std::size_t j = 0; j < model.boundaries_.size(); ++j) {
+      x_[j] = model.boundaries_[j].mesh().X0;
+      const int group = static_cast<int>(model.fluid_->walls().group[a]);
+      model.fluid_->set_wall_distance(group, [this, j](const Vec2& q) {
+        return model_.boundaries_[j].signed_distance(x_[j], q);
+      });
+      a += model.boundaries_[j].size();
+    }
   }
   void initialize() override {}
   void set_interface_motion(const coupling::InterfaceMotion& m) override {

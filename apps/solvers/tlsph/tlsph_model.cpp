@@ -15,6 +15,11 @@ bool inside(const Box& b, const Vec2& X) {
   return X.x() >= b.min.x() && X.x() <= b.max.x() && X.y() >= b.min.y() && X.y() <= b.max.y();
 }
 
+std::optional<WallFrame> tank_frame(const Scene& scene, const StructureBlock& block) {
+  return wall_frame(scene, block.as<TlsphSpec>().clamped_motion, block.line,
+                    block.key + ".clamped_motion");
+}
+
 // The lattice starts at the lower-left corner of the region's box (a rectangle's min).
 Vec2 lattice_origin(const std::vector<Vec2>& outline) {
   Vec2 lo = outline.front();
@@ -28,23 +33,16 @@ std::unique_ptr<tlsph::TlsphSolid> build_solid(const Scene& scene, const Structu
   o.gravity = scene.gravity;
   // The library's defaults (quadratic correction, hourglass control, each clamp at its face
   // with the free particles: docs/solid_tlsph.md, "Coupled").
-  std::shared_ptr<const erp::Motion> motion;
-  Vec2 pivot = Vec2::Zero();
-  if (!t.clamped_motion.empty()) {
-    const WallSpec& wall =
-        moving_wall(scene, t.clamped_motion, block.line, block.key + ".clamped_motion");
-    motion = make_motion(wall);
-    pivot = wall.motion->pivot;
-  }
+  const std::optional<WallFrame> frame = tank_frame(scene, block);
   for (const Box& box : t.clamped) {
     tlsph::Clamp c;
     c.contains = [box](const Vec2& X) { return inside(box, X); };
-    if (motion) { // the wall's rigid motion at X0
-      c.position = [motion, pivot](const Vec2& X, double time) {
-        return erp::rigid_node_state(motion->at(time), pivot, X).x;
+    if (frame) { // the wall's rigid motion at X0
+      c.position = [frame](const Vec2& X, double time) {
+        return erp::rigid_node_state(frame->motion->at(time), frame->pivot, X).x;
       };
-      c.velocity = [motion, pivot](const Vec2& X, double time) {
-        return erp::rigid_node_state(motion->at(time), pivot, X).v;
+      c.velocity = [frame](const Vec2& X, double time) {
+        return erp::rigid_node_state(frame->motion->at(time), frame->pivot, X).v;
       };
     }
     o.clamps.push_back(std::move(c));
@@ -86,13 +84,15 @@ private:
 TlsphModel::TlsphModel(const Scene& scene, const StructureBlock& block)
     : StructurePart(block.name), outline_(block.as<TlsphSpec>().outline),
       solid_(build_solid(scene, block)), interface_(solid_->interface_mesh()),
-      adapter_(std::make_unique<Adapter>(*this)) {
+      frame_(tank_frame(scene, block)), adapter_(std::make_unique<Adapter>(*this)) {
   for (const auto& p : scene.output.probes) {
     if (p.structure != block.name) continue;
     const auto nearest = static_cast<std::uint32_t>(solid_->nearest_particle(*p.point));
     try { // the kernel interpolation at the point, or its nearest particle with weight 1
-      probe_stencils_.emplace_back(p.name, p.interpolate ? solid_->interpolation_stencil(*p.point)
-                                                         : tlsph::ProbeStencil{{nearest}, {1.0}});
+      if (p.interpolate)
+        probes_.push_back({p.name, solid_->interpolation_stencil(*p.point), *p.point});
+      else
+        probes_.push_back({p.name, {{nearest}, {1.0}}, solid_->reference_position(nearest)});
     } catch (const InputError& e) {
       fail_at(scene, p.line, p.key + ".point", e.what());
     }
@@ -132,9 +132,13 @@ void TlsphModel::write_frame(FieldsFile& file, const std::vector<std::string>& f
 }
 
 std::optional<double> TlsphModel::probe(const ProbeSpec& probe) const {
-  for (const auto& [name, stencil] : probe_stencils_)
-    if (name == probe.name)
-      return solid_->displacement_at(stencil)[probe.quantity == "displacement_y" ? 1 : 0];
+  for (const auto& [name, stencil, X] : probes_) {
+    if (name != probe.name) continue;
+    const int c = probe.quantity.starts_with("displacement_y") ? 1 : 0;
+    const Vec2 u = solid_->displacement_at(stencil);
+    return probe.quantity.ends_with("_tank") ? frame_->displacement(X, X + u, solid_->time())[c]
+                                             : u[c];
+  }
   return std::nullopt;
 }
 

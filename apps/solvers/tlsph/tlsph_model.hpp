@@ -3,10 +3,12 @@
 // clamped boxes (fixed or following a wall's motion), gravity and, coupled, the interface loads
 // on its surface particles; also the coupler's S through the interface those particles describe.
 #include "fsi_app/solver_plugin.hpp"
+#include "fsi_app/wall_motion.hpp"
 #include "solid_tlsph/solid.hpp"
 #include "tlsph/tlsph_spec.hpp"
 
 #include <memory>
+#include <optional>
 
 namespace fsi::app::tlsph_plugin {
 
@@ -18,8 +20,8 @@ public:
   void advance(double time, double dt) override;
   /// The particles as a point grid named after the structure.
   void write_frame(FieldsFile& file, const std::vector<std::string>& fields) const override;
-  /// displacement_x / displacement_y at the probe's point: its nearest particle's, or the
-  /// kernel interpolation (interpolate: true).
+  /// displacement_x|y at the probe's point: its nearest particle's, or the kernel interpolation
+  /// (interpolate: true); displacement_x|y_tank: the same in the clamped_motion wall's frame.
   std::optional<double> probe(const ProbeSpec& probe) const override;
   void report(JsonObject& run) const override;
   /// The solid and its counters under "structures/<name>/".
@@ -36,7 +38,13 @@ private:
   std::vector<Vec2> outline_;
   std::unique_ptr<tlsph::TlsphSolid> solid_;
   InterfaceMesh interface_;
-  std::vector<std::pair<std::string, tlsph::ProbeStencil>> probe_stencils_; // by probe name
+  struct Probe {
+    std::string name;
+    tlsph::ProbeStencil stencil;
+    Vec2 X; // the reference position the stencil samples
+  };
+  std::vector<Probe> probes_;
+  std::optional<WallFrame> frame_; // the clamped_motion wall's motion (tank-frame probes)
   std::unique_ptr<Adapter> adapter_;
   long steps_ = 0, substeps_ = 0;
   mutable std::vector<double> xy_, u_, v_; // output buffers

@@ -21,10 +21,14 @@ void check(const Scene& scene, std::size_t index, Section& s, std::vector<Sectio
   check_clamped_motion(scene, t.clamped_motion, !t.clamped.empty(), "clamped boxes", s);
   if (scene.fluid && t.options.interface_tags.empty()) // a fluid and a structure are coupled
     s.fail("interface", "a structure coupled to the fluid needs the sides it is wetted on");
-  for (std::size_t i = 0; i < scene.output.probes.size(); ++i)
-    if (scene.output.probes[i].structure == block.name && !scene.output.probes[i].point)
+  for (std::size_t i = 0; i < scene.output.probes.size(); ++i) {
+    const ProbeSpec& p = scene.output.probes[i];
+    if (p.structure != block.name) continue;
+    if (!p.point)
       probes[i].fail("point", "required key missing (the particle nearest to it, or the kernel "
                               "interpolation at it, is probed)");
+    check_frame_probe(p, t.clamped_motion, probes[i]);
+  }
 }
 
 // Per particle: the FieldSet arrays (about 40 doubles and flags), the reference neighbour rows
@@ -58,7 +62,7 @@ StructurePlugin plugin() {
           validate,
           footprint,
           {"displacement", "velocity", "von_mises", "det_F"},
-          {"displacement_x", "displacement_y"}};
+          {"displacement_x", "displacement_y", "displacement_x_tank", "displacement_y_tank"}};
 }
 
 } // namespace fsi::app::tlsph_plugin

@@ -48,6 +48,10 @@ struct RigidMotion {
 };
 using WallMotion = std::function<RigidMotion(double t)>;
 
+/// The signed distance of a point to a wall group's surface, > 0 on the fluid's side (the caller's
+/// exact geometry, e.g. a structure's interface polyline as it is now).
+using WallDistance = std::function<double(const Vec2& x)>;
+
 /// A wall particle given directly (e.g. a boundary point of a structure's interface,
 /// fluid_sph/interface_boundary.hpp): reference position, unit normal into the fluid, group,
 /// depth behind the wall surface along n (>= 0) and, on the bisector of a convex corner of the
@@ -122,6 +126,11 @@ public:
   void set_velocities(const std::vector<Vec2>& v);
   /// Motion of a wall group from now on (its dummies follow it from the next acoustic step).
   void set_wall_motion(int group, WallMotion motion);
+  /// The exact surface of a moved wall group for the through-a-wall guard: a particle that the
+  /// group's points put behind the walls stops the run only if `distance` puts it more than dp/2
+  /// behind too (a thin body's end face may have no boundary point of its own). Called during
+  /// advance, from several threads at once.
+  void set_wall_distance(int group, WallDistance distance);
   /// Wall particles the caller moves (groups without a WallMotion, e.g. a structure's boundary
   /// points): before each advance set x, y, nx, ny at the step's end and vx, vy, ax, ay averaged
   /// over it (eq. 17); the pairs follow at the next advection step, as for a WallMotion.
@@ -221,7 +230,8 @@ private:
   double h_, sigma0_, mass_;
   FluidParticles fluid_;
   WallParticles walls_;
-  std::vector<WallMotion> motions_; // by group, empty: static
+  std::vector<WallMotion> motions_;     // by group, empty: static
+  std::vector<WallDistance> distances_; // by group, empty: the points' planes alone
   particles::PeriodicGrid grid_, wall_grid_;
   // Pairs, compressed rows: fluid i's fluid neighbours are pj_[pstart_[i] .. pstart_[i+1]).
   std::vector<std::uint32_t> pstart_, pj_, wstart_, wj_;
