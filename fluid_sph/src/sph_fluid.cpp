@@ -489,7 +489,7 @@ void SphFluid::compute_advection_dt() {
   Dt_ = options_.advection_cfl * h_ / speed;
 }
 
-void SphFluid::build_pairs() {
+void SphFluid::build_pairs(bool guard) {
   auto& f = fluid_;
   const std::size_t n = f.size(), nw = walls_.size();
   grid_.bin(f.xb.data(), f.yb.data(), n);
@@ -569,6 +569,7 @@ void SphFluid::build_pairs() {
           store_pair(kw++, a, dx, dy, kernel_, wj_, wex_, wey_, wdw_, wr_);
           if (r2 < nearest) nearest = r2, a_nearest = a;
         });
+        if (!guard) return none;
         const double within = std::sqrt(nearest) + reach;
         for (std::uint32_t k = kw0; k < kw; ++k) {
           if (wr_[k] > within) continue;
@@ -782,7 +783,7 @@ void SphFluid::restore(const State& s) {
   walls_.fields.restore(s.walls);
   t_ = s.t, Dt_ = s.Dt, elapsed_ = s.elapsed, dt_acoustic_ = s.dt_acoustic;
   step_ = s.step, builds_ = s.builds, sub_ = s.sub, subs_ = s.subs, removed_ = s.removed;
-  build_pairs(); // the pairs of the restored advection step, from its build positions
+  build_pairs(false); // the restored advection step's pairs, from its build positions (checked)
   parallel_for(fluid_.size(), [&](std::size_t i) {
     fluid_.p[i] = options_.c0 * options_.c0 * (fluid_.rho[i] - options_.rho0);
   });
@@ -808,7 +809,7 @@ void SphFluid::read_state(const StateArchive& a, const std::string& prefix) {
   t_ = clock[0], Dt_ = clock[1], elapsed_ = clock[2], dt_acoustic_ = clock[3];
   step_ = counters[0], builds_ = counters[1], sub_ = counters[2], subs_ = counters[3];
   removed_ = static_cast<std::size_t>(counters[4]);
-  build_pairs();
+  build_pairs(false); // as restore: the pairs were checked when first built
   parallel_for(fluid_.size(), [&](std::size_t i) {
     fluid_.p[i] = options_.c0 * options_.c0 * (fluid_.rho[i] - options_.rho0);
   });

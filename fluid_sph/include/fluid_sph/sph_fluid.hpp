@@ -209,7 +209,9 @@ private:
   void wall_viscous_reaction(); // tracked walls: the viscous wall term of prior_acceleration
 
   void per_advection_step(); // wrap, remove, sort, pairs, density, B, viscous, transport, Dt
-  void build_pairs();        // from xb, yb (fluid) and xb, yb (walls)
+  // From xb, yb (fluid) and xb, yb (walls); guard: the through-a-wall check (not on a rebuild of
+  // pairs already checked, restore and read_state, whose walls' exact surface may have moved).
+  void build_pairs(bool guard = true);
   void reinitialise_density();
   /// sum_j W_ij over fluid i's fluid and wall neighbours and itself, at the last list build.
   double kernel_sum(std::size_t i) const;
