@@ -96,9 +96,10 @@ std::vector<Vec2> fill_rectangle(const Vec2& lo, const Vec2& hi, double dp) {
 }
 
 SphFluid::SphFluid(const SphOptions& options, const std::vector<Vec2>& positions,
-                   const std::vector<WallPolyline>& walls, const std::vector<WallPoint>& points)
+                   const std::vector<WallPolyline>& walls, const std::vector<WallPoint>& points,
+                   std::vector<WallDistance> distances)
     : options_(options), kernel_((options.validate(), options.h())), h_(options.h()), sigma0_(0.0),
-      mass_(options.mass()) {
+      mass_(options.mass()), distances_(std::move(distances)) {
   const double dp = options_.dp;
   // sigma0: the lattice sum of W (method notes, "Kernel and resolution").
   const int reach = static_cast<int>(std::ceil(kernel_.cutoff() / dp)) + 1;
@@ -233,13 +234,6 @@ void SphFluid::set_wall_motion(int group, WallMotion motion) {
   if (motions_.size() <= static_cast<std::size_t>(group))
     motions_.resize(static_cast<std::size_t>(group) + 1);
   motions_[static_cast<std::size_t>(group)] = std::move(motion);
-}
-
-void SphFluid::set_wall_distance(int group, WallDistance distance) {
-  if (group < 0) throw InputError("fluid_sph: wall group " + std::to_string(group) + " < 0");
-  if (distances_.size() <= static_cast<std::size_t>(group))
-    distances_.resize(static_cast<std::size_t>(group) + 1);
-  distances_[static_cast<std::size_t>(group)] = std::move(distance);
 }
 
 double SphFluid::next_dt() const {
@@ -542,10 +536,10 @@ void SphFluid::build_pairs(bool guard) {
   // once it is out of the other face's range (about a dp from it); acceptable for a guard,
   // which only has to stop a run whose particles get well through a wall. At a flat wall it
   // flags what the nearest point's plane did, and a particle past the first layer too. Where the
-  // caller gave the nearest point's group an exact surface (set_wall_distance), a particle is
-  // flagged only if that surface puts it behind the tolerance too: the end face of a body 2 dp
-  // thick may have no point of its own (its row nearer the side faces), and a particle above
-  // that end is then behind both sides' planes.
+  // caller gave the nearest point's group an exact surface (the constructor's distances), a
+  // particle is flagged only if that surface puts it behind the tolerance too: the end face of a
+  // body 2 dp thick may have no point of its own (its row nearer the side faces), and a particle
+  // above that end is then behind both sides' planes.
   const double reach = 1.5 * options_.dp, tolerance = -0.5 * options_.dp;
   const std::size_t behind = parallel_reduce_balanced(
       n, none,

@@ -433,16 +433,22 @@ TEST_CASE("sph: the through-a-wall guard asks the interface's exact surface at a
   CHECK_THAT(body.signed_distance(mesh.X0, {0.503, 0.3}), WithinAbs(-0.003, 1e-14));
   const Vec2 below(0.51, 0.294), inside(0.51, 0.35);
   const auto o = base(dp);
-  // The points' planes alone flag the particle below the end (the constructor's guard).
+  const std::vector<sph::WallDistance> exact_surface{
+      [&](const Vec2& q) { return body.signed_distance(mesh.X0, q); }};
+  // The points' planes alone flag the particle below the end (the constructor's guard); with
+  // the exact surface the constructor's guard lets it be (issue 20, Turek-Hron FSI2 at
+  // bh/dp_S = 4: the flag's end 2 dp thick beside the fluid's first column at t = 0).
   CHECK_THROWS_WITH(sph::SphFluid(o, {below}, {}, points),
+                    Catch::Matchers::Contains("through a wall"));
+  CHECK_NOTHROW(sph::SphFluid(o, {below}, {}, points, exact_surface));
+  CHECK_THROWS_WITH(sph::SphFluid(o, {inside}, {}, points, exact_surface),
                     Catch::Matchers::Contains("through a wall"));
   // Built 0.5 m away, moved into place, the next pair build judges with the exact surface.
   auto away = points;
   for (auto& p : away) p.x.y() += 0.5;
   auto moved_in = [&](const Vec2& particle, bool exact) {
-    sph::SphFluid f(o, {particle}, {}, away);
-    if (exact)
-      f.set_wall_distance(0, [&](const Vec2& q) { return body.signed_distance(mesh.X0, q); });
+    sph::SphFluid f(o, {particle}, {}, away,
+                    exact ? exact_surface : std::vector<sph::WallDistance>{});
     auto& w = f.moved_walls();
     for (std::size_t a = 0; a < w.size(); ++a) w.y[a] -= 0.5;
     const long builds = f.advection_steps();

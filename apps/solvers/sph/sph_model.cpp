@@ -44,18 +44,7 @@ public:
     start_.a.assign(nodes_, Vec2::Zero());
     end_ = start_;
     loads_ = coupling::InterfaceLoads::zeros(nodes_);
-    x_.resize(model.boundaries_.size());
     a_.resize(model.boundaries_.size());
-    // The guard's exact surface of each interface: its chords where its points are now.
-    std::size_t a = model.first_point_;
-    for (std::size_t j = 0; j < model.boundaries_.size(); ++j) {
-      x_[j] = model.boundaries_[j].mesh().X0;
-      const int group = static_cast<int>(model.fluid_->walls().group[a]);
-      model.fluid_->set_wall_distance(group, [this, j](const Vec2& q) {
-        return model_.boundaries_[j].signed_distance(x_[j], q);
-      });
-      a += model.boundaries_[j].size();
-    }
   }
   void initialize() override {}
   void set_interface_motion(const coupling::InterfaceMotion& m) override {
@@ -108,7 +97,7 @@ private:
   coupling::InterfaceLoads loads_;
   sph::SphFluid::State saved_;
   // Work arrays, sized once.
-  std::vector<std::vector<Vec2>> x_, a_;
+  std::vector<std::vector<Vec2>> a_;
   std::vector<Vec2> nodal_a_, position_, normal_, point_a_, impulse_, nodal_f_;
 };
 
@@ -135,10 +124,10 @@ void SphModel::Adapter::advance(double t, double dt) {
     std::size_t a = model_.first_point_;
     for (std::size_t j = 0; j < bs.size(); ++j) {
       const std::size_t n = bs[j].mesh().node_count();
-      x_[j].resize(n);
+      std::vector<Vec2>& x = model_.interface_x_[j];
       for (std::size_t k = 0; k < n; ++k)
-        x_[j][k] = (1.0 - s) * start_.x[offset_[j] + k] + s * end_.x[offset_[j] + k];
-      bs[j].place(x_[j], position_, normal_);
+        x[k] = (1.0 - s) * start_.x[offset_[j] + k] + s * end_.x[offset_[j] + k];
+      bs[j].place(x, position_, normal_);
       bs[j].interpolate(a_[j], point_a_);
       for (std::size_t p = 0; p < bs[j].size(); ++p, ++a) {
         w.vx[a] = (position_[p].x() - w.x[a]) * inv_h; // mean over the acoustic step (eq. 17)
@@ -199,11 +188,17 @@ SphModel::SphModel(const Scene& scene, const std::vector<InterfaceMesh>& interfa
     walls.push_back({scene.walls[w].polyline, scene.walls[w].closed, static_cast<int>(w)});
   }
   std::vector<sph::WallPoint> points;
+  // The guard's exact surface of each interface (group walls + j): its chords where its points
+  // are now (interface_x_, moved by the adapter).
+  std::vector<sph::WallDistance> distances(walls.size());
   try {
     for (std::size_t j = 0; j < interfaces.size(); ++j) {
       boundaries_.emplace_back(interfaces[j], f.options.dp, f.interface_layers);
       const auto p = boundaries_.back().wall_points(static_cast<int>(walls.size() + j));
       points.insert(points.end(), p.begin(), p.end());
+      interface_x_.push_back(interfaces[j].X0);
+      distances.emplace_back(
+          [this, j](const Vec2& q) { return boundaries_[j].signed_distance(interface_x_[j], q); });
     }
   } catch (const InputError& e) {
     fail_at(scene, scene.fluid->line, "fluid", e.what());
@@ -211,7 +206,8 @@ SphModel::SphModel(const Scene& scene, const std::vector<InterfaceMesh>& interfa
   const std::vector<Vec2> positions = fill_regions(scene, f.area.regions, f.options.dp, solid);
   initial_count_ = positions.size();
   try {
-    fluid_ = std::make_unique<sph::SphFluid>(sph_options(scene), positions, walls, points);
+    fluid_ = std::make_unique<sph::SphFluid>(sph_options(scene), positions, walls, points,
+                                             std::move(distances));
   } catch (const InputError& e) {
     fail_at(scene, scene.fluid->line, "fluid", e.what());
   }

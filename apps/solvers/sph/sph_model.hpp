@@ -49,6 +49,7 @@ public:
 private:
   class Adapter;
   std::vector<sph::InterfaceBoundary> boundaries_;
+  std::vector<std::vector<Vec2>> interface_x_; // each interface's nodes where its points are now
   std::unique_ptr<sph::SphFluid> fluid_;
   std::unique_ptr<Adapter> adapter_;
   std::size_t initial_count_ = 0, first_point_ = 0;

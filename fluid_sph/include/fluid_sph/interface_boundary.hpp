@@ -42,7 +42,7 @@ public:
   /// The signed distance of q to the interface at node positions x, > 0 on the fluid's side: to
   /// its chords (a -> m -> b; a -> b for order 1), signed by the nearest chord's normal, at a
   /// vertex by the sum of the normals of the chords that meet there (the through-a-wall guard's
-  /// exact surface, SphFluid::set_wall_distance).
+  /// exact surface, SphFluid's distances).
   double signed_distance(const std::vector<Vec2>& x, const Vec2& q) const;
   /// Per point: sum_k N_k(xi) value_k over its edge's nodes (e.g. nodal accelerations).
   void interpolate(const std::vector<Vec2>& nodal, std::vector<Vec2>& at_points) const;

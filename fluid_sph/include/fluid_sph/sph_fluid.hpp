@@ -117,20 +117,21 @@ class SphFluid {
 public:
   /// Fluid particles start at rest at `positions`; walls are filled with dummy particles.
   /// Throws fsi::InputError on invalid options or positions outside the domain.
-  /// `points` are appended to the walls' dummies as further wall particles (in order).
+  /// `points` are appended to the walls' dummies as further wall particles (in order);
+  /// `distances` are the exact surfaces of moved wall groups (by group; empty: none) for the
+  /// through-a-wall guard: a particle that the group's points put behind the walls stops the run
+  /// only if its distance puts it more than dp/2 behind too (a thin body's end face may have no
+  /// boundary point of its own). Called during the pair builds, this one's included, from several
+  /// threads at once.
   SphFluid(const SphOptions& options, const std::vector<Vec2>& positions,
-           const std::vector<WallPolyline>& walls = {}, const std::vector<WallPoint>& points = {});
+           const std::vector<WallPolyline>& walls = {}, const std::vector<WallPoint>& points = {},
+           std::vector<WallDistance> distances = {});
 
   /// Initial velocities (before the first advance), one per particle in the order of the
   /// constructor's positions (particle id; the particles themselves are sorted by cell).
   void set_velocities(const std::vector<Vec2>& v);
   /// Motion of a wall group from now on (its dummies follow it from the next acoustic step).
   void set_wall_motion(int group, WallMotion motion);
-  /// The exact surface of a moved wall group for the through-a-wall guard: a particle that the
-  /// group's points put behind the walls stops the run only if `distance` puts it more than dp/2
-  /// behind too (a thin body's end face may have no boundary point of its own). Called during
-  /// advance, from several threads at once.
-  void set_wall_distance(int group, WallDistance distance);
   /// Wall particles the caller moves (groups without a WallMotion, e.g. a structure's boundary
   /// points): before each advance set x, y, nx, ny at the step's end and vx, vy, ax, ay averaged
   /// over it (eq. 17); the pairs follow at the next advection step, as for a WallMotion.
