@@ -1,6 +1,8 @@
 """scripts/plot: the published curves each scene's plot.json names are found and scaled, the
-axes carry units, and every probe gets its own PNG."""
+axes carry units, and every probe gets its own PNG. scripts/oscillation: mean, amplitude and
+frequency of a known signal."""
 import json
+import math
 import os
 import subprocess
 import sys
@@ -9,6 +11,7 @@ import unittest
 from common import SOURCE, fresh
 
 sys.path.insert(0, os.path.join(SOURCE, "scripts"))
+import oscillation  # noqa: E402
 import plot_probes  # noqa: E402
 
 REF = os.path.join(SOURCE, "data", "ref")
@@ -56,6 +59,24 @@ class PlotTest(unittest.TestCase):
         self.assertEqual(p.returncode, 0, p.stderr)
         for png in ["probes.png", "probe_p_bottom.png", "probe_mean_speed.png"]:
             self.assertGreater(os.path.getsize(os.path.join(out, png)), 10000, png)
+
+
+class OscillationTest(unittest.TestCase):
+    def test_mean_amplitude_frequency_of_a_sampled_sine(self):
+        # 0.001 + 0.08 sin(2 pi 1.9 t) sampled every 0.01 s (the FSI2 probes' interval) from
+        # t = 3 to 10 s: whole cycles between the first and last upward mid-range crossing.
+        t = [3.0 + 0.01 * k for k in range(701)]
+        v = [0.001 + 0.08 * math.sin(2 * math.pi * 1.9 * x) for x in t]
+        mean, amplitude, frequency, cycles = oscillation.measure(t, v, 3.0, 10.0)
+        self.assertEqual(cycles, 12)  # crossings at k / 1.9 s, k = 6 .. 18
+        self.assertAlmostEqual(frequency, 1.9, delta=1e-4)  # crossings interpolated linearly
+        self.assertAlmostEqual(amplitude, 0.08, delta=0.08 * 2e-3)  # peaks between samples
+        self.assertAlmostEqual(mean, 0.001, delta=1e-4)
+
+    def test_a_window_without_two_crossings_is_refused(self):
+        t = [0.01 * k for k in range(50)]
+        with self.assertRaises(ValueError):
+            oscillation.measure(t, [math.sin(2 * math.pi * x) for x in t], 0.0, 0.49)
 
 
 if __name__ == "__main__":
