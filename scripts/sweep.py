@@ -1,4 +1,5 @@
-"""Speed-accuracy sweep of a coupled scene (issue 7): resolution, coupling scheme, time step.
+"""Speed-accuracy sweep of a coupled scene (issues 7, 20): fluid/solid pair, resolution,
+coupling scheme, time step.
 
 Each case is one run through the Python module fsi (1 thread, in a child process, two cases at a
 time by default) into OUT/CASE; a case whose run.json says `completed` is not run again, so an
@@ -45,6 +46,34 @@ SCENES = {
     },
 }
 
+# Fluid/solid pairs (issue 20): name -> the scene overrides that choose it and the keys that set
+# its resolution. A level is the fluid's spacing l0 (key "l0") and the coupling step; a TL-SPH
+# structure gets dp_S = l0 / 2 (key "dp"; the RKGC paper's dp_F = 2 dp_S). The first pair of
+# --pairs also runs the coupling variants and time-step factors at the middle level.
+# The Walhorn scene keeps the EMPS keys at its top level (scripts and tests set fluid.l0 on it), so
+# its SPH pairs replace the fluid block (the SPH run of docs/validation.md: RKGC, c0 34.2 m/s).
+WALHORN_SPH = ("fluid={type: sph, density: 1000.0, viscosity: 1.0e-6, l0: 1.46e-3, "
+               "sound_speed: 34.2, regions: [{min: [0.0, 0.0], max: [0.146, 0.292]}], "
+               "domain: {min: [-0.02, -0.02], max: [0.604, 0.65]}}")
+PAIRS = {
+    "dam_break": {
+        "emps+fem": {"set": [], "l0": "fluid.l0"},
+        "sph+fem": {"set": [WALHORN_SPH], "l0": "fluid.l0"},
+        "emps+tlsph": {"set": ["structures[0].type=tlsph"], "l0": "fluid.l0",
+                       "dp": "structures[0].tlsph.dp"},
+        "sph+tlsph": {"set": [WALHORN_SPH, "structures[0].type=tlsph"], "l0": "fluid.l0",
+                      "dp": "structures[0].tlsph.dp"},
+    },
+    "hydrostatic_plate": {
+        "emps+fem": {"set": ["fluid.type=emps", "structures[0].type=fem"], "l0": "fluid.emps.l0"},
+        "sph+fem": {"set": ["fluid.type=sph", "structures[0].type=fem"], "l0": "fluid.sph.l0"},
+        "emps+tlsph": {"set": ["fluid.type=emps", "structures[0].type=tlsph"],
+                       "l0": "fluid.emps.l0", "dp": "structures[0].tlsph.dp"},
+        "sph+tlsph": {"set": ["fluid.type=sph", "structures[0].type=tlsph"],
+                      "l0": "fluid.sph.l0", "dp": "structures[0].tlsph.dp"},
+    },
+}
+
 # Coupling variants: name -> scene overrides.
 SCHEMES = {
     "css": ["coupling.scheme=css", "coupling.predictor=none"],
@@ -74,30 +103,56 @@ def measure(scene, case_dir):
     return sum(last) / len(last), None
 
 
+def ladder(text, what):
+    """--levels / --dts: one comma list for every pair, or per pair 'pair:a,b,c;pair:...'."""
+    out = {}
+    for part in text.split(";"):
+        pair, _, values = part.rpartition(":")
+        try:
+            out[pair] = [float(x) for x in values.split(",")]
+        except ValueError:
+            sys.exit(f"sweep: --{what}: not a list of numbers: {values!r}")
+    return out
+
+
 def cases(args):
-    """(name, overrides) of the plan: CSS over the levels (dt proportional to l0), every
-    coupling variant at the middle level, and CSS at the middle level with dt scaled."""
-    levels = [float(x) for x in args.levels.split(",")]
-    dts = [float(x) for x in args.dts.split(",")]
-    if len(levels) != len(dts):
-        sys.exit("sweep: --levels and --dts need the same number of entries")
+    """(name, overrides) of the plan: for each pair CSS over its levels (dt with them); for the
+    first pair also every coupling variant at the middle level and CSS there with dt scaled.
+    Names carry the pair when --pairs names more than the scene as it is."""
+    pairs = args.pairs.split(",") if args.pairs else [""]
+    known = PAIRS.get(args.scene, {})
+    for pair in pairs:
+        if pair and pair not in known:
+            sys.exit(f"sweep: --pairs: {pair!r} is not one of {', '.join(known)}")
+    levels_of, dts_of = ladder(args.levels, "levels"), ladder(args.dts, "dts")
     common = [f"time.end={args.end}"] + args.set
     out = []
 
-    def add(name, l0, dt, scheme):
-        out.append((name, common + [f"fluid.l0={l0}", f"time.dt={dt}"] + SCHEMES[scheme]))
+    for n, pair in enumerate(pairs):
+        levels, dts = levels_of.get(pair, levels_of.get("")), dts_of.get(pair, dts_of.get(""))
+        if levels is None or dts is None or len(levels) != len(dts):
+            sys.exit(f"sweep: --levels and --dts need the same number of entries for {pair!r}")
+        spec = known.get(pair, {"set": [], "l0": "fluid.l0"})
+        prefix = f"{pair}_" if pair else ""
 
-    for l0, dt in zip(levels, dts):
-        add(f"l0_{l0:g}_dt_{dt:g}_css", l0, dt, "css")
-    if args.middle is not None and args.middle not in levels:
-        sys.exit(f"sweep: --middle {args.middle:g} is not one of --levels")
-    mid = len(levels) // 2 if args.middle is None else levels.index(args.middle)
-    for scheme in args.schemes.split(","):
-        if scheme != "css":
-            add(f"l0_{levels[mid]:g}_dt_{dts[mid]:g}_{scheme}", levels[mid], dts[mid], scheme)
-    for factor in [float(x) for x in args.dt_factors.split(",") if x]:
-        dt = dts[mid] * factor
-        add(f"l0_{levels[mid]:g}_dt_{dt:g}_css", levels[mid], dt, "css")
+        def add(name, l0, dt, scheme):
+            keys = [f"{spec['l0']}={l0}"] + ([f"{spec['dp']}={l0 / 2:g}"] if "dp" in spec else [])
+            out.append((prefix + name,
+                        common + spec["set"] + keys + [f"time.dt={dt}"] + SCHEMES[scheme]))
+
+        for l0, dt in zip(levels, dts):
+            add(f"l0_{l0:g}_dt_{dt:g}_css", l0, dt, "css")
+        if n > 0:
+            continue
+        if args.middle is not None and args.middle not in levels:
+            sys.exit(f"sweep: --middle {args.middle:g} is not one of --levels")
+        mid = len(levels) // 2 if args.middle is None else levels.index(args.middle)
+        for scheme in args.schemes.split(","):
+            if scheme != "css":
+                add(f"l0_{levels[mid]:g}_dt_{dts[mid]:g}_{scheme}", levels[mid], dts[mid], scheme)
+        for factor in [float(x) for x in args.dt_factors.split(",") if x]:
+            dt = dts[mid] * factor
+            add(f"l0_{levels[mid]:g}_dt_{dt:g}_css", levels[mid], dt, "css")
     return out
 
 
@@ -157,7 +212,9 @@ def run_case(scene_file, out, name, overrides):
 
 def row(scene, out, name, overrides):
     r = status(os.path.join(out, name))
-    settings = ", ".join(o for o in overrides if not o.startswith("time.end="))
+    # A replaced fluid block (WALHORN_SPH) is named, not printed.
+    settings = ", ".join("fluid={sph block of sweep.py}" if o.startswith("fluid={") else o
+                         for o in overrides if not o.startswith("time.end="))
     if r is None:
         return None, f"| {name} | {settings} | not run | | | | | |"
     c = r.get("coupling", {})
@@ -176,21 +233,35 @@ def row(scene, out, name, overrides):
                    f"{iters} | {value:.4g}{at} | {100 * error:.1f} % |")
 
 
+def pair_of(name):
+    """The pair a case name starts with ('' for a sweep without --pairs)."""
+    head = name.split("_", 1)[0]
+    return head if "+" in head else ""
+
+
 def pareto_png(points, path, title):
+    """Error against wall time, one Pareto front per pair (its colour)."""
     fig, ax = plt.subplots(figsize=(7, 4.5))
-    for wall, error, name in points:
-        ax.plot(wall, 100 * error, "o")
-        ax.annotate(name, (wall, 100 * error), fontsize=7, xytext=(3, 3),
-                    textcoords="offset points")
-    front, best = [], float("inf")
-    for wall, error, _ in sorted(points):
-        if error < best:
-            front.append((wall, 100 * error))
-            best = error
-    if front:
-        ax.step(*zip(*front), where="post", color="k", alpha=0.4)
-        ax.plot(*zip(*front), "s", mfc="none", ms=11, color="k", label="Pareto front")
-        ax.legend(fontsize=8, loc="lower right")
+    groups = {}
+    for point in points:
+        groups.setdefault(pair_of(point[2]), []).append(point)
+    for k, (pair, group) in enumerate(sorted(groups.items())):
+        colour = f"C{k}"
+        for wall, error, name in group:
+            ax.plot(wall, 100 * error, "o", color=colour)
+            ax.annotate(name[len(pair) + 1:] if pair else name, (wall, 100 * error), fontsize=7,
+                        xytext=(3, 3), textcoords="offset points")
+        front, best = [], float("inf")
+        for wall, error, _ in sorted(group):
+            if error < best:
+                front.append((wall, 100 * error))
+                best = error
+        if front:
+            ax.step(*zip(*front), where="post", color=colour, alpha=0.4)
+            ax.plot(*zip(*front), "s", mfc="none", ms=11, color=colour,
+                    label=f"{pair or 'Pareto'} front")
+    if groups:
+        ax.legend(fontsize=8, loc="best")
     ax.set_xscale("log")
     ax.margins(x=0.3, y=0.1)
     ax.set_xlabel("wall time (s, 1 thread)")
@@ -245,8 +316,13 @@ def main():
                                 formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("scene", choices=sorted(SCENES))
     p.add_argument("out", help="output directory (one subdirectory per case)")
-    p.add_argument("--levels", default="5.84e-3,4.13e-3,2.92e-3", help="l0 values, m")
-    p.add_argument("--dts", default="1e-5,7e-6,5e-6", help="time step per level, s")
+    p.add_argument("--pairs", help="fluid+solid pairs, e.g. emps+fem,sph+tlsph (default: the "
+                   "scene as it is); choices per scene: " +
+                   "; ".join(f"{k}: {', '.join(v)}" for k, v in PAIRS.items()))
+    p.add_argument("--levels", default="5.84e-3,4.13e-3,2.92e-3",
+                   help="l0 values, m; per pair: 'emps+fem:0.04,0.02;sph+fem:0.05,0.025'")
+    p.add_argument("--dts", default="1e-5,7e-6,5e-6", help="time step per level, s (per pair "
+                   "as --levels)")
     p.add_argument("--end", type=float, default=0.3, help="end time, s")
     p.add_argument("--schemes", default=",".join(SCHEMES), help="variants at the middle level")
     p.add_argument("--dt-factors", default="2,4", help="CSS at the middle level with dt x these")

@@ -1,11 +1,17 @@
-"""Scenes through the module: loading, overrides, check() errors as the command gives them."""
+"""Scenes through the module: loading, overrides, check() errors as the command gives them; the
+sweep's fluid/solid pair plans are valid scenes."""
 import os
+import sys
+import types
 import unittest
 
 import fsi
 import yaml
 
-from common import SCENES, command
+from common import SCENES, SOURCE, command
+
+sys.path.insert(0, os.path.join(SOURCE, "scripts"))
+import sweep  # noqa: E402
 
 CANTILEVER = os.path.join(SCENES, "cantilever.yaml")
 
@@ -55,6 +61,45 @@ class SceneTest(unittest.TestCase):
         status, out, _ = command("reference")
         self.assertEqual(status, 0)
         self.assertEqual(fsi.reference(), out)
+
+
+class SweepPairsTest(unittest.TestCase):
+    def plan(self, scene, levels, dts):
+        args = types.SimpleNamespace(scene=scene, pairs=",".join(sweep.PAIRS[scene]),
+                                     levels=levels, dts=dts, end=0.1, set=[], middle=None,
+                                     schemes="css,bgs_aitken", dt_factors="2")
+        return sweep.cases(args)
+
+    def check_all(self, scene, plan):
+        for name, overrides in plan:
+            sets = [a for o in overrides for a in ("--set", o)]
+            status, _, err = command("check", os.path.join(sweep.ROOT, scene), *sets)
+            self.assertEqual((status, err), (0, ""), name)
+
+    def test_every_pair_of_the_hydrostatic_plate_at_every_level(self):
+        # Per pair: a TL-SPH plate needs dp_S = l0 / 2 <= 0.0125 (4 particles through it).
+        plan = self.plan("hydrostatic_plate",
+                         "0.04,0.025,0.02;sph+fem:0.05,0.025,0.0125;"
+                         "emps+tlsph:0.025,0.02,0.0125;sph+tlsph:0.025,0.02,0.0125",
+                         "2.5e-4,1.5625e-4,1.25e-4;sph+fem:5e-4,2.5e-4,1.25e-4;"
+                         "emps+tlsph:1.5625e-4,1.25e-4,7.8125e-5;sph+tlsph:2.5e-4,2e-4,1.25e-4")
+        # 4 pairs x 3 levels, and the first pair's variant and dt factor at the middle level.
+        self.assertEqual(len(plan), 14)
+        names = dict(plan)
+        self.assertIn("structures[0].tlsph.dp=0.0125", names["sph+tlsph_l0_0.025_dt_0.00025_css"])
+        self.assertIn("fluid.emps.l0=0.02", names["emps+fem_l0_0.02_dt_0.000125_css"])
+        self.check_all(sweep.SCENES["hydrostatic_plate"]["file"], plan)
+
+    def test_every_pair_of_the_elastic_obstacle(self):
+        plan = self.plan("dam_break", "5.84e-3,2.92e-3", "1e-5,5e-6")
+        self.assertEqual(len(plan), 10)
+        self.check_all(sweep.SCENES["dam_break"]["file"], plan)
+
+    def test_an_unknown_pair_is_refused(self):
+        args = types.SimpleNamespace(scene="dam_break", pairs="emps+dem", levels="1", dts="1",
+                                     end=0.1, set=[], middle=None, schemes="css", dt_factors="")
+        with self.assertRaises(SystemExit):
+            sweep.cases(args)
 
 
 if __name__ == "__main__":
