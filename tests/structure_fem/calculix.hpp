@@ -1,5 +1,6 @@
 #pragma once
 // Runs CalculiX (ccx) on a T6 mesh as CPE6 plane-strain elements and reads nodal displacements.
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -35,6 +36,8 @@ struct CcxProblem {
   std::vector<int> fixed; ///< nodes with u = 0
   fsi::fem::Vector f;     ///< nodal forces, size 2 * nodes
   std::vector<int> print; ///< nodes whose displacements are wanted
+  double density = 0.0;   ///< with gravity_y != 0: the body force rho g (*DLOAD GRAV)
+  double gravity_y = 0.0; ///< g along y [m/s^2]
 };
 
 /// Writes job.inp in a fresh directory under the system temp dir, runs `ccx -i job` there and
@@ -62,8 +65,13 @@ inline std::map<int, fsi::Vec2> run_ccx_static(const CcxProblem& p, const std::s
     for (int n : p.print) inp << n + 1 << ",\n";
     inp << "*BOUNDARY\nFIX, 1, 2\n";
     inp << "*MATERIAL, NAME=SOLID\n*ELASTIC\n" << p.E << ", " << p.nu << "\n";
+    if (p.gravity_y != 0.0) inp << "*DENSITY\n" << p.density << "\n";
     inp << "*SOLID SECTION, ELSET=EALL, MATERIAL=SOLID\n1.0\n"; // unit thickness
-    inp << "*STEP\n*STATIC\n*CLOAD\n";
+    inp << "*STEP\n*STATIC\n";
+    if (p.gravity_y != 0.0)
+      inp << "*DLOAD\nEALL, GRAV, " << std::abs(p.gravity_y) << ", 0., "
+          << (p.gravity_y < 0.0 ? -1 : 1) << ", 0.\n";
+    inp << "*CLOAD\n";
     for (std::size_t k = 0; k < p.mesh->num_nodes(); ++k)
       for (int c = 0; c < 2; ++c)
         if (p.f[static_cast<Eigen::Index>(2 * k) + c] != 0.0)
