@@ -3,5 +3,5 @@
 
 namespace fsi::app {
 std::string version();
-std::string git_revision(); ///< revision the build was configured at, or "unknown"
+std::string git_revision(); ///< source revision at build time (+ "-dirty"), or "unknown"
 } // namespace fsi::app
