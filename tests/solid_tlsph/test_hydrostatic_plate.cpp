@@ -2,27 +2,19 @@
 // 1 x 0.05 m aluminium, plane strain, its ends extended 4 dp into the walls and clamped there)
 // under its own weight and the 2 m water column's rho_f g H on its top row, relaxed to rest
 // (mass damping 2 omega_1). Reference: the plane-strain plate's converged deflection, the FE
-// ladder of tests/structure_fem/test_hydrostatic_plate.cpp (160 x 16 quads), since the issues'
-// Euler-Bernoulli -6.85e-5 m leaves out the shear (+3.2 %).
+// plate at 160 x 16 quads (CalculiX agrees to 2e-5: tests/structure_fem/test_hydrostatic_plate),
+// since the issues' Euler-Bernoulli -6.85e-5 m leaves out the shear (+3.2 %).
 #include <catch2/catch.hpp>
 
 #include <cmath>
 
-#include "../structure_fem/cantilever.hpp"
+#include "../structure_fem/hydrostatic_plate.hpp"
 #include "common.hpp"
 
 using namespace tlsph_test;
+using fem_test::Plate;
 
 namespace {
-
-struct Plate {
-  double L = 1.0, h = 0.05, E = 6.75e10, nu = 0.34, rho_s = 2700.0;
-  double g = 9.81, rho_f = 1000.0, H = 2.0;
-  double omega1() const { // clamped-clamped first mode, (4.7300 / L)^2 sqrt(E'I / (rho h))
-    const double kL = 4.730040744862704, EI = E / (1.0 - nu * nu) * h * h * h / 12.0;
-    return kL * kL / (L * L) * std::sqrt(EI / (rho_s * h));
-  }
-};
 
 /// Mid-span centre-line deflection (positive downwards) of the relaxed TL-SPH plate with
 /// `layers` particles through the thickness: the mean of the four particles around (L/2, -h/2).
@@ -63,7 +55,7 @@ TEST_CASE("tlsph: the hydrostatic plate alone converges to the plane-strain plat
           "at second order (4, 8 particles through the thickness)",
           "[solid_tlsph][plate]") {
   const Plate p;
-  const double continuum = 7.062e-5; // FE 160 x 16 quads (CalculiX agrees to 2e-5)
+  const double continuum = fem_test::fem_mid_span(p, 160, 16); // -7.062e-5 m
   double error[2];
   for (int k = 0; k < 2; ++k) {
     const int layers = 4 << k;
