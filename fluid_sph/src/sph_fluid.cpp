@@ -757,11 +757,14 @@ double SphFluid::pressure_at(const Vec2& point) const {
 }
 
 double SphFluid::surge_front() const {
-  // The largest x of the bulk, as the EMPS fluid's probe (pnd >= n0/2): a particle whose kernel
-  // sum is below sigma0 / 2 (fewer than about half a support of neighbours) is spray, skipped.
+  // The largest x of the bulk, as the EMPS fluid's probe (pnd >= n0/2, pnd without i itself): a
+  // particle whose neighbours' kernel sum (fluid and wall, without its own W(0), about a third
+  // of sigma0) is below half the lattice's is spray, skipped. With W(0) counted, a lone particle
+  // sliding on a floor would pass (0.54 sigma0: W(0) and the half-plane of dummies below it).
+  const double w0 = kernel_.W(0.0), bulk = 0.5 * (sigma0_ - w0);
   double front = -std::numeric_limits<double>::max();
   for (std::size_t i = 0; i < fluid_.size(); ++i)
-    if (kernel_sum(i) >= 0.5 * sigma0_) front = std::max(front, fluid_.x[i]);
+    if (kernel_sum(i) - w0 >= bulk) front = std::max(front, fluid_.x[i]);
   return front;
 }
 

@@ -82,6 +82,20 @@ TEST_CASE("sph: the surge front is the bulk's, a drop ahead of it is spray", "[s
   CHECK(sph::SphFluid(base(dp), x).surge_front() == 0.108);
 }
 
+TEST_CASE("sph: a lone particle sliding on a floor is spray, the tongue's tip on it is bulk",
+          "[sph]") {
+  // The dam-break tongue on the floor y = 0 (fluid above: on the left of (0,0) -> (1,0)) and one
+  // particle 0.3 ahead of it at dp/2: the dummies below give it about half a support, which with
+  // its own W(0) counted passed the spray test (kernel sum 0.54 sigma0).
+  const double dp = 0.01;
+  auto o = base(dp);
+  o.domain_min = {-0.2, -0.2};
+  const std::vector<sph::WallPolyline> floor{{{{0.0, 0.0}, {1.0, 0.0}}}};
+  auto x = sph::fill_rectangle({0.0, 0.0}, {0.1, 0.05}, dp); // tongue tip at x = 0.095
+  x.push_back({0.4, 0.5 * dp});
+  CHECK(sph::SphFluid(o, x, floor).surge_front() == 0.095);
+}
+
 TEST_CASE("sph: RKGC gradient consistency on a disordered set and its convergence order",
           "[sph][consistency]") {
   // Lattice perturbed by 0.1 dp: B_i = A_i^-1 (eq. 19) makes the gradient of a linear field exact
@@ -225,9 +239,9 @@ TEST_CASE("sph: the wall pushes an approaching particle back", "[sph][sign][wall
   const double dp = 0.01;
   auto o = base(dp);
   o.domain_min = {-0.2, -0.2};
-  const std::vector<sph::WallPolyline> floor{{{{1.0, 0.0}, {0.0, 0.0}}}}; // fluid above? check
-  // Fluid on the LEFT of a -> b: (0,0) -> (1,0) has the fluid above.
+  // Fluid on the LEFT of a -> b: (0,0) -> (1,0) has the fluid above, (1,0) -> (0,0) below.
   const std::vector<sph::WallPolyline> walls{{{{0.0, 0.0}, {1.0, 0.0}}}};
+  const std::vector<sph::WallPolyline> reversed{{{{1.0, 0.0}, {0.0, 0.0}}}};
   sph::SphFluid f(o, {{0.5, 1.5 * dp}}, walls);
   REQUIRE(f.walls().size() == 4 * 100);
   for (std::size_t a = 0; a < f.walls().size(); ++a) {
@@ -247,7 +261,7 @@ TEST_CASE("sph: the wall pushes an approaching particle back", "[sph][sign][wall
   CHECK(std::abs(f.particles().vy[0]) < 1e-3 * 0.2);
   CHECK(lowest > 0.0);
   // The other orientation puts the dummies above the line.
-  sph::SphFluid g(o, {{0.5, -1.5 * dp}}, floor);
+  sph::SphFluid g(o, {{0.5, -1.5 * dp}}, reversed);
   for (std::size_t a = 0; a < g.walls().size(); ++a) REQUIRE(g.walls().y[a] > 0.0);
 }
 

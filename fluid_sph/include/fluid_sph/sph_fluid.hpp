@@ -174,7 +174,8 @@ public:
   Vec2 momentum() const;
   /// Kernel-weighted (Shepard) pressure at a point, from the fluid particles within 2h; 0 if none.
   double pressure_at(const Vec2& point) const;
-  /// Largest x of the bulk fluid (kernel sum >= sigma0 / 2): the surge front of a dam break.
+  /// Largest x of the bulk fluid (neighbours' kernel sum >= half the lattice's, W(0) left out
+  /// as MPS's pnd leaves out i): the surge front of a dam break.
   double surge_front() const;
   /// Pressure of the last step, p = c0^2 (rho - rho0), per particle.
   double pressure(std::size_t i) const { return fluid_.p[i]; }
