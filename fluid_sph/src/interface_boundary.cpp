@@ -20,10 +20,14 @@ std::pair<Vec2, Vec2> chord_frame(const InterfaceMesh& mesh, const std::vector<V
 }
 } // namespace
 
-InterfaceBoundary::InterfaceBoundary(const InterfaceMesh& mesh, double dp, int layers)
-    : mesh_(mesh) {
+InterfaceBoundary::InterfaceBoundary(const InterfaceMesh& mesh, double dp, int layers,
+                                     double spacing)
+    : mesh_(mesh), spacing_(spacing > 0.0 ? spacing : dp) {
   if (mesh.edges.empty()) throw InputError("fluid_sph: the interface mesh has no edge");
   if (layers < 1) throw InputError("fluid_sph: interface layers " + std::to_string(layers));
+  if (!(spacing >= 0.0 && spacing <= dp))
+    throw InputError("fluid_sph: interface spacing " + std::to_string(spacing) +
+                     " outside (0, dp]");
   const std::size_t none = kNone, m = mesh.edges.size();
   // Neighbour edges through the end nodes (b of one edge = a of the next).
   std::vector<std::size_t> starting(mesh.node_count(), none), ending(mesh.node_count(), none);
@@ -31,18 +35,18 @@ InterfaceBoundary::InterfaceBoundary(const InterfaceMesh& mesh, double dp, int l
   Vec2 lo = mesh.X0[mesh.edges[0][0]], hi = lo;
   for (const auto& k : mesh.edges)
     for (std::size_t j : {k[0], k[2]}) lo = lo.cwiseMin(mesh.X0[j]), hi = hi.cwiseMax(mesh.X0[j]);
-  // Lattice points at (i + 1/2) dp from the first node, on the solid side of their nearest edge
+  // Lattice points at (i + 1/2) s from the first node, on the solid side of their nearest edge
   // (at a shared vertex: of the two edges' mean normal) within `layers` dp of the interface, as
   // the dummies of a wall polyline; open ends of the interface get none.
-  const double depth = layers * dp;
+  const double depth = layers * dp, s = spacing_;
   const Vec2 origin = mesh.X0[mesh.edges[0][0]];
-  const int i0 = static_cast<int>(std::floor((lo.x() - depth - origin.x()) / dp)) - 1;
-  const int i1 = static_cast<int>(std::ceil((hi.x() + depth - origin.x()) / dp)) + 1;
-  const int j0 = static_cast<int>(std::floor((lo.y() - depth - origin.y()) / dp)) - 1;
-  const int j1 = static_cast<int>(std::ceil((hi.y() + depth - origin.y()) / dp)) + 1;
+  const int i0 = static_cast<int>(std::floor((lo.x() - depth - origin.x()) / s)) - 1;
+  const int i1 = static_cast<int>(std::ceil((hi.x() + depth - origin.x()) / s)) + 1;
+  const int j0 = static_cast<int>(std::floor((lo.y() - depth - origin.y()) / s)) - 1;
+  const int j1 = static_cast<int>(std::ceil((hi.y() + depth - origin.y()) / s)) + 1;
   for (int j = j0; j <= j1; ++j)
     for (int i = i0; i <= i1; ++i) {
-      const Vec2 q = origin + Vec2((i + 0.5) * dp, (j + 0.5) * dp);
+      const Vec2 q = origin + Vec2((i + 0.5) * s, (j + 0.5) * s);
       double best = std::numeric_limits<double>::max(), xi_best = 0.0, side = 0.0;
       std::size_t e_best = none, e_tie = none;
       bool open_end = false;
@@ -102,7 +106,7 @@ std::vector<WallPoint> InterfaceBoundary::wall_points(int group) const {
       if ((anchor - mesh_.X0[mesh_.edges[tie_[p]][0]]).dot(n1) < -1e-9 * depth_[p])
         corner = 0.5 * (n0 - n1).norm();
     }
-    out[p] = {x[p], n[p], group, d, corner};
+    out[p] = {x[p], n[p], group, d, corner, spacing_ * spacing_};
   }
   return out;
 }

@@ -25,9 +25,16 @@ void visit_options(SphOptions& o, OptionVisitor& v) {
          "reference speed of the advection criterion, m/s (0: sound_speed / 10)");
   v.real("advection_cfl", o.advection_cfl, Range::left_open(0.0, 1.0),
          "advection step Dt = advection_cfl h / max(|v|, sqrt(4 h |a|), u_ref, nu / h)");
+  v.real("viscous_number", o.viscous_number, Range::closed(0.0, 0.5),
+         "Dt <= viscous_number h^2 / nu as well (the frozen viscous term's diffusion number; "
+         "0: off, the reference code's criterion alone)");
   v.flag("riemann_limiter", o.riemann_limiter,
          "eq. 5's low-dissipation limiter beta = min(3 max(u/c0, 0), 1); false: beta = 1 (settling "
          "flows, docs/fluid_sph.md)");
+  v.flag("pair_dissipation", o.pair_dissipation,
+         "eq. 5's Riemann dissipation between fluid pairs in the momentum equation; false: off "
+         "(the reference code's viscous internal flows: Taylor-Green, Turek-Hron FSI2; the walls "
+         "keep theirs, docs/fluid_sph.md)");
   v.real("acoustic_cfl", o.acoustic_cfl, Range::left_open(0.0, 1.0),
          "acoustic step dt = acoustic_cfl h / max(c0 + |v|, sqrt(4 h |a|)) (sph steps by its own "
          "criteria: time.courant is not used)");

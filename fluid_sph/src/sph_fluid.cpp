@@ -60,6 +60,8 @@ void SphOptions::validate() const {
   if (!(advection_cfl > 0.0 && advection_cfl <= 1.0))
     fail("advection_cfl", advection_cfl, "(0, 1]");
   if (!(acoustic_cfl > 0.0 && acoustic_cfl <= 1.0)) fail("acoustic_cfl", acoustic_cfl, "(0, 1]");
+  if (!(viscous_number >= 0.0 && viscous_number <= 0.5))
+    fail("viscous_number", viscous_number, "[0, 0.5]");
   if (!(fixed_dt >= 0.0)) fail("fixed_dt", fixed_dt, ">= 0");
   if (!(damping_time >= 0.0)) fail("damping_time", damping_time, ">= 0");
   if (!(rho_min_factor > 0.0 && rho_min_factor < 1.0))
@@ -208,6 +210,7 @@ void SphFluid::fill_walls(const std::vector<WallPolyline>& walls) {
     walls_.nx[a] = walls_.nx0[a] = ns[a].x();
     walls_.ny[a] = walls_.ny0[a] = ns[a].y();
     walls_.depth[a] = ds[a];
+    walls_.vol[a] = dp * dp;
   }
 }
 
@@ -315,6 +318,7 @@ void SphFluid::first_half(double dt) {
   });
   const double rho0c0 = rho0 * options_.c0, inv_c0 = 1.0 / options_.c0, inv_m = 1.0 / mass_;
   const bool lim = options_.riemann_limiter;
+  const double rho0c0_pairs = options_.pair_dissipation ? rho0c0 : 0.0;
   parallel_for(f.size(), [&](std::size_t i) {
     const double p_i = f.p[i], vx_i = f.vx[i], vy_i = f.vy[i];
     const double b00 = f.b00[i], b01 = f.b01[i], b11 = f.b11[i];
@@ -329,7 +333,7 @@ void SphFluid::first_half(double dt) {
       fy -= p_i * (f.b01[j] * gx + f.b11[j] * gy) + p_j * (b01 * gx + b11 * gy);
       // Riemann dissipation: -2 (P* - p_bar) grad W = beta rho0 c0 u grad W (eq. 5).
       const double u = (vx_i - f.vx[j]) * ex + (vy_i - f.vy[j]) * ey;
-      const double d = rho0c0 * limiter(u, inv_c0, lim) * u;
+      const double d = rho0c0_pairs * limiter(u, inv_c0, lim) * u;
       fx += d * gx;
       fy += d * gy;
     }
@@ -339,7 +343,7 @@ void SphFluid::first_half(double dt) {
       const std::uint32_t a = wj_[k];
       const Vec2 t =
           wall_term({p_i, rho_i, wr_[k], apx - walls_.ax[a], apy - walls_.ay[a], wex_[k], wey_[k],
-                     wdw_[k] * options_.dp * options_.dp, b00, b01, b11, vx_i - walls_.vx[a],
+                     wdw_[k] * walls_.vol[a], b00, b01, b11, vx_i - walls_.vx[a],
                      vy_i - walls_.vy[a], walls_.nx[a], walls_.ny[a], rho0c0, inv_c0, lim});
       fx += t.x();
       fy += t.y();
@@ -359,7 +363,7 @@ void SphFluid::second_half(double dt) {
     f.x[i] += f.vx[i] * half;
     f.y[i] += f.vy[i] * half;
   });
-  const double inv_rho0c0 = 1.0 / (options_.rho0 * options_.c0), vw = options_.dp * options_.dp;
+  const double inv_rho0c0 = 1.0 / (options_.rho0 * options_.c0);
   const double c0 = options_.c0, four_h = 4.0 * h_;
   const double worst = parallel_reduce(
       f.size(), 0.0,
@@ -381,7 +385,7 @@ void SphFluid::second_half(double dt) {
           const double u = (vx_i - walls_.vx[a]) * ex + (vy_i - walls_.vy[a]) * ey;
           const double p_id =
               -dummy_jump(rho_i, wr_[k], apx - walls_.ax[a], apy - walls_.ay[a], ex, ey);
-          s += (2.0 * u + p_id * inv_rho0c0) * wdw_[k] * vw;
+          s += (2.0 * u + p_id * inv_rho0c0) * wdw_[k] * walls_.vol[a];
         }
         f.drho[i] = f.rho[i] * s;
         f.rho[i] += f.drho[i] * half;
@@ -481,6 +485,10 @@ void SphFluid::compute_advection_dt() {
   const double speed =
       std::max({std::sqrt(worst), options_.u_advection(), options_.viscosity / h_});
   Dt_ = options_.advection_cfl * h_ / speed;
+  // The viscous term is frozen over Dt (explicit): its diffusion number nu Dt / h^2 stays below
+  // viscous_number (the Taylor-Green decay gains 5 % at 0.19, docs/fluid_sph.md).
+  const double nu = options_.viscosity, number = options_.viscous_number;
+  if (nu > 0.0 && number > 0.0) Dt_ = std::min(Dt_, number * h_ * h_ / nu);
 }
 
 void SphFluid::build_pairs(bool guard) {
@@ -589,7 +597,10 @@ void SphFluid::build_pairs(bool guard) {
 double SphFluid::kernel_sum(std::size_t i) const {
   double sigma = kernel_.W(0.0);
   for (std::uint32_t k = pstart_[i]; k < pstart_[i + 1]; ++k) sigma += kernel_.W(pr_[k]);
-  for (std::uint32_t k = wstart_[i]; k < wstart_[i + 1]; ++k) sigma += kernel_.W(wr_[k]);
+  // A wall particle counts as V_a / dp^2 lattice particles (a dummy as exactly one).
+  const double dp2 = options_.dp * options_.dp;
+  for (std::uint32_t k = wstart_[i]; k < wstart_[i + 1]; ++k)
+    sigma += kernel_.W(wr_[k]) * (walls_.vol[wj_[k]] / dp2);
   return sigma;
 }
 
@@ -613,7 +624,7 @@ void SphFluid::reinitialise_density() {
 void SphFluid::correction_matrices() {
   auto& f = fluid_;
   const bool on = options_.correction == Correction::rkgc;
-  const double alpha = options_.wkgc_alpha, vw = options_.dp * options_.dp;
+  const double alpha = options_.wkgc_alpha;
   parallel_for(f.size(), [&](std::size_t i) {
     // A_i = -sum_j r_ij (x) grad W_ij V_j = -sum_j r dW e (x) e V_j (eq. 19), symmetric.
     double a00 = 0.0, a01 = 0.0, a11 = 0.0;
@@ -624,7 +635,7 @@ void SphFluid::correction_matrices() {
       a11 += s * pey_[k] * pey_[k];
     }
     for (std::uint32_t k = wstart_[i]; k < wstart_[i + 1]; ++k) {
-      const double s = -wr_[k] * wdw_[k] * vw;
+      const double s = -wr_[k] * wdw_[k] * walls_.vol[wj_[k]];
       a00 += s * wex_[k] * wex_[k];
       a01 += s * wex_[k] * wey_[k];
       a11 += s * wey_[k] * wey_[k];
@@ -663,7 +674,7 @@ void SphFluid::prior_acceleration() {
   auto& f = fluid_;
   const Vec2 g = options_.gravity;
   const double mu = options_.rho0 * options_.viscosity, reg = 0.01 * h_;
-  const double vw = options_.dp * options_.dp, inv_m = 1.0 / mass_;
+  const double inv_m = 1.0 / mass_;
   parallel_for(f.size(), [&](std::size_t i) {
     double fx = 0.0, fy = 0.0;
     if (mu > 0.0) {
@@ -678,7 +689,7 @@ void SphFluid::prior_acceleration() {
       }
       for (std::uint32_t k = wstart_[i]; k < wstart_[i + 1]; ++k) {
         const std::uint32_t a = wj_[k];
-        const double s = wall_viscous_weight(wdw_[k], vw, wr_[k], reg);
+        const double s = wall_viscous_weight(wdw_[k], walls_.vol[a], wr_[k], reg);
         fx += (vx_i - walls_.vx[a]) * s;
         fy += (vy_i - walls_.vy[a]) * s;
       }
@@ -694,7 +705,7 @@ void SphFluid::prior_acceleration() {
 
 void SphFluid::transport_shift() {
   auto& f = fluid_;
-  const double c = options_.transport_coefficient * h_ * h_, vw = options_.dp * options_.dp;
+  const double c = options_.transport_coefficient * h_ * h_;
   auto& dx = scratch_;
   dx.resize(2 * f.size());
   parallel_for(f.size(), [&](std::size_t i) {
@@ -709,6 +720,7 @@ void SphFluid::transport_shift() {
       sy += (b01 + f.b01[j]) * gx + (b11 + f.b11[j]) * gy;
     }
     for (std::uint32_t k = wstart_[i]; k < wstart_[i + 1]; ++k) {
+      const double vw = walls_.vol[wj_[k]];
       const double gx = wdw_[k] * vw * wex_[k], gy = wdw_[k] * vw * wey_[k];
       sx += 2.0 * (b00 * gx + b01 * gy);
       sy += 2.0 * (b01 * gx + b11 * gy);

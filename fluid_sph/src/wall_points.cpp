@@ -20,9 +20,9 @@ void SphFluid::append_wall_points(const std::vector<WallPoint>& points) {
     if (q.group < 0) throw InputError("fluid_sph: wall group " + std::to_string(q.group) + " < 0");
     if (!(std::abs(q.n.norm() - 1.0) < 1e-9))
       throw InputError("fluid_sph: wall point " + std::to_string(k) + " has no unit normal");
-    if (!(q.depth >= 0.0 && q.corner >= 0.0 && q.corner < 1.0))
+    if (!(q.depth >= 0.0 && q.corner >= 0.0 && q.corner < 1.0 && q.vol >= 0.0))
       throw InputError("fluid_sph: wall point " + std::to_string(k) +
-                       " has a depth < 0 or a corner outside [0, 1)");
+                       " has a depth < 0, a corner outside [0, 1) or a volume < 0");
     const std::size_t a = first + k;
     walls_.group[a] = static_cast<std::uint32_t>(q.group);
     walls_.x[a] = walls_.x0[a] = walls_.xb[a] = q.x.x();
@@ -31,6 +31,7 @@ void SphFluid::append_wall_points(const std::vector<WallPoint>& points) {
     walls_.ny[a] = walls_.ny0[a] = q.n.y();
     walls_.depth[a] = q.depth;
     walls_.corner[a] = q.corner;
+    walls_.vol[a] = q.vol > 0.0 ? q.vol : options_.dp * options_.dp;
   }
 }
 
@@ -52,7 +53,6 @@ void SphFluid::track_wall_forces(std::size_t first, Reaction reaction) {
 void SphFluid::wall_reaction() {
   const auto& f = fluid_;
   const double rho0c0 = options_.rho0 * options_.c0, inv_c0 = 1.0 / options_.c0;
-  const double vw = options_.dp * options_.dp;
   // The viscous part of this step is that of the prior acceleration the fluid felt (this Dt's).
   std::copy(walls_.fvx.begin() + static_cast<std::ptrdiff_t>(tracked_), walls_.fvx.end(),
             wfx_.begin());
@@ -66,10 +66,10 @@ void SphFluid::wall_reaction() {
     for (std::uint32_t k = wstart_[i]; k < wstart_[i + 1]; ++k) {
       const std::uint32_t a = wj_[k];
       if (a < tracked_) continue;
-      const Vec2 t =
-          wall_term({p_i, rho_i, wr_[k], f.apx[i] - walls_.ax[a], f.apy[i] - walls_.ay[a], wex_[k],
-                     wey_[k], wdw_[k] * vw, b00, b01, b11, vx_i - walls_.vx[a], vy_i - walls_.vy[a],
-                     walls_.nx[a], walls_.ny[a], rho0c0, inv_c0, options_.riemann_limiter});
+      const Vec2 t = wall_term(
+          {p_i, rho_i, wr_[k], f.apx[i] - walls_.ax[a], f.apy[i] - walls_.ay[a], wex_[k], wey_[k],
+           wdw_[k] * walls_.vol[a], b00, b01, b11, vx_i - walls_.vx[a], vy_i - walls_.vy[a],
+           walls_.nx[a], walls_.ny[a], rho0c0, inv_c0, options_.riemann_limiter});
       wfx_[a - tracked_] -= V_i * t.x();
       wfy_[a - tracked_] -= V_i * t.y();
     }
@@ -81,7 +81,6 @@ void SphFluid::wall_reaction() {
 void SphFluid::wall_viscous_reaction() {
   const auto& f = fluid_;
   const double mu = options_.rho0 * options_.viscosity, reg = 0.01 * h_;
-  const double vw = options_.dp * options_.dp;
   for (std::size_t a = tracked_; a < walls_.size(); ++a) walls_.fvx[a] = walls_.fvy[a] = 0.0;
   if (!(mu > 0.0)) return;
   for (std::size_t i = 0; i < f.size(); ++i) {
@@ -89,7 +88,7 @@ void SphFluid::wall_viscous_reaction() {
     for (std::uint32_t k = wstart_[i]; k < wstart_[i + 1]; ++k) {
       const std::uint32_t a = wj_[k];
       if (a < tracked_) continue;
-      const double s = c * wall_viscous_weight(wdw_[k], vw, wr_[k], reg);
+      const double s = c * wall_viscous_weight(wdw_[k], walls_.vol[a], wr_[k], reg);
       walls_.fvx[a] -= (f.vx[i] - walls_.vx[a]) * s;
       walls_.fvy[a] -= (f.vy[i] - walls_.vy[a]) * s;
     }

@@ -163,10 +163,11 @@ TEST_CASE("sph: RKGC gradient consistency on a disordered set and its convergenc
 namespace {
 
 /// Two particles on a line at distance dp, moving along it with +-u (u > 0: separating).
-std::unique_ptr<sph::SphFluid> make_pair(double u) {
+std::unique_ptr<sph::SphFluid> make_pair(double u, bool pair_dissipation = true) {
   const double dp = 0.01;
-  auto f =
-      std::make_unique<sph::SphFluid>(base(dp), std::vector<Vec2>{{0.5, 0.5}, {0.5 + dp, 0.5}});
+  auto o = base(dp);
+  o.pair_dissipation = pair_dissipation;
+  auto f = std::make_unique<sph::SphFluid>(o, std::vector<Vec2>{{0.5, 0.5}, {0.5 + dp, 0.5}});
   f->set_velocities({{-u, 0.0}, {u, 0.0}});
   return f;
 }
@@ -201,6 +202,12 @@ TEST_CASE("sph: Riemann dissipation removes energy of a separating pair, none wh
   const double e1 = g.kinetic_energy();
   g.advance(g.next_dt());
   CHECK(g.kinetic_energy() == e1);
+  // pair_dissipation: false takes it out: the separating pair keeps its energy.
+  auto hp = make_pair(0.1, false);
+  auto& h = *hp;
+  const double e2 = h.kinetic_energy();
+  h.advance(h.next_dt());
+  CHECK(h.kinetic_energy() == e2);
 }
 
 TEST_CASE("sph: pressure repels, a converging block pushes outward", "[sph][sign]") {
@@ -523,13 +530,20 @@ TEST_CASE("sph: tracked walls get the exact reaction, the reference code's form 
   // A 0.1 m block slumping on a floor under gravity, all wall particles tracked: the fluid's
   // momentum change is M g t minus the impulse handed to the walls. The exact reaction closes it
   // to round-off; the reference code's (eq. 16's dummy pressure without B_i) only with B = I.
-  const auto residual = [](sph::Correction c, sph::SphFluid::Reaction r) {
+  // spacing > 0: the floor is a structure's boundary points at that spacing (volume spacing^2).
+  const auto residual = [](sph::Correction c, sph::SphFluid::Reaction r, double spacing = 0.0) {
     auto o = base(0.01);
     o.gravity = {0.0, -9.81};
     o.correction = c;
     o.wkgc_alpha = 0.3;
-    sph::SphFluid f(o, sph::fill_rectangle({0.0, 0.0}, {0.1, 0.1}, o.dp),
-                    {{{{-0.5, 0.0}, {1.5, 0.0}}}});
+    std::vector<sph::WallPolyline> floor{{{{-0.5, 0.0}, {1.5, 0.0}}}};
+    std::vector<sph::WallPoint> points;
+    if (spacing > 0.0) {
+      const InterfaceMesh mesh{1, {{1.5, 0.0}, {-0.5, 0.0}}, {{0, 0, 1}}};
+      points = sph::InterfaceBoundary(mesh, o.dp, 4, spacing).wall_points(0);
+      floor.clear();
+    }
+    sph::SphFluid f(o, sph::fill_rectangle({0.0, 0.0}, {0.1, 0.1}, o.dp), floor, points);
     f.track_wall_forces(0, r);
     const Vec2 P0 = f.momentum();
     const double M = o.mass() * static_cast<double>(f.particles().size());
@@ -545,6 +559,7 @@ TEST_CASE("sph: tracked walls get the exact reaction, the reference code's form 
   };
   using R = sph::SphFluid::Reaction;
   CHECK(residual(sph::Correction::rkgc, R::exact) < 1e-12);
+  CHECK(residual(sph::Correction::rkgc, R::exact, 0.005) < 1e-12);
   CHECK(residual(sph::Correction::none, R::reference_code) < 1e-12);
   const double reference = residual(sph::Correction::rkgc, R::reference_code);
   INFO("reference code's form with rkgc: momentum residual " << reference << " of M g t");

@@ -193,7 +193,8 @@ SphModel::SphModel(const Scene& scene, const std::vector<InterfaceMesh>& interfa
   std::vector<sph::WallDistance> distances(walls.size());
   try {
     for (std::size_t j = 0; j < interfaces.size(); ++j) {
-      boundaries_.emplace_back(interfaces[j], f.options.dp, f.interface_layers);
+      boundaries_.emplace_back(interfaces[j], f.options.dp, f.interface_layers,
+                               f.interface_spacing * f.options.dp);
       const auto p = boundaries_.back().wall_points(static_cast<int>(walls.size() + j));
       points.insert(points.end(), p.begin(), p.end());
       interface_x_.push_back(interfaces[j].X0);

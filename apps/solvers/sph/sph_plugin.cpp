@@ -58,7 +58,8 @@ void validate(const Scene& scene, const std::vector<InterfaceMesh>& interfaces,
   try {
     sph_options(scene).validate();
     for (const auto& mesh : interfaces)
-      sph::InterfaceBoundary(mesh, f.options.dp, f.interface_layers);
+      sph::InterfaceBoundary(mesh, f.options.dp, f.interface_layers,
+                             f.interface_spacing * f.options.dp);
   } catch (const InputError& e) {
     fail_at(scene, scene.fluid->line, "fluid", e.what());
   }

@@ -30,9 +30,15 @@ std::shared_ptr<const SolverSpec> read_sph(Section& s) {
   SphSpec& f = *spec;
   OptionReader reader(s);
   sph::visit_options(f.options, reader);
-  f.interface_layers = s.integer("interface_layers", 4, Range::closed(1.0, 8.0),
-                                 "boundary points fill a coupled structure within "
-                                 "interface_layers l0 of its interface (lattice at l0)");
+  f.interface_layers =
+      s.integer("interface_layers", 4, Range::closed(1.0, 8.0),
+                "boundary points fill a coupled structure within "
+                "interface_layers l0 of its interface (lattice at interface_spacing)");
+  f.interface_spacing =
+      s.real("interface_spacing", 1.0, Range::left_open(0.0, 1.0),
+             "the boundary points' lattice spacing in l0, each of volume spacing^2 (0.5 with a "
+             "TL-SPH solid at dp_S = l0/2: the solid's own lattice, as the reference code's "
+             "fluid sees the solid's particles)");
   f.interface_acceleration = s.boolean(
       "interface_acceleration", false,
       "a coupled interface's mean acceleration over the coupling step in the wall's dummy "

@@ -16,6 +16,7 @@ namespace fsi::app::sph_plugin {
 struct SphSpec final : SolverSpec {
   sph::SphOptions options;             ///< the keys fluid_sph declares (visit_options)
   int interface_layers = 4;            ///< rows of boundary points behind a structure's interface
+  double interface_spacing = 1.0;      ///< their lattice spacing, in l0
   bool interface_acceleration = false; ///< the interface's mean acceleration in eq. 16
   ParticleArea area; ///< without a domain: walls and regions with a margin of 8 l0
 };

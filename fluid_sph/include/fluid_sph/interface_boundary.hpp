@@ -1,12 +1,13 @@
 #pragma once
 // The SPH fluid's moving boundary on a structure's interface mesh (RKGC paper, sec. 2.3; issue
-// 18): boundary points at spacing dp inside the solid (on the LEFT of a -> b) within `layers`
-// dp of the interface, each anchored at the nearest point x(xi) of its nearest edge with its
-// offset in that edge chord's frame, so that it moves with the edge's shape functions
-// (edge_point) and turns with the chord. The fluid treats them as moving wall particles (the
-// one-sided Riemann wall, eqs. 15-17); their forces go back to the edge nodes with the same shape
-// functions N(xi), so the nodal loads sum exactly to the points' forces and their moment equals
-// that of the forces placed at the anchors x(xi).
+// 18): boundary points at a spacing s <= dp, volume s^2, inside the solid (on the LEFT of
+// a -> b) within `layers` dp of the interface (s = dp_S: a TL-SPH solid's own lattice, the
+// particles the reference code's fluid sees), each anchored at the nearest point x(xi) of its
+// nearest edge with its offset in that edge chord's frame, so that it moves with the edge's shape
+// functions (edge_point) and turns with the chord. The fluid treats them as moving wall particles
+// (the one-sided Riemann wall, eqs. 15-17); their forces go back to the edge nodes with the same
+// shape functions N(xi), so the nodal loads sum exactly to the points' forces and their moment
+// equals that of the forces placed at the anchors x(xi).
 #include "fluid_sph/sph_fluid.hpp"
 #include "fsi/core/interface_mesh.hpp"
 
@@ -16,21 +17,23 @@ namespace fsi::sph {
 
 class InterfaceBoundary {
 public:
-  /// Lattice points origin + ((i + 1/2) dp, (j + 1/2) dp) from the first edge's node a, kept
-  /// when on the solid side of their nearest edge (at a vertex shared by two edges: of the mean
-  /// of their normals) and nearer than layers dp to it; none behind an open end of the interface
-  /// (4 layers along a straight edge, as the dummies of a wall). Throws InputError for an empty
-  /// mesh, layers < 1 or no point.
-  InterfaceBoundary(const InterfaceMesh& mesh, double dp, int layers = 4);
+  /// Lattice points origin + ((i + 1/2) s, (j + 1/2) s) from the first edge's node a (s =
+  /// spacing, 0: dp), kept when on the solid side of their nearest edge (at a vertex shared by
+  /// two edges: of the mean of their normals) and nearer than layers dp to it; none behind an
+  /// open end of the interface (4 layers at s = dp along a straight edge, as the dummies of a
+  /// wall). Throws InputError for an empty mesh, layers < 1, s outside (0, dp] or no point.
+  InterfaceBoundary(const InterfaceMesh& mesh, double dp, int layers = 4, double spacing = 0.0);
 
   std::size_t size() const { return xi_.size(); }
+  double spacing() const { return spacing_; }
   const InterfaceMesh& mesh() const { return mesh_; }
   /// Point p's edge, parent coordinate of its anchor, offset along the chord and depth behind it.
   std::size_t edge(std::size_t p) const { return edge_[p]; }
   double xi(std::size_t p) const { return xi_[p]; }
   double along(std::size_t p) const { return along_[p]; }
   double depth(std::size_t p) const { return depth_[p]; }
-  /// The points at the reference positions X0, as wall particles of `group`; their depth is along
+  /// The points at the reference positions X0, as wall particles of `group` of volume s^2; their
+  /// depth is along
   /// their normal to their edge's chord line (on a corner's bisector: to the corner), and a point
   /// on a convex corner's bisector gets the sine of half the angle between the two normals.
   std::vector<WallPoint> wall_points(int group) const;
@@ -53,6 +56,7 @@ private:
   InterfaceMesh mesh_;
   std::vector<std::size_t> edge_, tie_; ///< nearest edge; an edge as near (or none)
   std::vector<double> xi_, along_, depth_;
+  double spacing_ = 0.0;
 };
 
 } // namespace fsi::sph

@@ -41,6 +41,11 @@ struct SphOptions {
   /// the full linearised Riemann dissipation (settling runs: with the limiter a hydrostatic tank
   /// keeps its noise, docs/fluid_sph.md).
   bool riemann_limiter = true;
+  /// Eq. 5's dissipation between fluid pairs in the momentum equation. false: the central
+  /// pressure term alone between fluid pairs, as the reference code runs its viscous internal
+  /// flows (Taylor-Green, Turek-Hron FSI2: no Riemann solver in the momentum equation); the walls
+  /// keep theirs (eq. 15) and the continuity equation its pressure-difference term.
+  bool pair_dissipation = true;
   double wkgc_alpha = 0.3; ///< alpha of eq. 22 (0: B unweighted), in [0, 1]; one per case
   /// true: free-surface flow, rho = max(rho_sum, rho0) and V = dp^2 at each re-initialisation.
   /// false: internal flow, rho = rho_sum and V = m / rho.
@@ -50,8 +55,11 @@ struct SphOptions {
   double transport_coefficient = 0.2; ///< Delta r = coefficient h^2 (...) (method notes, eq. 24)
   double u_ref = 0.0;          ///< reference speed of the advection criterion, m/s (0: c0 / 10)
   double advection_cfl = 0.25; ///< Dt = advection_cfl h / max(...)
-  double acoustic_cfl = 0.6;   ///< dt = acoustic_cfl h / max(...)
-  double fixed_dt = 0.0;       ///< > 0: every acoustic step is fixed_dt (Dt a whole number of them)
+  /// Dt <= viscous_number h^2 / nu as well (the explicit viscous term's diffusion number, Morris
+  /// et al. 1997's 0.125; 0: off, the reference code's nu / h in the max alone).
+  double viscous_number = 0.125;
+  double acoustic_cfl = 0.6; ///< dt = acoustic_cfl h / max(...)
+  double fixed_dt = 0.0;     ///< > 0: every acoustic step is fixed_dt (Dt a whole number of them)
   /// Domain: periodic directions use it as the period [min, max); otherwise a fluid particle
   /// leaving it is removed and counted.
   Vec2 domain_min = Vec2::Zero(), domain_max = Vec2::Zero();

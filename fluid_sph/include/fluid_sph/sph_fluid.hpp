@@ -56,11 +56,11 @@ using WallDistance = std::function<double(const Vec2& x)>;
 /// fluid_sph/interface_boundary.hpp): reference position, unit normal into the fluid, group,
 /// depth behind the wall surface along n (>= 0) and, on the bisector of a convex corner of the
 /// solid, the sine of half the angle between its faces' normals (0 elsewhere; < 1): the
-/// through-a-wall guard's geometry.
+/// through-a-wall guard's geometry; its volume V_a (0: dp^2, a wall dummy's).
 struct WallPoint {
   Vec2 x = Vec2::Zero(), n = Vec2::Zero();
   int group = 0;
-  double depth = 0.0, corner = 0.0;
+  double depth = 0.0, corner = 0.0, vol = 0.0;
 };
 
 /// The fluid's struct-of-arrays particles (registered in one FieldSet).
@@ -110,6 +110,8 @@ struct WallParticles {
   /// constructor (as the wall count is), so not state.
   std::vector<double>& depth = fields.add_real("depth", false);
   std::vector<double>& corner = fields.add_real("corner", false);
+  /// Volume V_a in every wall sum: dp^2 for a dummy; a boundary point's own (WallPoint::vol).
+  std::vector<double>& vol = fields.add_real("vol", false);
   std::size_t size() const { return fields.size(); }
 };
 
