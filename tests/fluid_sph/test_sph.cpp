@@ -210,6 +210,24 @@ TEST_CASE("sph: Riemann dissipation removes energy of a separating pair, none wh
   CHECK(h.kinetic_energy() == e2);
 }
 
+TEST_CASE("sph: the advection step keeps the viscous diffusion number nu Dt / h^2 at "
+          "viscous_number",
+          "[sph][step]") {
+  // Two particles at rest, u_ref = 1 m/s: Dt = 0.25 h / max(u_ref, nu / h) alone; with a
+  // viscosity at which 0.125 h^2 / nu is shorter, that bound sets Dt.
+  auto o = base(0.01);
+  const double h = o.h();
+  const auto dt_of = [](const sph::SphOptions& opts) {
+    return sph::SphFluid(opts, {{0.5, 0.5}, {0.51, 0.5}}).advection_dt();
+  };
+  o.viscosity = 1e-6; // nu / h tiny: the advection criterion
+  CHECK_THAT(dt_of(o), WithinRel(0.25 * h / 1.0, 1e-12));
+  o.viscosity = 0.01; // 0.125 h^2 / nu = 2.1e-3 s < 0.25 h / 1 = 3.25e-3 s
+  CHECK_THAT(dt_of(o), WithinRel(0.125 * h * h / o.viscosity, 1e-12));
+  o.viscous_number = 0.0; // off: the reference code's criterion
+  CHECK_THAT(dt_of(o), WithinRel(0.25 * h / 1.0, 1e-12));
+}
+
 TEST_CASE("sph: pressure repels, a converging block pushes outward", "[sph][sign]") {
   // Velocities converging on the centre compress the block: the pressure at the centre rises and
   // the pressure force points outward.

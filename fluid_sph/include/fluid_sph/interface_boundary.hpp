@@ -25,7 +25,6 @@ public:
   InterfaceBoundary(const InterfaceMesh& mesh, double dp, int layers = 4, double spacing = 0.0);
 
   std::size_t size() const { return xi_.size(); }
-  double spacing() const { return spacing_; }
   const InterfaceMesh& mesh() const { return mesh_; }
   /// Point p's edge, parent coordinate of its anchor, offset along the chord and depth behind it.
   std::size_t edge(std::size_t p) const { return edge_[p]; }
@@ -33,9 +32,9 @@ public:
   double along(std::size_t p) const { return along_[p]; }
   double depth(std::size_t p) const { return depth_[p]; }
   /// The points at the reference positions X0, as wall particles of `group` of volume s^2; their
-  /// depth is along
-  /// their normal to their edge's chord line (on a corner's bisector: to the corner), and a point
-  /// on a convex corner's bisector gets the sine of half the angle between the two normals.
+  /// depth is along their normal to their edge's chord line (on a corner's bisector: to the
+  /// corner), and a point on a convex corner's bisector gets the sine of half the angle between
+  /// the two normals.
   std::vector<WallPoint> wall_points(int group) const;
   /// Positions and unit normals (into the fluid) of the points for node positions `x`:
   /// x(xi) + along t - depth n with (t, n) the chord's tangent and fluid-side normal; the normal
