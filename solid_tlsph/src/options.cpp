@@ -17,6 +17,9 @@ void visit_options(TlsphOptions& o, OptionVisitor& v) {
          "docs/solid_tlsph.md)");
   v.real("pair_damping", o.pair_damping, Range::non_negative(),
          "pairwise viscosity nu_d = pair_damping c_s h / 2 (0: off)");
+  v.flag("interface_particles", o.interface_particles,
+         "hand every particle to the coupling too: an SPH fluid takes the solid's particles as "
+         "its boundary instead of points on the interface edges (EMPS ignores them)");
   v.real("mass_damping", o.mass_damping, Range::non_negative(),
          "mass-proportional damping a -= mass_damping v, 1/s (0: off)");
 }

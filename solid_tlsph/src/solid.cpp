@@ -325,6 +325,15 @@ void TlsphSolid::build_interface(const SolidGeometry& geometry) {
       interface_mesh_.edges.push_back({a, a, a + 1});
   if (k > 2 && (interface_mesh_.X0[0] - interface_mesh_.X0[k - 1]).norm() < link)
     interface_mesh_.edges.push_back({k - 1, k - 1, 0});
+  interface_mesh_.particle_volume.clear();
+  if (!options_.interface_particles) return;
+  for (std::size_t i = 0; i < n; ++i) { // the particles themselves, on no edge
+    interface_.push_back(static_cast<std::uint32_t>(i));
+    interface_n0_.push_back(Vec2::Zero());
+    interface_offset_.push_back(Vec2::Zero());
+    interface_mesh_.X0.push_back(Vec2(X0_[i], Y0_[i]));
+    interface_mesh_.particle_volume.push_back(V0_[i]);
+  }
 }
 
 void TlsphSolid::clamp_face(std::size_t k, Vec2& point, Vec2& normal) const {
@@ -674,6 +683,10 @@ std::vector<Vec2> TlsphSolid::interface_accelerations() const {
 std::vector<Vec2> TlsphSolid::interface_normals() const {
   std::vector<Vec2> out;
   for (std::size_t k = 0; k < interface_.size(); ++k) {
+    if (interface_n0_[k].isZero()) { // a particle node
+      out.push_back(Vec2::Zero());
+      continue;
+    }
     const Mat2 F = imaged(interface_[k]) ? Mat2::Identity() : deformation_gradient(interface_[k]);
     out.push_back((F.inverse().transpose() * interface_n0_[k]).normalized()); // Nanson
   }

@@ -248,14 +248,22 @@ TEST_CASE("sph interface boundary: fluid thrown at a free rigid body conserves t
           "[apps][sph]") {
   // No gravity: a 0.04 m square of water at 1 m/s hits a free 0.04 x 0.06 m body (1000 kg/m^3)
   // 0.02 m away. The body moves by its interface loads (M dV/dt = sum f); fluid + body momentum
-  // stays at its start to round-off through the impact.
+  // stays at its start to round-off through the impact, with boundary points on the lattice and
+  // with the body's particles as nodes of the interface mesh.
   const Scene scene = parse_scene(
       sph_scene("  viscosity: 1.0e-6\n  regions:\n    - min: [0.0, 0.0]\n      max: [0.04, 0.04]\n"
                 "  domain:\n    min: [-0.2, -0.2]\n    max: [0.4, 0.25]\n",
                 "", "[0.0, 0.0]"),
       "throw.yaml", {});
   const std::vector<Vec2> body = {{0.06, -0.01}, {0.1, -0.01}, {0.1, 0.05}, {0.06, 0.05}};
-  const InterfaceMesh mesh = polyline_mesh(body, true, 0.01);
+  InterfaceMesh mesh = polyline_mesh(body, true, 0.01);
+  const bool particles = GENERATE(false, true); // the body's own lattice at dp/2 as the points
+  if (particles)
+    for (int j = 0; j < 24; ++j)
+      for (int i = 0; i < 16; ++i) {
+        mesh.X0.push_back({0.06 + (i + 0.5) * 0.0025, -0.01 + (j + 0.5) * 0.0025});
+        mesh.particle_volume.push_back(0.0025 * 0.0025);
+      }
   SphModel model(scene, {mesh}, {body});
   sph::SphFluid& fluid = model.fluid();
   fluid.set_velocities(std::vector<Vec2>(fluid.particles().size(), Vec2(1.0, 0.0)));
@@ -277,9 +285,10 @@ TEST_CASE("sph interface boundary: fluid thrown at a free rigid body conserves t
     V += f * dt / M;
     worst = std::max(worst, (fluid.momentum() + M * V - P0).norm() / P0.norm());
   }
-  INFO("body momentum " << M * V.x() << " N s/m of the fluid's initial " << P0.x()
-                        << "; worst relative change of the total " << worst << "; " << fluid.steps()
-                        << " acoustic steps");
+  INFO((particles ? "particle nodes" : "lattice points")
+       << ": body momentum " << M * V.x() << " N s/m of the fluid's initial " << P0.x()
+       << "; worst relative change of the total " << worst << "; " << fluid.steps()
+       << " acoustic steps");
   CHECK(fluid.removed() == 0);
   CHECK(M * V.x() > 0.05 * P0.x()); // the impact happened
   CHECK(worst < 1e-12);
@@ -302,12 +311,17 @@ namespace {
 /// uninterrupted run, the obstacle's corner pushed in +x. With fluid.interface_acceleration the
 /// interface velocity at the checkpoint (fluid/interface/motion) feeds the walls' mean
 /// acceleration, so the test fails without it.
-void check_sph_pair_restart(const std::string& structure) {
-  const Scene scene = load_scene(
-      FSI_TEST_DATA "/tiny_any_pair.yaml",
-      {"fluid.type=sph", "fluid.interface_acceleration=true", "structures[0].type=" + structure,
-       "time.end=0.004", "output.interval=0.001", "checkpoint={interval_steps: 100, keep: 9}"});
-  const fs::path dir = fs::temp_directory_path() / ("fsi_test_sph_" + structure + "_restart");
+void check_sph_pair_restart(const std::string& structure, const std::string& extra = "") {
+  std::vector<std::string> overrides = {"fluid.type=sph",
+                                        "fluid.interface_acceleration=true",
+                                        "structures[0].type=" + structure,
+                                        "time.end=0.004",
+                                        "output.interval=0.001",
+                                        "checkpoint={interval_steps: 100, keep: 9}"};
+  if (!extra.empty()) overrides.push_back(extra);
+  const Scene scene = load_scene(FSI_TEST_DATA "/tiny_any_pair.yaml", overrides);
+  const fs::path dir = fs::temp_directory_path() /
+                       ("fsi_test_sph_" + structure + (extra.empty() ? "" : "_x") + "_restart");
   test::check_restart_bitwise(scene, dir, 100, 200, 2000);
   std::ifstream csv(dir / "whole" / "probes.csv");
   std::string line, last;
@@ -329,4 +343,9 @@ TEST_CASE("sph + fem continued from a checkpoint is bitwise the uninterrupted ru
 TEST_CASE("sph + tlsph continued from a checkpoint is bitwise the uninterrupted run",
           "[apps][sph][coupled]") {
   check_sph_pair_restart("tlsph");
+}
+
+TEST_CASE("sph + tlsph with the solid's particles as the boundary continues bitwise",
+          "[apps][sph][coupled]") {
+  check_sph_pair_restart("tlsph", "structures[0].tlsph.interface_particles=true");
 }

@@ -9,6 +9,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <numbers>
@@ -414,6 +415,71 @@ TEST_CASE("sph: guards name the particle, step and time", "[sph][guard]") {
   CHECK_THROWS_AS(sph::SphFluid(bad, {{0.5, 0.5}}), InputError);
 }
 
+TEST_CASE("sph: a particle solid's own particles as the interface's boundary points",
+          "[sph][interface]") {
+  // A 0.1 x 0.04 m body on the lattice dp_S = dp/2 (80 particles), wetted on its top (a -> b
+  // from right to left: the solid below), handed over as particle nodes after the two edge
+  // nodes. The points are the particles within 4 dp of the top, each with its own volume; they
+  // follow their nodes exactly under any (non-rigid) motion, and a point's force goes to its
+  // own node.
+  const double dp = 0.01, s = 0.5 * dp;
+  InterfaceMesh mesh;
+  mesh.order = 1;
+  mesh.X0 = {{0.1, 0.0}, {0.0, 0.0}};
+  mesh.edges = {{0, 0, 1}};
+  for (int j = 0; j < 8; ++j)
+    for (int i = 0; i < 20; ++i) {
+      mesh.X0.push_back({(i + 0.5) * s, -(j + 0.5) * s});
+      mesh.particle_volume.push_back(s * s * (1.0 + 0.01 * i)); // distinct, to see each one
+    }
+  const sph::InterfaceBoundary b(mesh, dp, 2); // 2 dp deep: the top 4 of the 8 rows
+  const auto points = b.wall_points(0);
+  REQUIRE(b.size() == 80);
+  std::vector<Vec2> x = mesh.X0, position, normal, force(b.size()), nodal;
+  for (std::size_t k = 2; k < x.size(); ++k) // a shear with a bump: no chord frame follows it
+    x[k] += Vec2(0.3 * x[k].y() + 0.01 * std::sin(40.0 * x[k].x()), 0.02 * x[k].x() * x[k].x());
+  b.place(x, position, normal);
+  double worst = 0.0, volume = 0.0, expected_volume = 0.0;
+  Vec2 total = Vec2::Zero();
+  for (std::size_t p = 0; p < b.size(); ++p) {
+    const auto k = static_cast<std::size_t>(
+        std::find_if(mesh.X0.begin() + 2, mesh.X0.end(),
+                     [&](const Vec2& X) { return (X - points[p].x).norm() < 1e-15; }) -
+        mesh.X0.begin());
+    REQUIRE(k < mesh.X0.size());
+    CHECK(mesh.X0[k].y() > -2.0 * dp);
+    CHECK(points[p].vol == mesh.particle_volume[k - 2]);
+    CHECK(points[p].n.y() == 1.0); // into the fluid, above
+    CHECK_THAT(points[p].depth, WithinAbs(-mesh.X0[k].y(), 1e-15));
+    worst = std::max(worst, (position[p] - x[k]).norm());
+    force[p] = Vec2(std::sin(3.0 * p + 1.0), std::cos(7.0 * p));
+    total += force[p];
+    volume += points[p].vol;
+  }
+  for (std::size_t k = 2; k < mesh.X0.size(); ++k)
+    if (mesh.X0[k].y() > -2.0 * dp) expected_volume += mesh.particle_volume[k - 2];
+  b.distribute(force, nodal);
+  CHECK(worst == 0.0);
+  CHECK_THAT(volume, WithinRel(expected_volume, 1e-14));
+  CHECK(nodal[0].isZero());
+  CHECK(nodal[1].isZero());
+  Vec2 total_nodal = Vec2::Zero();
+  for (const Vec2& f : nodal) total_nodal += f;
+  CHECK((total_nodal - total).norm() < 1e-13);
+  // The lattice at the same spacing puts its points at the same places (the reference state).
+  mesh.X0.resize(2);
+  mesh.particle_volume.clear();
+  const auto lattice = sph::InterfaceBoundary(mesh, dp, 2, s).wall_points(0);
+  REQUIRE(lattice.size() == points.size());
+  double apart = 0.0;
+  for (const auto& q : lattice) {
+    double nearest = 1.0;
+    for (const auto& p : points) nearest = std::min(nearest, (p.x - q.x).norm());
+    apart = std::max(apart, nearest);
+  }
+  CHECK(apart < 1e-15);
+}
+
 TEST_CASE("sph: the through-a-wall guard at a thin body's convex end (issue 20: Antoci)",
           "[sph][guard]") {
   // A body 2 dp thick with its interface on the left, bottom and right (the Antoci gate's free
@@ -557,7 +623,7 @@ TEST_CASE("sph: tracked walls get the exact reaction, the reference code's form 
     std::vector<sph::WallPolyline> floor{{{{-0.5, 0.0}, {1.5, 0.0}}}};
     std::vector<sph::WallPoint> points;
     if (spacing > 0.0) {
-      const InterfaceMesh mesh{1, {{1.5, 0.0}, {-0.5, 0.0}}, {{0, 0, 1}}};
+      const InterfaceMesh mesh{1, {{1.5, 0.0}, {-0.5, 0.0}}, {{0, 0, 1}}, {}};
       points = sph::InterfaceBoundary(mesh, o.dp, 4, spacing).wall_points(0);
       floor.clear();
     }

@@ -50,7 +50,7 @@ Hydrostatic hydrostatic(double dp, double H, double W, double t_end, sph::Correc
   std::vector<sph::WallPoint> points;
   if (floor_spacing > 0.0) {
     // The solid below, on the left of a -> b: from (W, 0) to (0, 0).
-    const InterfaceMesh floor{1, {{W, 0.0}, {0.0, 0.0}}, {{0, 0, 1}}};
+    const InterfaceMesh floor{1, {{W, 0.0}, {0.0, 0.0}}, {{0, 0, 1}}, {}};
     points = sph::InterfaceBoundary(floor, dp, 4, floor_spacing).wall_points(0);
     tank.clear();
   }
@@ -234,8 +234,9 @@ TEST_CASE("sph: Taylor-Green vortex without the pairs' Riemann dissipation decay
 }
 
 // The finest level at the default steps, in the reference code's form (no dissipation between the
-// pairs). At 1/100 the advection step alone (0.25 h / U) puts the frozen viscous term at a diffusion
-// number nu Dt / h^2 = 0.19: +5.0 %; viscous_number 0.125 holds it at 0.125 (docs/fluid_sph.md).
+// pairs). At 1/100 the advection step alone (0.25 h / U) puts the frozen viscous term at a
+// diffusion number nu Dt / h^2 = 0.19: +5.0 %; viscous_number 0.125 holds it at 0.125
+// (docs/fluid_sph.md).
 TEST_CASE("sph: Taylor-Green vortex at dp = 1/100 (finest), default steps: decay rate within 5 %",
           "[sph][taylor_green][slow]") {
   const double exact = 16.0 * std::numbers::pi * std::numbers::pi / 100.0;

@@ -162,6 +162,44 @@ TEST_CASE("tlsph: normals rotate with F, loads move the interface particles",
   CHECK((momentum - impulse).norm() < 1e-12 * impulse.norm());
 }
 
+TEST_CASE("tlsph: interface_particles hands every particle over as a node of its own",
+          "[solid_tlsph][interface]") {
+  // After the outline's nodes (unchanged), one node per particle at its position with its
+  // volume, moving with it; a load on a particle node accelerates that particle by f / m.
+  TlsphOptions o;
+  o.dp = 0.01;
+  o.interface_tags = {"top"};
+  const TlsphSolid plain(fill_rectangle({0.0, 0.0}, {0.2, 0.1}, o.dp), o);
+  o.interface_particles = true;
+  TlsphSolid s(fill_rectangle({0.0, 0.0}, {0.2, 0.1}, o.dp), o);
+  const auto m = s.interface_mesh(), m_plain = plain.interface_mesh();
+  REQUIRE(m.node_count() == m_plain.node_count() + s.size());
+  CHECK(m.first_particle() == m_plain.node_count());
+  CHECK(m.edges == m_plain.edges);
+  REQUIRE(m.particle_volume.size() == s.size());
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    CHECK(m.X0[m.first_particle() + i] == s.reference_position(i));
+    CHECK(m.particle_volume[i] == s.volume(i));
+  }
+  std::vector<Vec2> x(s.size());
+  for (std::size_t i = 0; i < s.size(); ++i) x[i] = s.reference_position(i) + Vec2(0.01 * i, 0.0);
+  s.set_positions(x);
+  const auto xi = s.interface_positions();
+  double worst = 0.0;
+  for (std::size_t i = 0; i < s.size(); ++i)
+    worst = std::max(worst, (xi[m.first_particle() + i] - x[i]).norm());
+  CHECK(worst == 0.0);
+  CHECK(s.interface_normals()[m.first_particle()].isZero());
+  TlsphSolid t(fill_rectangle({0.0, 0.0}, {0.2, 0.1}, o.dp), o);
+  const std::size_t target = 47;
+  const Vec2 before = t.acceleration(target);
+  std::vector<Vec2> f(m.node_count(), Vec2::Zero());
+  f[m.first_particle() + target] = Vec2(2.0, -5.0);
+  t.set_interface_loads(f);
+  const double mass = o.material.density * t.volume(target);
+  CHECK(((t.acceleration(target) - before) * mass - Vec2(2.0, -5.0)).norm() < 1e-9);
+}
+
 TEST_CASE("tlsph: guards name the particle, step and time", "[solid_tlsph][guards]") {
   TlsphOptions o;
   o.dp = 0.01;

@@ -37,8 +37,8 @@ std::shared_ptr<const SolverSpec> read_sph(Section& s) {
   f.interface_spacing =
       s.real("interface_spacing", 1.0, Range::left_open(0.0, 1.0),
              "the boundary points' lattice spacing in l0, each of volume spacing^2 (0.5 with a "
-             "TL-SPH solid at dp_S = l0/2: the solid's own lattice, as the reference code's "
-             "fluid sees the solid's particles)");
+             "TL-SPH solid at dp_S = l0/2: the solid's own lattice; unused where the solid "
+             "hands over its particles, tlsph.interface_particles)");
   f.interface_acceleration = s.boolean(
       "interface_acceleration", false,
       "a coupled interface's mean acceleration over the coupling step in the wall's dummy "

@@ -101,6 +101,10 @@ struct TlsphOptions {
   std::vector<Clamp> clamps;
   /// Outline tags whose surface particles form the coupling interface; empty: every edge.
   std::vector<std::string> interface_tags;
+  /// Also hand every particle to the coupling as an interface node after the outline's nodes
+  /// (InterfaceMesh::particle_volume): a particle fluid then takes the solid's own particles as
+  /// its boundary (the RKGC paper's pair); a fluid that uses the edges ignores them.
+  bool interface_particles = false;
   int max_neighbors = 64; ///< row capacity of the reference neighbour list, >= 8
 };
 
@@ -156,6 +160,8 @@ public:
   /// tagged edge, and the edges' vertices), ordered along the outline (counter-clockwise: solid
   /// on the left of a -> b), order-1 edges between neighbours along it. Each node is attached to
   /// a particle (interface_particles(); clamped ones included: their loads are reactions).
+  /// With TlsphOptions::interface_particles every particle follows as a node of its own (at its
+  /// position, with its volume V0; on no edge).
   InterfaceMesh interface_mesh() const;
   /// Particle each interface node k is attached to (a corner particle carries several).
   const std::vector<std::uint32_t>& interface_particles() const { return interface_; }
@@ -165,7 +171,7 @@ public:
   std::vector<Vec2> interface_accelerations() const;
   /// Outward unit normals of the interface nodes in the current configuration: the reference
   /// normal n0 (from the outline) mapped by the cofactor of F, n = F^-T n0 / |F^-T n0|
-  /// (Nanson's formula; the rotation R of F = R U for pure rotations).
+  /// (Nanson's formula; the rotation R of F = R U for pure rotations); zero for particle nodes.
   std::vector<Vec2> interface_normals() const;
   /// Nodal forces on the interface nodes [N/m], held over the next advance(); they enter
   /// eq. 12 as a^{F:S} = f / m. Clamped nodes ignore them (reactions).

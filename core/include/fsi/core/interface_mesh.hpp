@@ -9,7 +9,9 @@
 // Edge convention: (a, m, b) with parent coordinate xi = -1 at a, 0 at m, +1 at b; the SOLID is on
 // the LEFT of a -> b (counter-clockwise around the solid), so the fluid is on the right.
 // Order 2 (FE T6 edges): m is the mid-side node. Order 1 (TL-SPH surface particles): straight
-// edges, m is unused and set equal to a.
+// edges, m is unused and set equal to a. A particle solid may add its particles themselves as
+// the last nodes (on no edge), for a particle fluid to take as its boundary (RKGC paper, sec.
+// 2.3: the fluid sees the solid's particles); a fluid that uses only the edges leaves them be.
 #include "fsi/core/types.hpp"
 
 #include <array>
@@ -22,8 +24,12 @@ struct InterfaceMesh {
   int order = 2;                                 ///< 1 or 2
   std::vector<Vec2> X0;                          ///< reference positions of the nodes [m]
   std::vector<std::array<std::size_t, 3>> edges; ///< node indices (a, m, b)
+  /// Volumes [m^2] of the particle nodes: the last particle_volume.size() nodes, on no edge.
+  std::vector<double> particle_volume;
 
   std::size_t node_count() const { return X0.size(); }
+  /// Index of the first particle node (node_count() when there is none).
+  std::size_t first_particle() const { return X0.size() - particle_volume.size(); }
 };
 
 /// Shape functions (N_a, N_m, N_b) of an edge of `order` at xi in [-1, 1]; they sum to 1.
