@@ -291,6 +291,40 @@ TEST_CASE("sph: the wall pushes an approaching particle back", "[sph][sign][wall
   for (std::size_t a = 0; a < g.walls().size(); ++a) REQUIRE(g.walls().y[a] > 0.0);
 }
 
+TEST_CASE("sph: a wall accelerating towards the fluid pushes harder (eq. 16's a_w)",
+          "[sph][sign][wall]") {
+  // The dummy pressure p_d = p_i + rho_i r max(0, (a_prior - a_w) . (-e_ia)) is the hydrostatic
+  // jump in the wall's frame: a floor accelerating up (a_w along its normal) raises it, one
+  // accelerating down lowers it. A block at rest on a floor of boundary points, one acoustic step
+  // with the points' acceleration set (as the coupling adapter does): the fluid's push on the
+  // floor rises with a_w, linearly while every p_i + p_d stays positive.
+  const double dp = 0.01;
+  auto o = base(dp);
+  o.gravity = {0.0, -9.81};
+  InterfaceMesh floor;
+  floor.order = 1;
+  floor.X0 = {{0.5, 0.0}, {-0.3, 0.0}}; // the solid below
+  floor.edges = {{0, 0, 1}};
+  const auto points = sph::InterfaceBoundary(floor, dp, 4).wall_points(0);
+  const auto load = [&](double a_w) {
+    sph::SphFluid f(o, sph::fill_rectangle({0.0, 0.0}, {0.2, 0.1}, dp), {}, points);
+    f.track_wall_forces(0);
+    for (std::size_t a = 0; a < f.walls().size(); ++a) f.moved_walls().ay[a] = a_w;
+    f.advance(f.next_dt());
+    double push = 0.0; // the fluid's force on the floor, downward positive
+    for (std::size_t a = 0; a < f.walls().size(); ++a) push -= f.wall_force(a).y();
+    return push;
+  };
+  const double still = load(0.0), up = load(4.0), down = load(-4.0), up2 = load(8.0);
+  INFO("load on the floor: a_w = -4 " << down << ", 0 " << still << ", +4 " << up << ", +8 " << up2
+                                      << " N/m");
+  CHECK(still > 0.0);
+  CHECK(up > still);
+  CHECK(down < still);
+  CHECK_THAT(up2 - still, WithinRel(2.0 * (up - still), 1e-9));
+  CHECK_THAT(up - still, WithinRel(still - down, 1e-9));
+}
+
 TEST_CASE("sph: a wall corner is filled, 4 layers each way", "[sph][wall]") {
   const double dp = 0.01;
   auto o = base(dp);
