@@ -27,6 +27,14 @@ Mesh make_rectangle_mesh(const RectangleMeshOptions& o) {
   for (int q = 0; q < o.elements_y; ++q)
     for (int p = 0; p < o.elements_x; ++p) {
       const int i = 2 * p, j = 2 * q;
+      if (o.diagonals == Diagonals::mirrored && 2 * p + 1 < o.elements_x) {
+        // Lower-left triangle (ll, lr, ul) and upper-right triangle (lr, ur, ul), both CCW.
+        mesh.elements.push_back(
+            {id(i, j), id(i + 2, j), id(i, j + 2), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+        mesh.elements.push_back({id(i + 2, j), id(i + 2, j + 2), id(i, j + 2), id(i + 2, j + 1),
+                                 id(i + 1, j + 2), id(i + 1, j + 1)});
+        continue;
+      }
       // Lower-right triangle (ll, lr, ur) and upper-left triangle (ll, ur, ul), both CCW.
       mesh.elements.push_back({id(i, j), id(i + 2, j), id(i + 2, j + 2), id(i + 1, j),
                                id(i + 2, j + 1), id(i + 1, j + 1)});

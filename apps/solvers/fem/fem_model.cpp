@@ -23,6 +23,8 @@ fem::Mesh build_mesh(const Scene& scene, const StructureBlock& block) {
     r.height = spec.mesh.height;
     r.elements_x = spec.mesh.elements_x;
     r.elements_y = spec.mesh.elements_y;
+    r.diagonals =
+        spec.mesh.diagonals == "mirrored" ? fem::Diagonals::mirrored : fem::Diagonals::rising;
     try {
       return fem::make_rectangle_mesh(r);
     } catch (const InputError& e) {

@@ -21,6 +21,10 @@ MeshSpec read_mesh(Section s) {
     m.height = s.real("height", Range::positive(), "m");
     m.elements_x = s.integer("elements_x", Range::closed(1, 10000), "element columns");
     m.elements_y = s.integer("elements_y", Range::closed(1, 10000), "element rows");
+    m.diagonals = s.choice("diagonals", {"rising", "mirrored"}, "rising",
+                           "how each quad is split: rising, along its lower-left to upper-right "
+                           "diagonal; mirrored, the left half's the other way, so both top "
+                           "corners belong to two triangles (a plate's free end on top)");
   }
   if (doc || m.kind == "gmsh")
     m.file = s.file(

@@ -16,6 +16,7 @@ struct MeshSpec {
   Vec2 origin = Vec2::Zero();
   double width = 0.0, height = 0.0;
   int elements_x = 0, elements_y = 0;
+  std::string diagonals = "rising"; ///< rising | mirrored (fem::Diagonals)
   std::filesystem::path file;
 };
 
