@@ -513,6 +513,10 @@ void EmpsFluid::advance(double t, double dt) {
                    " (try a smaller time step or a larger alpha_rep)");
   density_and_pressure();
   pressure_gradient(dt);
+  if (options_.wall_gap_courant > 0) {
+    if (dt >= gap_dt_) ++gap_limited_steps_;
+    gap_dt_ = wall_gap_dt();
+  }
   ++step_;
   Timer timer(times_.other);
   damp(t, dt);
@@ -572,6 +576,29 @@ void EmpsFluid::set_velocities(const std::vector<Vec2>& v) {
     particles_.vx[i] = v[i].x(), particles_.vy[i] = v[i].y();
 }
 
+double EmpsFluid::wall_gap_dt() const {
+  // r at x^{n+1} to first order: the hit's r at x* plus the correction's move along n_wall
+  // (scratch_ still holds it); the floor is repulsion()'s.
+  const Particles& p = particles_;
+  const double inf = std::numeric_limits<double>::infinity();
+  const double min_gap = 0.5e-3 * options_.l0;
+  auto face = [&](std::size_t i, int segment, double r, const Vec2& n, const Vec2& v_wall) {
+    if (segment < 0) return inf;
+    const double approach = -(Vec2(p.vx[i], p.vy[i]) - v_wall).dot(n);
+    if (approach <= 0) return inf;
+    const double gap = r + scratch_[2 * i] * n.x() + scratch_[2 * i + 1] * n.y();
+    return options_.wall_gap_courant * std::max(gap, min_gap) / approach;
+  };
+  const erp::WallHits& h = hits_;
+  return parallel_reduce(
+      p.size(), inf,
+      [&](std::size_t i) {
+        return std::min(face(i, h.segment[i], h.r[i], h.n_wall[i], h.v_wall[i]),
+                        face(i, h.segment2[i], h.r2[i], h.n_wall2[i], h.v_wall2[i]));
+      },
+      [](double a, double b) { return std::min(a, b); });
+}
+
 double EmpsFluid::stable_dt(double courant) const {
   double dt = courant * options_.l0 / (options_.sound_speed + max_speed());
   const double alpha =
@@ -579,11 +606,12 @@ double EmpsFluid::stable_dt(double courant) const {
       (options_.wall_contact == WallContact::viscous ? options_.wall_viscosity : 0.0);
   const double nu = options_.viscosity + alpha * options_.sound_speed * options_.l0;
   if (nu > 0) dt = std::min(dt, 0.25 * options_.l0 * options_.l0 / nu);
+  if (options_.wall_gap_courant > 0) dt = std::min(dt, gap_dt_);
   return dt;
 }
 
 EmpsFluid::State EmpsFluid::save() const {
-  State s{{}, step_, removed_, layout_};
+  State s{{}, step_, removed_, layout_, gap_dt_, gap_limited_steps_};
   particles_.fields.save(s.particles);
   return s;
 }
@@ -592,6 +620,8 @@ void EmpsFluid::restore(const State& s) {
   particles_.fields.restore(s.particles);
   step_ = s.step;
   removed_ = s.removed;
+  gap_dt_ = s.gap_dt;
+  gap_limited_steps_ = s.gap_limited_steps;
   if (s.layout != layout_) {
     layout_ = s.layout;
     neighbours_.invalidate();
@@ -616,6 +646,10 @@ void EmpsFluid::write_state(StateArchive& a, const std::string& prefix) const {
   a.put_integer(prefix + "layout", layout_);
   a.put_integer(prefix + "builds", builds_);
   a.put_real(prefix + "mean_neighbours", mean_neighbours_);
+  if (options_.wall_gap_courant > 0) {
+    a.put_real(prefix + "gap_dt", gap_dt_);
+    a.put_integer(prefix + "gap_limited_steps", gap_limited_steps_);
+  }
   // The list is rebuilt from its build positions on restart (same grid, same rows, same order).
   const std::size_t built = neighbours_.built();
   a.put(prefix + "neighbours/x_build",
@@ -647,6 +681,10 @@ void EmpsFluid::read_state(const StateArchive& a, const std::string& prefix) {
   layout_ = a.integer(prefix + "layout");
   builds_ = a.integer(prefix + "builds");
   mean_neighbours_ = a.real(prefix + "mean_neighbours");
+  if (options_.wall_gap_courant > 0) {
+    gap_dt_ = a.real(prefix + "gap_dt");
+    gap_limited_steps_ = a.integer(prefix + "gap_limited_steps");
+  }
   const auto& xb = a.reals(prefix + "neighbours/x_build");
   const auto& yb = a.reals(prefix + "neighbours/y_build", xb.size());
   neighbours_.invalidate();

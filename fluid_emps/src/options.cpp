@@ -32,6 +32,10 @@ void visit_options(FluidOptions& o, OptionVisitor& v) {
   v.real("wall_approach_viscosity", o.wall_approach_viscosity, Range::non_negative(),
          "alpha of the closing-pair viscosity alpha c l0 between a particle and the mirror "
          "images of its neighbours closing in across a wall (a wall force; 0 = off)");
+  v.real("wall_gap_courant", o.wall_gap_courant, Range::closed(0.0, 1.0),
+         "C_gap: a step closes at most C_gap of a particle's gap r to a wall it approaches, dt <= "
+         "C_gap r / (-(v - v_wall) . n) (keeps fast splashes from stepping through a wall that "
+         "eq. 27 would stop; 0 = off)");
   v.real("artificial_viscosity", o.artificial_viscosity, Range::non_negative(),
          "alpha: closing particle pairs feel a viscosity alpha c l0 along their line of centres "
          "(damps acoustic noise; not in the paper, 0 = off)");

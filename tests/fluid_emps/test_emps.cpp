@@ -3,6 +3,7 @@
 #include "fluid_emps/emps_fluid.hpp"
 #include "fsi/core/error.hpp"
 #include "fsi/core/parallel.hpp"
+#include "fsi/core/state_archive.hpp"
 #include "geometry_erp/fill.hpp"
 #include "geometry_erp/wall_weight.hpp"
 #include "particles/kernels.hpp"
@@ -428,4 +429,106 @@ TEST_CASE("emps: an unstable run stops with what, where and when", "[emps]") {
   CHECK(message.find("particle ") != std::string::npos);
   CHECK(message.find(", step ") != std::string::npos);
   CHECK(message.find(", t = ") != std::string::npos);
+}
+
+TEST_CASE("emps: with the wall-gap limit no step carries a fast splash through the floor",
+          "[emps]") {
+  // A lone particle (no pressure) falls at 8 m/s onto a floor with the paper's contact (eq. 27,
+  // alpha_rep = 1e7, l0 = 1.25 mm, c = 19.8 m/s) and the Liao dam break's steps (Courant 0.4
+  // with a particle elsewhere at 11.9 m/s: 0.13 mm per step). Eq. 27's potential,
+  // alpha/rho [h ln(h/r) - (h - r)] with h = l0/2, stops it above the floor, but an explicit step
+  // can jump the last part: drops from heights 1 um apart cross in about half the cases. With
+  // C_gap = 0.5 no step closes more than half the gap, none crosses and each leaves the floor.
+  const double l0 = 1.25e-3, u = 8.0, dt_scene = 0.4 * l0 / (19.8 + 11.86), c_gap = 0.5;
+  erp::WallSet walls;
+  walls.add_polyline(open_tank(1.0, 1.0), false, 0);
+  auto options = water(l0);
+  options.alpha_rep = 1e7;
+  options.sound_speed = 19.8;
+  auto drop = [&](double gap, double r0, long* limited) {
+    options.wall_gap_courant = gap;
+    emps::EmpsFluid fluid(options, {{0.5, r0}}, walls);
+    fluid.set_velocities({Vec2(0.0, -u)});
+    double t = 0.0, r = r0;
+    try {
+      while (t < 1e-3) {
+        const double dt = std::min(dt_scene, fluid.stable_dt(0.4));
+        fluid.advance(t, dt);
+        t += dt;
+        const double r_next = fluid.particles().y[0];
+        if (gap > 0) CHECK(r_next >= (1.0 - gap) * r);
+        r = r_next;
+      }
+    } catch (const RunError&) {
+      return false;
+    }
+    *limited = fluid.gap_limited_steps();
+    CHECK(fluid.particles().vy[0] > 0.0);
+    return true;
+  };
+  int crossed = 0;
+  for (int k = 0; k < 100; ++k) {
+    const double r0 = 2.0 * l0 + 1e-6 * k;
+    long limited = 0;
+    crossed += !drop(0.0, r0, &limited);
+    INFO("from " << r0 << " m");
+    CHECK(drop(c_gap, r0, &limited));
+    CHECK(limited > 0);
+  }
+  CHECK(crossed > 20);
+
+  // The limit is part of the state: a checkpoint taken while it binds gives the same next step.
+  options.wall_gap_courant = c_gap;
+  emps::EmpsFluid fluid(options, {{0.5, 2.0 * l0}}, walls);
+  fluid.set_velocities({Vec2(0.0, -u)});
+  for (double t = 0.0; fluid.gap_limited_steps() == 0;) {
+    const double dt = std::min(dt_scene, fluid.stable_dt(0.4));
+    fluid.advance(t, dt);
+    t += dt;
+  }
+  REQUIRE(fluid.stable_dt(0.4) < dt_scene);
+  StateArchive archive;
+  fluid.write_state(archive, "fluid/");
+  emps::EmpsFluid restarted(options, {{0.5, 2.0 * l0}}, walls);
+  restarted.read_state(archive, "fluid/");
+  CHECK(restarted.stable_dt(0.4) == fluid.stable_dt(0.4));
+  CHECK(restarted.gap_limited_steps() == fluid.gap_limited_steps());
+}
+
+TEST_CASE("emps: eq. 27 stops a particle below sqrt(2 alpha/rho h ln 1000), the damped contact "
+          "above it",
+          "[emps]") {
+  // With the force floored at r = 1e-3 h (h = l0/2), eq. 27's whole potential per unit mass is
+  // alpha/rho h ln 1000: a particle approaching faster than u_max = sqrt(2 alpha/rho h ln 1000)
+  // reaches the wall whatever the step. With the wall-gap limit (C_gap = 0.05) the explicit
+  // steps follow that bound: at 0.95 u_max the paper's contact turns the particle, at 1.05 u_max
+  // it crosses; the damped contact (wall_contact: damped) takes a splash at 1.25 u_max (11.6 m/s,
+  // as in the Liao dam break) off the floor again.
+  const double l0 = 1.25e-3, h = 0.5 * l0;
+  erp::WallSet walls;
+  walls.add_polyline(open_tank(1.0, 1.0), false, 0);
+  auto options = water(l0);
+  options.alpha_rep = 1e7;
+  options.sound_speed = 19.8;
+  options.wall_gap_courant = 0.05;
+  const double u_max = std::sqrt(2.0 * options.alpha_rep / options.density * h * std::log(1e3));
+  auto lands = [&](double u, emps::WallContact contact) {
+    options.wall_contact = contact;
+    emps::EmpsFluid fluid(options, {{0.5, 2.0 * l0}}, walls);
+    fluid.set_velocities({Vec2(0.0, -u)});
+    try {
+      for (double t = 0.0; t < 1e-3;) {
+        const double dt = fluid.stable_dt(0.4);
+        fluid.advance(t, dt);
+        t += dt;
+      }
+    } catch (const RunError&) {
+      return false;
+    }
+    return fluid.particles().vy[0] > 0.0;
+  };
+  CHECK(lands(0.95 * u_max, emps::WallContact::paper));
+  CHECK_FALSE(lands(1.05 * u_max, emps::WallContact::paper));
+  CHECK_FALSE(lands(1.25 * u_max, emps::WallContact::paper));
+  CHECK(lands(1.25 * u_max, emps::WallContact::damped));
 }

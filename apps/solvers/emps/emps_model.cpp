@@ -150,6 +150,8 @@ void EmpsModel::report(JsonObject& run) const {
       .add("mean_neighbours", fluid_->mean_neighbours())
       .add("n0", fluid_->n0())
       .add("neighbour_list_builds", static_cast<long long>(fluid_->neighbour_builds()));
+  if (fluid_->options().wall_gap_courant > 0)
+    f.add("wall_gap_limited_steps", static_cast<long long>(fluid_->gap_limited_steps()));
   const emps::StepTimes& t = fluid_->times();
   JsonObject seconds; // this process's wall seconds per part of the fluid's step
   seconds.add("neighbours", t.neighbours)

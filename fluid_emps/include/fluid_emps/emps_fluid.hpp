@@ -21,6 +21,7 @@
 #include "particles/kernels.hpp"
 #include "particles/neighbor_list.hpp"
 
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -71,8 +72,11 @@ public:
   /// wall or a neighbour-row overflow, naming the particle, the step and the time.
   void advance(double t, double dt);
 
-  /// Largest stable step for a Courant number: C l0 / (c + |v|max), and the viscous limit.
+  /// Largest stable step for a Courant number: C l0 / (c + |v|max), the viscous limit and the
+  /// wall-gap limit of the last step (FluidOptions::wall_gap_courant).
   double stable_dt(double courant) const;
+  /// Steps whose dt the wall-gap limit set.
+  long gap_limited_steps() const { return gap_limited_steps_; }
 
   const Particles& particles() const { return particles_; }
   const WallForces& wall_forces() const { return wall_forces_; }
@@ -96,6 +100,8 @@ public:
     long step = 0;
     std::size_t removed = 0;
     long layout = 0;
+    double gap_dt = 0.0;
+    long gap_limited_steps = 0;
   };
   State save() const;
   void restore(const State& state);
@@ -141,6 +147,7 @@ private:
   double corner_overlap(std::size_t i) const;
   erp::ConvexPart convex_part(std::size_t i) const;
   void remove_outside();
+  double wall_gap_dt() const;
   void damp(double t, double dt);
 
   FluidOptions options_;
@@ -160,6 +167,8 @@ private:
   std::size_t capacity_;
   long step_ = 0, layout_ = 0, builds_ = 0;
   long hits_layout_ = -1; // layout_ when hits_ were computed (-1: stale)
+  double gap_dt_ = std::numeric_limits<double>::infinity(); // wall-gap limit for the next step
+  long gap_limited_steps_ = 0;
   std::size_t removed_ = 0;
   double mean_neighbours_ = 0.0;
   StepTimes times_;

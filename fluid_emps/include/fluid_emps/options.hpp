@@ -47,6 +47,9 @@ struct FluidOptions {
   /// alpha of the closing-pair viscosity alpha c l0 between a particle and the mirror images of
   /// its neighbours that close in across a wall (a wall force; 0: off).
   double wall_approach_viscosity = 0.0;
+  /// C_gap: a step closes at most C_gap of any particle's gap to a wall it approaches,
+  /// dt <= C_gap r / (-(v - v_wall) . n_wall) (0: off, the Courant and viscous limits alone).
+  double wall_gap_courant = 0.0;
   WallCondition wall_condition = WallCondition::no_slip;
   WallDensity wall_density = WallDensity::added;
   /// At concave corners also apply the second wall face (z, mirror terms and repulsion of the
