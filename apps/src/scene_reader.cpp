@@ -140,8 +140,9 @@ Section::Section(YAML::Node node, std::string path, ReadContext& ctx, int key_li
     const std::string key = it->first.Scalar();
     const int line = it->first.Mark().line + 1;
     const auto [seen, inserted] = first_line.emplace(key, line);
-    if (!inserted)
-      throw InputError(ctx.file + ":" + std::to_string(std::max(line, 1)) + ": " + key_path(key) +
+    if (!inserted) // an empty key is named as written, "" (key_path("") is the section's path)
+      throw InputError(ctx.file + ":" + std::to_string(std::max(line, 1)) + ": " +
+                       (key.empty() ? (path_.empty() ? "\"\"" : path_ + ".\"\"") : key_path(key)) +
                        ": duplicate key (first on line " +
                        std::to_string(std::max(seen->second, 1)) + "); give each key once");
   }

@@ -174,6 +174,10 @@ TEST_CASE("apps: cli: duplicate YAML keys and a second document are errors namin
   write(dir / "time.yaml", slurp(structure) + "time:\n  end: 1.0\n  dt: 0.5\n");
   r = fsi({"check", (dir / "time.yaml").string()});
   require_clear(r, {"time.yaml:29: time: duplicate key (first on line 3)"});
+  // An empty key twice (a fuzz finding: the message named no key) is named "".
+  write(dir / "empty.yaml", slurp(structure) + "\"\": 1\n\"\": 2\n");
+  r = fsi({"check", (dir / "empty.yaml").string()});
+  require_clear(r, {"empty.yaml:30: \"\": duplicate key (first on line 29)"});
   write(dir / "two.yaml", slurp(structure) + "---\nname: other\n");
   r = fsi({"check", (dir / "two.yaml").string()});
   require_clear(r, {"two.yaml:29: yaml: a second YAML document"});
