@@ -130,6 +130,14 @@ void EmpsFluid::query_walls() {
   hits_layout_ = layout_;
 }
 
+// With mirror_same_side: j lies behind the wall of the hit (x_wall, n_wall), on the far side of a
+// thin wall, so the mirror sums leave it out (its image would land on the particle's side).
+bool EmpsFluid::behind(std::uint32_t j, const Vec2& x_wall, const Vec2& n_wall) const {
+  return options_.mirror_same_side &&
+         (particles_.x[j] - x_wall.x()) * n_wall.x() + (particles_.y[j] - x_wall.y()) * n_wall.y() <
+             0.0;
+}
+
 // At the mirror point x_i' = 2 x_wall - x_i (eq. 23), over the real neighbours of x_i' (j = i
 // included), without the 2d/(lambda0 n0) factor:
 // - laplacian: <lap v>_i' with the mirror velocity v_i' (eq. 24 no-slip, or slip), turned back by
@@ -152,7 +160,7 @@ EmpsFluid::MirrorViscous EmpsFluid::mirror_viscous(std::size_t i, const Vec2& x_
   double ux = 0, uy = 0, ax = 0, ay = 0;
   grid_.for_each_near(mpx, mpy, [&](std::uint32_t j) {
     const double dx = p.x[j] - mpx, dy = p.y[j] - mpy, r2 = dx * dx + dy * dy;
-    if (r2 >= re2_) return;
+    if (r2 >= re2_ || behind(j, x_wall, n_wall)) return;
     const double w = w_e_.inside(std::sqrt(r2));
     ux += (p.vx[j] - v_m.x()) * w;
     uy += (p.vy[j] - v_m.y()) * w;
@@ -313,7 +321,7 @@ Vec2 EmpsFluid::mirror_gradient(std::size_t i, const Vec2& x_wall, const Vec2& n
   double ux = 0, uy = 0;
   grid_.for_each_near(mpx, mpy, [&](std::uint32_t j) {
     const double dx = p.x[j] - mpx, dy = p.y[j] - mpy, r2 = dx * dx + dy * dy;
-    if (r2 >= re2_ || r2 == 0.0) return;
+    if (r2 >= re2_ || r2 == 0.0 || behind(j, x_wall, n_wall)) return;
     const double s = (p.p[j] + p_i) * w_e_.inside(std::sqrt(r2)) / r2;
     ux += s * dx;
     uy += s * dy;

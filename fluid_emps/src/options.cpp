@@ -50,6 +50,10 @@ void visit_options(FluidOptions& o, OptionVisitor& v) {
   v.flag("convex_corners", o.convex_corners,
          "at convex wall corners count the solid's own virtual lattice in pnd and in the wall "
          "pressure term (eqs. 20 and 25 assume a half-plane there; false: as in the paper)");
+  v.flag("mirror_same_side", o.mirror_same_side,
+         "the mirror sums (eqs. 24-26) over the neighbours of the mirror point on the particle's "
+         "side of its wall only (false: all within r_e, as in the paper, which across a wall "
+         "thinner than about 2 r_e reflects the fluid on the far side into the particle's side)");
 }
 
 } // namespace fsi::emps

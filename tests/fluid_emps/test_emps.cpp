@@ -194,21 +194,24 @@ TEST_CASE("emps: without gravity and walls, linear momentum is conserved to 1e-1
 TEST_CASE("emps: what the fluid's momentum loses to the walls, the walls receive (eq. 52)",
           "[emps]") {
   // A blob thrown at a tank's floor and side wall with gravity and viscosity: in every step and for
-  // every wall contact (with either mirror pressure and with the approach viscosity), sum_i m
-  // (v_i^{n+1} - v_i^n) = dt (M g + sum_i f_wall,i), the fluid-fluid terms being antisymmetric
-  // in pairs; and the force split of wall_force_parts adds up to -sum_i f_wall,i, with the
-  // repulsive part non-zero (the blob hits the walls).
+  // every wall contact (with either mirror pressure, with the approach viscosity and with the
+  // same-side mirror sums), sum_i m (v_i^{n+1} - v_i^n) = dt (M g + sum_i f_wall,i), the
+  // fluid-fluid terms being antisymmetric in pairs; and the force split of wall_force_parts adds up
+  // to -sum_i f_wall,i, with the repulsive part non-zero (the blob hits the walls).
   const double l0 = 0.01, dt = 2e-5;
   struct Mode {
     emps::WallContact contact;
     emps::WallPressure pressure;
     double approach;
+    bool same_side;
   };
   using C = emps::WallContact;
   using P = emps::WallPressure;
-  const auto mode = GENERATE(Mode{C::paper, P::own, 0.0}, Mode{C::damped, P::own, 0.0},
-                             Mode{C::viscous, P::own, 0.0}, Mode{C::paper, P::neighbours, 0.0},
-                             Mode{C::paper, P::own, 0.1}, Mode{C::viscous, P::neighbours, 0.1});
+  const auto mode =
+      GENERATE(Mode{C::paper, P::own, 0.0, false}, Mode{C::damped, P::own, 0.0, false},
+               Mode{C::viscous, P::own, 0.0, false}, Mode{C::paper, P::neighbours, 0.0, false},
+               Mode{C::paper, P::own, 0.1, false}, Mode{C::viscous, P::neighbours, 0.1, false},
+               Mode{C::paper, P::own, 0.1, true});
   erp::WallSet walls;
   walls.add_polyline(open_tank(0.4, 0.4), false, 0);
   auto positions =
@@ -220,6 +223,7 @@ TEST_CASE("emps: what the fluid's momentum loses to the walls, the walls receive
   options.wall_contact = mode.contact;
   options.wall_pressure = mode.pressure;
   options.wall_approach_viscosity = mode.approach;
+  options.mirror_same_side = mode.same_side;
   options.wall_damping = 2.0;
   options.wall_viscosity = 0.1;
   emps::EmpsFluid fluid(options, positions, walls);
@@ -342,6 +346,62 @@ TEST_CASE("emps: with the neighbours' mirror pressure the wall pushes back on a 
   CHECK(normal[1] > normal[0]);  // pushed off the wall harder
   const double push = l0 * l0 * 2.0 / n0 * mean_pressure * mirror_sum;
   CHECK_THAT(normal[1] - normal[0], WithinRel(push, 1e-6));
+}
+
+TEST_CASE("emps: across a wall thinner than 2 r_e the mirror sums see the far side's fluid; with "
+          "mirror_same_side they do not",
+          "[emps]") {
+  // A plate 2.2 l0 thick, a squeezed block (0.95 l0, so under pressure) on each side, closing in
+  // on it at 0.5 m/s, with viscosity and the approach viscosity. The blocks are beyond each
+  // other's r_e (3.2 l0 apart), but the mirror point of a particle at d above the plate lies
+  // within r_e of the particles below it. The wall forces on the upper block, with the lower
+  // block present and absent: with mirror_same_side equal to round-off (the lower block is behind
+  // the upper block's wall), with the paper's sums (every neighbour of x_i') not.
+  const double l0 = 0.01, s = 0.95 * l0, thickness = 2.2 * l0, y0 = 0.5, y1 = y0 + thickness;
+  erp::WallSet walls;
+  const std::vector<Vec2> plate{{0.2, y1}, {0.8, y1}, {0.8, y0}, {0.2, y0}}; // fluid outside
+  walls.add_polyline(plate, true, 0);
+  std::vector<Vec2> upper, lower;
+  for (int row = 0; row < 6; ++row)
+    for (int col = -8; col <= 8; ++col) {
+      upper.emplace_back(0.5 + col * s, y1 + 0.5 * l0 + row * s);
+      lower.emplace_back(0.5 + col * s, y0 - 0.5 * l0 - row * s);
+    }
+  double spread[2] = {0.0, 0.0};
+  for (const bool same_side : {false, true}) {
+    auto options = water(l0);
+    options.viscosity = 1e-3;
+    options.wall_approach_viscosity = 0.1;
+    options.mirror_same_side = same_side;
+    std::vector<std::vector<Vec2>> f_wall, f_viscous;
+    for (const bool with_lower : {false, true}) {
+      std::vector<Vec2> positions = upper;
+      if (with_lower) positions.insert(positions.end(), lower.begin(), lower.end());
+      emps::EmpsFluid fluid(options, positions, walls);
+      std::vector<Vec2> v; // in the fluid's order: ids are indices into positions
+      for (const std::uint32_t id : fluid.particles().id)
+        v.push_back(id < upper.size() ? Vec2(0.1, -0.5) : Vec2(-0.2, 0.5));
+      fluid.set_velocities(v);
+      fluid.advance(0.0, 1e-6);
+      const emps::Particles& p = fluid.particles();
+      const emps::WallForces& w = fluid.wall_forces();
+      std::vector<Vec2> f(upper.size()), fv(upper.size());
+      for (std::size_t i = 0; i < p.size(); ++i)
+        if (p.id[i] < upper.size()) f[p.id[i]] = w.f[i], fv[p.id[i]] = w.f_viscous[i];
+      f_wall.push_back(f);
+      f_viscous.push_back(fv);
+    }
+    double largest = 0.0, pressure_largest = 0.0;
+    for (std::size_t k = 0; k < upper.size(); ++k) {
+      largest = std::max(largest, f_wall[0][k].norm());
+      pressure_largest = std::max(pressure_largest, (f_wall[0][k] - f_viscous[0][k]).norm());
+      spread[same_side] = std::max(spread[same_side], (f_wall[1][k] - f_wall[0][k]).norm());
+    }
+    CHECK(pressure_largest > 0.1 * largest); // N/m: the pressure terms take part
+    spread[same_side] /= largest;
+  }
+  CHECK(spread[0] > 0.05);  // the paper's sums: the far side moves the wall force by > 5 %
+  CHECK(spread[1] < 1e-12); // same side: round-off of the reordered sums
 }
 
 TEST_CASE("emps: a tank rolling +-4 degrees, half full, keeps every particle for 5 periods",

@@ -134,6 +134,7 @@ private:
   };
   WallGradient wall_gradient(std::size_t i, double dt, double p_mirror) const;
   void check_finite(long step, double t) const;
+  bool behind(std::uint32_t j, const Vec2& x_wall, const Vec2& n_wall) const;
   Vec2 mirror_gradient(std::size_t i, const Vec2& x_wall, const Vec2& n_wall,
                        double p_mirror) const;
   struct MirrorViscous {

@@ -61,6 +61,11 @@ struct FluidOptions {
   /// which over-count pnd by up to 17 % of n0 beside a right-angle convex corner and drive a jet
   /// away from it.
   bool convex_corners = true;
+  /// The mirror sums (eqs. 24-26) over the real neighbours of x_i' on the particle's side of its
+  /// wall only, (x_j - x_wall) . n_wall >= 0. false: every neighbour within r_e, as in the paper,
+  /// which across a wall thinner than about 2 r_e reflects the fluid on the far side into the
+  /// particle's own side.
+  bool mirror_same_side = false;
   Vec2 gravity = Vec2::Zero();
   double damping_time = 0.0; ///< T_d: velocities damped at rate 20/T_d (1 - t/T_d) for t < T_d
   Vec2 domain_min = Vec2::Zero(), domain_max = Vec2::Zero(); ///< outside: removed and counted
