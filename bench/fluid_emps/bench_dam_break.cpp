@@ -30,7 +30,7 @@ void dam_break(benchmark::State& state) {
   o.viscosity = 1e-6;
   o.l0 = l0;
   o.sound_speed = 10.0 * std::sqrt(2.0 * 9.81 * 2.0);
-  o.alpha_rep = 1e7;
+  o.wall.contact.alpha_rep = 1e7;
   o.gravity = {0.0, -9.81};
   o.domain_min = {-0.1, -0.1};
   o.domain_max = {4.1, 3.1};

@@ -70,11 +70,11 @@ void BM_query(benchmark::State& state) {
   locator->query(x, hits); // warm-up: sizes the output
   for (auto _ : state) {
     locator->query(x, hits);
-    benchmark::DoNotOptimize(hits.r.data());
+    benchmark::DoNotOptimize(hits.face[0].r.data());
     benchmark::ClobberMemory();
   }
   std::size_t near = 0;
-  for (const int s : hits.segment) near += s >= 0;
+  for (const int s : hits.face[0].segment) near += s >= 0;
   state.counters["near_wall"] = static_cast<double>(near) / static_cast<double>(x.size());
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * x.size()));
   fsi::set_num_threads(threads_before);

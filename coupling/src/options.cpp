@@ -1,10 +1,10 @@
 #include "coupling/options.hpp"
 
-#include <algorithm>
-#include <sstream>
-
 #include "coupling/registry.hpp"
 #include "fsi/core/error.hpp"
+#include "fsi/core/option_ranges.hpp"
+
+#include <sstream>
 
 namespace fsi::coupling {
 
@@ -72,32 +72,6 @@ public:
   }
 };
 
-class Validator final : public OptionVisitor {
-public:
-  void name(const std::string& key, std::string& value, const std::vector<std::string>& allowed,
-            const std::string&) override {
-    if (std::find(allowed.begin(), allowed.end(), value) != allowed.end()) return;
-    throw InputError("coupling." + key + ": unknown name '" + value +
-                     "' (allowed: " + join(allowed) + ")");
-  }
-  void real(const std::string& key, double& value, const Range& range,
-            const std::string&) override {
-    check(key, value, range);
-  }
-  void integer(const std::string& key, int& value, const Range& range,
-               const std::string&) override {
-    check(key, value, range);
-  }
-  void flag(const std::string&, bool&, const std::string&) override {}
-
-private:
-  static void check(const std::string& key, double value, const Range& range) {
-    if (range.contains(value)) return;
-    throw InputError("coupling." + key + ": value " + text(value) + " is out of range: must be " +
-                     range.describe());
-  }
-};
-
 } // namespace
 
 std::vector<OptionDeclaration> option_declarations(const Registry& registry) {
@@ -109,7 +83,7 @@ std::vector<OptionDeclaration> option_declarations(const Registry& registry) {
 
 void validate_options(const CouplingOptions& options, const Registry& registry) {
   CouplingOptions o = options; // the visitor takes fields by reference; nothing is changed
-  Validator v;
+  RangeChecker v("coupling.");
   visit_options(o, registry, v);
   if (o.convergence == "relative" && !(o.tolerance < 1.0))
     throw InputError("coupling.tolerance: value " + text(o.tolerance) +

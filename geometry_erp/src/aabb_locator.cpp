@@ -73,7 +73,7 @@ void AabbLocator::locate(const QueryPoints& points, WallHits& hits) const {
   const WallSet& walls = *walls_;
   const auto& tree = tree_->tree;
   detail::batch_query(
-      walls, r_e_, second_face_, points.size(), points,
+      walls, r_e_, corner_faces_, points.size(), points,
       [&](const Vec2& p, const double& bound, auto&& consider) {
         NearestWithin<std::remove_reference_t<decltype(consider)>> traits{p, bound, consider};
         tree.traversal(0, traits);

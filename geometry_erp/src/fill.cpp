@@ -75,7 +75,8 @@ std::vector<Vec2> fill_lattice(const Vec2& origin, double l0, const std::vector<
   WallHits hits;
   locator.query(candidates, hits);
   for (std::size_t k = 0; k < candidates.size(); ++k)
-    if (hits.segment[k] < 0 || hits.r[k] >= clearance) particles.push_back(candidates[k]);
+    if (hits.face[0].segment[k] < 0 || hits.face[0].r[k] >= clearance)
+      particles.push_back(candidates[k]);
   return particles;
 }
 

@@ -69,7 +69,7 @@ void GridLocator::update() {
 void GridLocator::locate(const QueryPoints& points, WallHits& hits) const {
   const WallSet& walls = *walls_;
   detail::batch_query(
-      walls, r_e_, second_face_, points.size(), points,
+      walls, r_e_, corner_faces_, points.size(), points,
       [&](const Vec2& p, const double& bound, auto&& consider) {
         const double fi = std::floor((p.x() - lo_.x()) / h_),
                      fj = std::floor((p.y() - lo_.y()) / h_);

@@ -5,21 +5,19 @@
 
 namespace fsi::erp {
 
-void WallHits::resize(std::size_t n) {
+void FaceHits::resize(std::size_t n) {
   segment.resize(n);
   t.resize(n);
   r.resize(n);
   x_wall.resize(n);
   n_wall.resize(n);
   v_wall.resize(n);
+}
+
+void WallHits::resize(std::size_t n) {
+  for (FaceHits& f : face) f.resize(n);
   a_wall.resize(n);
   crossed.resize(n);
-  segment2.resize(n);
-  t2.resize(n);
-  r2.resize(n);
-  x_wall2.resize(n);
-  n_wall2.resize(n);
-  v_wall2.resize(n);
 }
 
 std::unique_ptr<WallLocator> make_wall_locator(const WallSet& walls, double r_e, LocatorKind kind) {

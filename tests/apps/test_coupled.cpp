@@ -50,10 +50,9 @@ TEST_CASE("apps: coupled dam break: walls follow the FE nodes, loads balance the
     const auto& w = fluid.fluid().wall_forces();
     Vec2 wall_total = Vec2::Zero();
     const int s0 = fe.first_segment(), s1 = s0 + fe.segment_count();
-    for (std::size_t i = 0; i < w.segment.size(); ++i) {
-      if (w.segment[i] >= s0 && w.segment[i] < s1) wall_total -= w.f[i];
-      if (w.segment2[i] >= s0 && w.segment2[i] < s1) wall_total -= w.f2[i];
-    }
+    for (std::size_t i = 0; i < w.size(); ++i)
+      for (const emps::FaceForces& f : w.face)
+        if (f.segment[i] >= s0 && f.segment[i] < s1) wall_total -= f.f[i];
     Vec2 load_total = Vec2::Zero();
     for (const auto& f : fluid.adapter().interface_loads().f) load_total += f;
     REQUIRE((load_total - wall_total).norm() <= 1e-12 * std::max(1.0, wall_total.norm()));

@@ -158,8 +158,8 @@ TEST_CASE("apps: a block named after a solver type holds its keys: any pair by t
       REQUIRE(s.structures[0].type == structure);
       // The chosen type's block is read as keys of the solver block.
       if (fluid == "emps")
-        CHECK(dynamic_cast<const emps_plugin::FluidSpec&>(*s.fluid->spec).options.alpha_rep ==
-              1.0e7);
+        CHECK(dynamic_cast<const emps_plugin::FluidSpec&>(*s.fluid->spec)
+                  .options.wall.contact.alpha_rep == 1.0e7);
       else
         CHECK(dynamic_cast<const sph_plugin::SphSpec&>(*s.fluid->spec).options.dp == 4.0e-3);
       if (structure == "fem") {

@@ -67,7 +67,7 @@ TEST_CASE("emps: a lattice at rest in a tank, corners included, stays at rest wi
       erp::fill_lattice({0, 0}, l0, {{{0, 0}, {0.4, 0}, {0.4, 0.3}, {0, 0.3}}}, {}, &walls);
   for (const auto density : {emps::WallDensity::added, emps::WallDensity::scaled}) {
     auto options = water(l0);
-    options.wall_density = density;
+    options.wall.pnd.density = density;
     emps::EmpsFluid fluid(options, positions, walls);
     fluid.advance(0.0, 1e-4);
     const auto& p = fluid.particles();
@@ -103,7 +103,7 @@ TEST_CASE("emps: a lattice at rest around a block's convex corners has pnd = n0"
   };
   for (const bool convex : {true, false}) {
     auto options = water(l0);
-    options.convex_corners = convex;
+    options.wall.convex_corners = convex;
     emps::EmpsFluid fluid(options, positions, walls);
     const auto& p = fluid.particles();
     double worst = 0.0;
@@ -142,12 +142,12 @@ TEST_CASE("emps: water at rest around a block settles; the paper's convex corner
   for (const bool convex : {true, false}) {
     auto options = water(l0);
     options.sound_speed = 22.0;
-    options.alpha_rep = 1e5;
-    options.wall_density = emps::WallDensity::scaled;
+    options.wall.contact.alpha_rep = 1e5;
+    options.wall.pnd.density = emps::WallDensity::scaled;
     options.artificial_viscosity = 0.2;
     options.damping_time = 1.0;
     options.gravity = {0.0, -g};
-    options.convex_corners = convex;
+    options.wall.convex_corners = convex;
     emps::EmpsFluid fluid(options, positions, walls);
     for (int k = 0; k < 8000; ++k) fluid.advance(k * dt, dt); // to t = 2 s
     const auto& p = fluid.particles();
@@ -218,14 +218,14 @@ TEST_CASE("emps: what the fluid's momentum loses to the walls, the walls receive
       erp::fill_lattice({0.2, 0.0}, l0, {{{0.2, 0.0}, {0.35, 0.0}, {0.35, 0.15}, {0.2, 0.15}}});
   auto options = water(l0);
   options.viscosity = 1e-6;
-  options.alpha_rep = 1e7;
+  options.wall.contact.alpha_rep = 1e7;
   options.gravity = {0.0, -9.81};
-  options.wall_contact = mode.contact;
-  options.wall_pressure = mode.pressure;
-  options.wall_approach_viscosity = mode.approach;
-  options.mirror_same_side = mode.same_side;
-  options.wall_damping = 2.0;
-  options.wall_viscosity = 0.1;
+  options.wall.contact.model = mode.contact;
+  options.wall.mirror.pressure = mode.pressure;
+  options.wall.mirror.approach_viscosity = mode.approach;
+  options.wall.mirror.same_side = mode.same_side;
+  options.wall.contact.damping = 2.0;
+  options.wall.contact.viscosity = 0.1;
   emps::EmpsFluid fluid(options, positions, walls);
   std::vector<Vec2> v(positions.size(), Vec2(2.5, -1.5));
   fluid.set_velocities(v);
@@ -239,7 +239,7 @@ TEST_CASE("emps: what the fluid's momentum loses to the walls, the walls receive
     const Vec2 after = m * momentum(fluid.particles());
     const emps::WallForces& w = fluid.wall_forces();
     Vec2 f = Vec2::Zero();
-    for (std::size_t i = 0; i < w.f.size(); ++i) f += w.f[i] + w.f2[i];
+    for (std::size_t i = 0; i < w.size(); ++i) f += w.face[0].f[i] + w.face[1].f[i];
     const Vec2 expected =
         dt * (static_cast<double>(fluid.particles().size()) * m * options.gravity + f);
     // round-off of the momentum sums, and of the impulses
@@ -266,7 +266,7 @@ TEST_CASE("emps: the approach viscosity brakes a particle closing in on a wall, 
   erp::WallSet walls;
   walls.add_polyline(open_tank(1.0, 1.0), false, 0);
   auto options = water(l0);
-  options.wall_approach_viscosity = alpha;
+  options.wall.mirror.approach_viscosity = alpha;
   const double u_tangent = 0.3;
   for (const double u_n : {-1.0, 1.0}) {
     emps::EmpsFluid fluid(options, {{0.5, r}}, walls);
@@ -284,11 +284,11 @@ TEST_CASE("emps: the approach viscosity brakes a particle closing in on a wall, 
           -dt * alpha * options.sound_speed * l0 * c_lap * 2.0 * u_n * w_e(2.0 * r);
       CHECK(brake > 0.0);
       CHECK_THAT(p.vy[0] - u_n, WithinRel(brake, 1e-10)); // round-off of vy - u_n
-      CHECK_THAT(w.f_viscous[0].y(), WithinRel(m * brake / dt, 1e-10));
-      CHECK(w.f_viscous[0].x() == 0.0);
+      CHECK_THAT(w.face[0].f_viscous[0].y(), WithinRel(m * brake / dt, 1e-10));
+      CHECK(w.face[0].f_viscous[0].x() == 0.0);
     } else {
       CHECK(p.vy[0] == u_n);
-      CHECK(w.f_viscous[0].norm() == 0.0);
+      CHECK(w.face[0].f_viscous[0].norm() == 0.0);
     }
   }
 }
@@ -316,7 +316,7 @@ TEST_CASE("emps: with the neighbours' mirror pressure the wall pushes back on a 
   double normal[2] = {0.0, 0.0}, mean_pressure = 0.0, mirror_sum = 0.0, n0 = 0.0;
   for (const auto mode : {emps::WallPressure::own, emps::WallPressure::neighbours}) {
     auto options = water(l0);
-    options.wall_pressure = mode;
+    options.wall.mirror.pressure = mode;
     emps::EmpsFluid fluid(options, positions, walls);
     fluid.advance(0.0, 1e-6);
     const emps::Particles& p = fluid.particles();
@@ -326,8 +326,8 @@ TEST_CASE("emps: with the neighbours' mirror pressure the wall pushes back on a 
     CHECK(p.surface[lonely]);
     CHECK(p.p[lonely] == 0.0);
     const emps::WallForces& w = fluid.wall_forces();
-    normal[mode == emps::WallPressure::neighbours] = w.f[lonely].y();
-    CHECK(w.f_contact[lonely].norm() == 0.0); // beyond eq. 27's reach
+    normal[mode == emps::WallPressure::neighbours] = w.face[0].f[lonely].y();
+    CHECK(w.face[0].f_contact[lonely].norm() == 0.0); // beyond eq. 27's reach
     const particles::MpsWeight w_e(options.r_e());
     const double y_mirror = -p.y[lonely];
     double pw = 0.0, ws = 0.0;
@@ -371,8 +371,8 @@ TEST_CASE("emps: across a wall thinner than 2 r_e the mirror sums see the far si
   for (const bool same_side : {false, true}) {
     auto options = water(l0);
     options.viscosity = 1e-3;
-    options.wall_approach_viscosity = 0.1;
-    options.mirror_same_side = same_side;
+    options.wall.mirror.approach_viscosity = 0.1;
+    options.wall.mirror.same_side = same_side;
     std::vector<std::vector<Vec2>> f_wall, f_viscous;
     for (const bool with_lower : {false, true}) {
       std::vector<Vec2> positions = upper;
@@ -387,7 +387,8 @@ TEST_CASE("emps: across a wall thinner than 2 r_e the mirror sums see the far si
       const emps::WallForces& w = fluid.wall_forces();
       std::vector<Vec2> f(upper.size()), fv(upper.size());
       for (std::size_t i = 0; i < p.size(); ++i)
-        if (p.id[i] < upper.size()) f[p.id[i]] = w.f[i], fv[p.id[i]] = w.f_viscous[i];
+        if (p.id[i] < upper.size())
+          f[p.id[i]] = w.face[0].f[i], fv[p.id[i]] = w.face[0].f_viscous[i];
       f_wall.push_back(f);
       f_viscous.push_back(fv);
     }
@@ -416,7 +417,7 @@ TEST_CASE("emps: a tank rolling +-4 degrees, half full, keeps every particle for
       erp::fill_lattice({0, 0}, l0, {{{0, 0}, {L, 0}, {L, 0.5 * H}, {0, 0.5 * H}}}, {}, &walls);
   auto options = water(l0);
   options.viscosity = 1e-6;
-  options.alpha_rep = 1e7;
+  options.wall.contact.alpha_rep = 1e7;
   options.gravity = {0.0, -9.81};
   options.domain_min = {-0.2, -0.2};
   options.domain_max = {L + 0.2, H + 0.2};
@@ -445,7 +446,7 @@ TEST_CASE("emps: a dam break on two threads is bitwise the sequential one (balan
   auto options = water(l0);
   options.viscosity = 1e-6;
   options.artificial_viscosity = 0.1;
-  options.alpha_rep = 1e7;
+  options.wall.contact.alpha_rep = 1e7;
   options.gravity = {0.0, -9.81};
   const auto positions =
       erp::fill_lattice({0, 0}, l0, {{{0, 0}, {0.3, 0}, {0.3, 0.4}, {0, 0.4}}}, {}, &walls);
@@ -503,10 +504,10 @@ TEST_CASE("emps: with the wall-gap limit no step carries a fast splash through t
   erp::WallSet walls;
   walls.add_polyline(open_tank(1.0, 1.0), false, 0);
   auto options = water(l0);
-  options.alpha_rep = 1e7;
+  options.wall.contact.alpha_rep = 1e7;
   options.sound_speed = 19.8;
   auto drop = [&](double gap, double r0, long* limited) {
-    options.wall_gap_courant = gap;
+    options.wall.gap_courant = gap;
     emps::EmpsFluid fluid(options, {{0.5, r0}}, walls);
     fluid.set_velocities({Vec2(0.0, -u)});
     double t = 0.0, r = r0;
@@ -538,7 +539,7 @@ TEST_CASE("emps: with the wall-gap limit no step carries a fast splash through t
   CHECK(crossed > 20);
 
   // The limit is part of the state: a checkpoint taken while it binds gives the same next step.
-  options.wall_gap_courant = c_gap;
+  options.wall.gap_courant = c_gap;
   emps::EmpsFluid fluid(options, {{0.5, 2.0 * l0}}, walls);
   fluid.set_velocities({Vec2(0.0, -u)});
   for (double t = 0.0; fluid.gap_limited_steps() == 0;) {
@@ -568,12 +569,13 @@ TEST_CASE("emps: eq. 27 stops a particle below sqrt(2 alpha/rho h ln 1000), the 
   erp::WallSet walls;
   walls.add_polyline(open_tank(1.0, 1.0), false, 0);
   auto options = water(l0);
-  options.alpha_rep = 1e7;
+  options.wall.contact.alpha_rep = 1e7;
   options.sound_speed = 19.8;
-  options.wall_gap_courant = 0.05;
-  const double u_max = std::sqrt(2.0 * options.alpha_rep / options.density * h * std::log(1e3));
+  options.wall.gap_courant = 0.05;
+  const double u_max =
+      std::sqrt(2.0 * options.wall.contact.alpha_rep / options.density * h * std::log(1e3));
   auto lands = [&](double u, emps::WallContact contact) {
-    options.wall_contact = contact;
+    options.wall.contact.model = contact;
     emps::EmpsFluid fluid(options, {{0.5, 2.0 * l0}}, walls);
     fluid.set_velocities({Vec2(0.0, -u)});
     try {

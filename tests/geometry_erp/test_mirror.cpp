@@ -37,14 +37,15 @@ TEST_CASE("erp: mirror of a point across a segment: other side, same distance", 
   WallHits hits;
   locator->query(p, hits);
   for (std::size_t i = 0; i < p.size(); ++i) {
-    REQUIRE(hits.segment[i] == 0);
-    const Vec2 x_mirror = mirror_position(p[i], hits.x_wall[i]);
-    CHECK_THAT((x_mirror - hits.x_wall[i]).dot(n_seg),
-               WithinAbs(-(p[i] - hits.x_wall[i]).dot(n_seg), 1e-14));
-    CHECK_THAT((x_mirror - hits.x_wall[i]).norm(), WithinAbs(hits.r[i], 1e-14));
+    REQUIRE(hits.face[0].segment[i] == 0);
+    const Vec2 x_mirror = mirror_position(p[i], hits.face[0].x_wall[i]);
+    CHECK_THAT((x_mirror - hits.face[0].x_wall[i]).dot(n_seg),
+               WithinAbs(-(p[i] - hits.face[0].x_wall[i]).dot(n_seg), 1e-14));
+    CHECK_THAT((x_mirror - hits.face[0].x_wall[i]).norm(), WithinAbs(hits.face[0].r[i], 1e-14));
     // The reflection about the wall line maps the particle onto its mirror (eq. 21 and 23).
-    CHECK((hits.x_wall[i] + R_ref(hits.n_wall[i]) * (p[i] - hits.x_wall[i]) - x_mirror).norm() <
-          1e-14);
+    CHECK((hits.face[0].x_wall[i] +
+           R_ref(hits.face[0].n_wall[i]) * (p[i] - hits.face[0].x_wall[i]) - x_mirror)
+              .norm() < 1e-14);
   }
 }
 

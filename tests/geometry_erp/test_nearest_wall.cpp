@@ -110,24 +110,26 @@ TEST_CASE("erp: nearest wall: both back-ends agree with brute force on random po
         const Vec2& p = particles[i];
         const Brute brute = brute_force(walls, p);
         if (brute.r >= r_e * (1.0 - 1e-12)) {
-          if (brute.r > r_e * (1.0 + 1e-12)) REQUIRE(hits.segment[i] == -1);
+          if (brute.r > r_e * (1.0 + 1e-12)) REQUIRE(hits.face[0].segment[i] == -1);
           continue;
         }
-        REQUIRE(hits.segment[i] >= 0);
+        REQUIRE(hits.face[0].segment[i] >= 0);
         ++checked;
-        REQUIRE_THAT(hits.r[i], WithinAbs(brute.r, 1e-12));
-        REQUIRE((hits.x_wall[i] - brute.x_wall).norm() < 1e-12);
-        REQUIRE_THAT(hits.n_wall[i].norm(), WithinAbs(1.0, 1e-12));
+        REQUIRE_THAT(hits.face[0].r[i], WithinAbs(brute.r, 1e-12));
+        REQUIRE((hits.face[0].x_wall[i] - brute.x_wall).norm() < 1e-12);
+        REQUIRE_THAT(hits.face[0].n_wall[i].norm(), WithinAbs(1.0, 1e-12));
         // Wall velocity and acceleration: linear along the segment that was found.
-        const auto [a, b] = walls.segments().node[static_cast<std::size_t>(hits.segment[i])];
-        const double t = hits.t[i];
+        const auto [a, b] =
+            walls.segments().node[static_cast<std::size_t>(hits.face[0].segment[i])];
+        const double t = hits.face[0].t[i];
         const auto& v = walls.nodes().v;
-        REQUIRE((hits.v_wall[i] -
+        REQUIRE((hits.face[0].v_wall[i] -
                  ((1.0 - t) * v[static_cast<std::size_t>(a)] + t * v[static_cast<std::size_t>(b)]))
                     .norm() < 1e-14);
-        REQUIRE((hits.x_wall[i] - ((1.0 - t) * walls.nodes().x[static_cast<std::size_t>(a)] +
-                                   t * walls.nodes().x[static_cast<std::size_t>(b)]))
-                    .norm() < 1e-12);
+        REQUIRE(
+            (hits.face[0].x_wall[i] - ((1.0 - t) * walls.nodes().x[static_cast<std::size_t>(a)] +
+                                       t * walls.nodes().x[static_cast<std::size_t>(b)]))
+                .norm() < 1e-12);
 
         if (i >= first_vertex && i < first_on_segment) {
           // Exactly on a vertex: distance 0, the angle-weighted pseudo-normal, not crossed.
@@ -135,21 +137,22 @@ TEST_CASE("erp: nearest wall: both back-ends agree with brute force on random po
           const Vec2 pseudo = (left_normal(points[(k + n - 1) % n], points[k]) +
                                left_normal(points[k], points[(k + 1) % n]))
                                   .normalized();
-          REQUIRE(hits.r[i] == 0.0);
-          REQUIRE((hits.n_wall[i] - pseudo).norm() < 1e-12);
+          REQUIRE(hits.face[0].r[i] == 0.0);
+          REQUIRE((hits.face[0].n_wall[i] - pseudo).norm() < 1e-12);
           REQUIRE(hits.crossed[i] == 0);
           ++on_vertex;
         } else if (i >= first_on_segment) {
           // On a segment: the segment's fluid normal, not crossed.
           const std::size_t k = i - first_on_segment;
-          REQUIRE(hits.r[i] < 1e-12);
-          REQUIRE(
-              (hits.n_wall[i] - left_normal(points[k], points[(k + 1) % points.size()])).norm() <
-              1e-12);
+          REQUIRE(hits.face[0].r[i] < 1e-12);
+          REQUIRE((hits.face[0].n_wall[i] - left_normal(points[k], points[(k + 1) % points.size()]))
+                      .norm() < 1e-12);
           REQUIRE(hits.crossed[i] == 0);
           ++on_segment;
         } else {
-          REQUIRE((hits.n_wall[i] - (p - hits.x_wall[i]) / hits.r[i]).norm() < 1e-12); // eq. 19
+          REQUIRE(
+              (hits.face[0].n_wall[i] - (p - hits.face[0].x_wall[i]) / hits.face[0].r[i]).norm() <
+              1e-12); // eq. 19
           const auto side = CGAL::bounded_side_2(cgal_polygon.begin(), cgal_polygon.end(),
                                                  Kernel::Point_2(p.x(), p.y()), Kernel());
           REQUIRE(side != CGAL::ON_BOUNDARY);
@@ -178,20 +181,20 @@ TEST_CASE("erp: nearest wall: convex and concave corners of a tank", "[nearest]"
     const std::vector<Vec2> p{{0.1, 0.05}, {-0.1, -0.1}, {0.9, 0.9}, {1.1, 1.2}, {1.1, 1.1}};
     locator->query(p, hits);
     // Near the bottom wall.
-    CHECK(hits.segment[0] == 0);
-    CHECK_THAT(hits.r[0], WithinAbs(0.05, 1e-15));
-    CHECK((hits.n_wall[0] - Vec2(0, 1)).norm() < 1e-15);
+    CHECK(hits.face[0].segment[0] == 0);
+    CHECK_THAT(hits.face[0].r[0], WithinAbs(0.05, 1e-15));
+    CHECK((hits.face[0].n_wall[0] - Vec2(0, 1)).norm() < 1e-15);
     CHECK(hits.crossed[0] == 0);
     // Outside the convex corner (0, 0): nearest is the vertex, crossed.
-    CHECK((hits.x_wall[1] - Vec2(0, 0)).norm() < 1e-15);
+    CHECK((hits.face[0].x_wall[1] - Vec2(0, 0)).norm() < 1e-15);
     CHECK(hits.crossed[1] == 1);
     // Inside near the concave corner: nearest is the corner, pointing into the fluid.
-    CHECK((hits.x_wall[2] - Vec2(1, 1)).norm() < 1e-15);
-    CHECK_THAT(hits.r[2], WithinAbs(0.1 * std::sqrt(2.0), 1e-15));
+    CHECK((hits.face[0].x_wall[2] - Vec2(1, 1)).norm() < 1e-15);
+    CHECK_THAT(hits.face[0].r[2], WithinAbs(0.1 * std::sqrt(2.0), 1e-15));
     CHECK(hits.crossed[2] == 0);
     // Behind the concave corner, in the solid: crossed whichever wall is nearest.
     CHECK(hits.crossed[3] == 1);
-    CHECK_THAT(hits.r[3], WithinAbs(0.1, 1e-15));
+    CHECK_THAT(hits.face[0].r[3], WithinAbs(0.1, 1e-15));
     CHECK(hits.crossed[4] == 1);
   }
 }
@@ -220,10 +223,10 @@ TEST_CASE("erp: nearest wall: SoA overload, thread count and refit give the same
     locator->query(px, py, soa);
     int hits = 0;
     for (std::size_t i = 0; i < p.size(); ++i) {
-      REQUIRE(parallel.segment[i] == sequential.segment[i]);
-      REQUIRE(parallel.segment[i] == soa.segment[i]);
-      REQUIRE(parallel.r[i] == soa.r[i]);
-      hits += parallel.segment[i] >= 0;
+      REQUIRE(parallel.face[0].segment[i] == sequential.face[0].segment[i]);
+      REQUIRE(parallel.face[0].segment[i] == soa.face[0].segment[i]);
+      REQUIRE(parallel.face[0].r[i] == soa.face[0].r[i]);
+      hits += parallel.face[0].segment[i] >= 0;
     }
     CHECK(hits > 1000);
 
@@ -237,8 +240,9 @@ TEST_CASE("erp: nearest wall: SoA overload, thread count and refit give the same
     moved_locator->query(p, after);
     for (std::size_t i = 0; i < p.size(); i += 7) {
       const Brute brute = brute_force(moved, p[i]);
-      if (brute.r < 0.4 * (1.0 - 1e-12)) REQUIRE_THAT(after.r[i], WithinAbs(brute.r, 1e-12));
-      if (brute.r > 0.4 * (1.0 + 1e-12)) REQUIRE(after.segment[i] == -1);
+      if (brute.r < 0.4 * (1.0 - 1e-12))
+        REQUIRE_THAT(after.face[0].r[i], WithinAbs(brute.r, 1e-12));
+      if (brute.r > 0.4 * (1.0 + 1e-12)) REQUIRE(after.face[0].segment[i] == -1);
     }
   }
 }
@@ -251,12 +255,12 @@ TEST_CASE("erp: nearest wall: an empty wall set or a far particle gives no hit",
   for (const LocatorKind kind : {LocatorKind::grid, LocatorKind::aabb_tree}) {
     WallHits hits;
     make_wall_locator(empty, 0.3, kind)->query(p, hits);
-    for (std::size_t i = 0; i < p.size(); ++i) CHECK(hits.segment[i] == -1);
+    for (std::size_t i = 0; i < p.size(); ++i) CHECK(hits.face[0].segment[i] == -1);
     make_wall_locator(one, 0.3, kind)->query(p, hits);
-    CHECK(hits.segment[0] == 0);
-    CHECK_THAT(hits.r[0], WithinAbs(0.2, 1e-15));
-    CHECK(hits.segment[1] == -1);
-    CHECK(std::isinf(hits.r[1]));
-    CHECK(hits.segment[2] == -1);
+    CHECK(hits.face[0].segment[0] == 0);
+    CHECK_THAT(hits.face[0].r[0], WithinAbs(0.2, 1e-15));
+    CHECK(hits.face[0].segment[1] == -1);
+    CHECK(std::isinf(hits.face[0].r[1]));
+    CHECK(hits.face[0].segment[2] == -1);
   }
 }

@@ -61,25 +61,26 @@ TEST_CASE("erp: second face: both back-ends agree with brute force", "[nearest]"
     for (int k = 0; k < 200; ++k) particles.push_back(Vec2(2.4 * u(rng) - 1.2, 2.4 * u(rng) - 1.2));
     for (const LocatorKind kind : {LocatorKind::grid, LocatorKind::aabb_tree}) {
       auto locator = make_wall_locator(walls, r_e, kind);
-      locator->set_second_face(true);
+      locator->set_corner_faces(true);
       WallHits hits;
       locator->query(particles, hits);
       for (std::size_t i = 0; i < particles.size(); ++i) {
-        if (hits.segment[i] < 0) {
-          REQUIRE(hits.segment2[i] == -1);
+        if (hits.face[0].segment[i] < 0) {
+          REQUIRE(hits.face[1].segment[i] == -1);
           continue;
         }
-        const Face face =
-            brute_second_face(walls, particles[i], hits.segment[i], hits.n_wall[i], r_e);
-        REQUIRE(hits.segment2[i] == face.segment);
+        const Face face = brute_second_face(walls, particles[i], hits.face[0].segment[i],
+                                            hits.face[0].n_wall[i], r_e);
+        REQUIRE(hits.face[1].segment[i] == face.segment);
         if (face.segment < 0) {
           ++without;
           continue;
         }
         ++with_face;
-        REQUIRE_THAT(hits.r2[i], WithinAbs(face.r, 1e-12));
-        REQUIRE_THAT((particles[i] - hits.x_wall2[i]).norm(), WithinAbs(face.r, 1e-12));
-        REQUIRE((hits.n_wall2[i] - (particles[i] - hits.x_wall2[i]) / face.r).norm() < 1e-12);
+        REQUIRE_THAT(hits.face[1].r[i], WithinAbs(face.r, 1e-12));
+        REQUIRE_THAT((particles[i] - hits.face[1].x_wall[i]).norm(), WithinAbs(face.r, 1e-12));
+        REQUIRE((hits.face[1].n_wall[i] - (particles[i] - hits.face[1].x_wall[i]) / face.r).norm() <
+                1e-12);
       }
     }
   }
@@ -98,19 +99,19 @@ TEST_CASE("erp: second face: a rectangular tank's corner has two faces, a straig
     WallHits hits;
     const std::vector<Vec2> p{{0.1, 0.05}, {0.5, 0.05}, {0.45, 0.1}, {0.95, 0.5}};
     locator->query(p, hits);
-    CHECK(hits.segment2[0] == -1); // not asked for
-    locator->set_second_face(true);
+    CHECK(hits.face[1].segment[0] == -1); // not asked for
+    locator->set_corner_faces(true);
     locator->query(p, hits);
     // Near the bottom-left corner: the floor first, the left wall second.
-    CHECK(hits.segment[0] == 1);
-    CHECK(hits.segment2[0] == 0);
-    CHECK_THAT(hits.r2[0], WithinAbs(0.1, 1e-15));
-    CHECK((hits.n_wall2[0] - Vec2(1, 0)).norm() < 1e-15);
+    CHECK(hits.face[0].segment[0] == 1);
+    CHECK(hits.face[1].segment[0] == 0);
+    CHECK_THAT(hits.face[1].r[0], WithinAbs(0.1, 1e-15));
+    CHECK((hits.face[1].n_wall[0] - Vec2(1, 0)).norm() < 1e-15);
     // Over the joint of the two floor segments, and beside it: one face only.
-    CHECK(hits.segment2[1] == -1);
-    CHECK(hits.segment2[2] == -1);
+    CHECK(hits.face[1].segment[1] == -1);
+    CHECK(hits.face[1].segment[2] == -1);
     // Beside the right wall, far from the floor: one face.
-    CHECK(hits.segment2[3] == -1);
+    CHECK(hits.face[1].segment[3] == -1);
   }
 }
 
@@ -126,8 +127,8 @@ TEST_CASE("erp: nearest wall: a particle beyond the free end of an open wall is 
     WallHits hits;
     const std::vector<Vec2> p{{-3e-6, 0.824}, {-0.01, 0.7}, {0.01, 0.81}};
     locator->query(p, hits);
-    CHECK(hits.segment[0] == 0);
-    CHECK((hits.x_wall[0] - Vec2(0, 0.8)).norm() < 1e-15);
+    CHECK(hits.face[0].segment[0] == 0);
+    CHECK((hits.face[0].x_wall[0] - Vec2(0, 0.8)).norm() < 1e-15);
     CHECK(hits.crossed[0] == 0); // above the free end
     CHECK(hits.crossed[1] == 1); // beside the wall, on its solid side
     CHECK(hits.crossed[2] == 0); // inside, above the end

@@ -42,10 +42,8 @@ void FluidAdapter::project() {
       point_loads_.push_back(
           {static_cast<std::size_t>(iw.edge(s)), iw.parent_coordinate(s, t), -f});
     };
-    for (std::size_t i = 0; i < w.segment.size(); ++i) {
-      add(w.segment[i], w.t[i], w.f[i]);
-      add(w.segment2[i], w.t2[i], w.f2[i]);
-    }
+    for (std::size_t i = 0; i < w.size(); ++i)
+      for (const emps::FaceForces& f : w.face) add(f.segment[i], f.t[i], f.f[i]);
     part_.f.assign(static_cast<std::size_t>(iw.node_count()), Vec2::Zero()); // keeps capacity
     coupling::project_point_loads(iw.mesh(), point_loads_, part_);
     std::copy(part_.f.begin(), part_.f.end(),

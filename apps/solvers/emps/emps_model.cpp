@@ -1,6 +1,7 @@
 #include "emps/emps_model.hpp"
 
 #include "fsi/core/error.hpp"
+#include "fsi_app/output/json_options.hpp"
 #include "fsi_app/wall_motion.hpp"
 #include "particles/kernels.hpp"
 
@@ -150,8 +151,12 @@ void EmpsModel::report(JsonObject& run) const {
       .add("mean_neighbours", fluid_->mean_neighbours())
       .add("n0", fluid_->n0())
       .add("neighbour_list_builds", static_cast<long long>(fluid_->neighbour_builds()));
-  if (fluid_->options().wall_gap_courant > 0)
+  if (fluid_->options().wall.gap_courant > 0)
     f.add("wall_gap_limited_steps", static_cast<long long>(fluid_->gap_limited_steps()));
+  emps::WallOptions wall = fluid_->options().wall; // the visitor takes its members by reference
+  JsonOptions wall_model;
+  emps::visit_options(wall, wall_model);
+  f.add("wall_model", wall_model.object);
   const emps::StepTimes& t = fluid_->times();
   JsonObject seconds; // this process's wall seconds per part of the fluid's step
   seconds.add("neighbours", t.neighbours)

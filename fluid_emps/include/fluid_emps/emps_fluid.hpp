@@ -13,14 +13,14 @@
 #include "fluid_emps/options.hpp"
 #include "fluid_emps/pair_sums.hpp"
 #include "fluid_emps/particles.hpp"
-#include "geometry_erp/convex_corner.hpp"
+#include "fluid_emps/wall_terms.hpp"
 #include "geometry_erp/wall_locator.hpp"
 #include "geometry_erp/wall_set.hpp"
-#include "geometry_erp/wall_weight.hpp"
 #include "particles/cell_grid.hpp"
 #include "particles/kernels.hpp"
 #include "particles/neighbor_list.hpp"
 
+#include <array>
 #include <limits>
 #include <memory>
 #include <string>
@@ -32,18 +32,31 @@ class StateArchive;
 
 namespace fsi::emps {
 
-/// Per-particle wall force of the last step (eq. 52, wall parts only: the two mirror terms and
-/// the repulsive term, times V_i). The structure receives -f at x_wall on `segment`; a particle
-/// near a concave corner may also push on a second face (segment2, t2, x_wall2, f2).
-/// f = f_pressure + f_contact + f_viscous on each face: f_contact is V times the repulsive
-/// term (eq. 27, with the wall-normal damping of WallContact::damped), f_viscous the viscous
-/// mirror term (eq. 24, with wall_approach_viscosity's term); the rest is the pressure mirror
-/// term (eqs. 25-26).
+/// Per-particle wall force of the last step on one face (eq. 52, wall parts only: the two mirror
+/// terms and the repulsive term, times V_i). The structure receives -f at x_wall on `segment`
+/// (-1 where the particle has no such face). f = f_pressure + f_contact + f_viscous: f_contact is
+/// V times the contact term (eq. 27, with the wall-normal damping of WallContact::damped),
+/// f_viscous the viscous mirror term (eq. 24, with wall_approach_viscosity's term); the rest is
+/// the pressure mirror term (eqs. 25-26).
+struct FaceForces {
+  std::vector<int> segment;
+  std::vector<double> t; ///< local coordinate of x_wall on the segment
+  std::vector<Vec2> x_wall, f, f_contact, f_viscous;
+  void resize(std::size_t n) {
+    segment.resize(n);
+    t.resize(n);
+    for (auto* v : {&x_wall, &f, &f_contact, &f_viscous}) v->resize(n);
+  }
+};
+
+/// The wall forces of every face a particle has (erp::WallHits: face 0 the nearest wall, the
+/// others those of a concave corner).
 struct WallForces {
-  std::vector<int> segment, segment2; ///< -1 where there is no such wall within r_e
-  std::vector<double> t, t2;          ///< local coordinate of x_wall on the segment
-  std::vector<Vec2> x_wall, f, x_wall2, f2;
-  std::vector<Vec2> f_contact, f_contact2, f_viscous, f_viscous2; ///< parts of f, f2
+  std::array<FaceForces, erp::max_faces> face;
+  void resize(std::size_t n) {
+    for (FaceForces& f : face) f.resize(n);
+  }
+  std::size_t size() const { return face[0].segment.size(); }
 };
 
 /// The force of the fluid on a set of wall segments (what the walls receive, -sum f), N per m
@@ -125,35 +138,15 @@ private:
     return {neighbours_.row(i), neighbours_.count(i), particles_.x[i], particles_.y[i], re2_,
             w_e_.inv_re};
   }
-  /// The pressure gradient's kernels on particle i: fluid-fluid pairs (eq. 10), and the wall
-  /// terms of each face (eqs. 25-27) with their contact part.
+  /// The fluid-fluid part of the pressure gradient on particle i (eq. 10).
   Vec2 fluid_gradient(std::size_t i, double* shepard) const;
-  struct WallGradient {
-    Vec2 wall1 = Vec2::Zero(), wall2 = Vec2::Zero(), contact1 = Vec2::Zero(),
-         contact2 = Vec2::Zero();
-  };
-  WallGradient wall_gradient(std::size_t i, double dt, double p_mirror) const;
   void check_finite(long step, double t) const;
-  bool behind(std::uint32_t j, const Vec2& x_wall, const Vec2& n_wall) const;
-  Vec2 mirror_gradient(std::size_t i, const Vec2& x_wall, const Vec2& n_wall,
-                       double p_mirror) const;
-  struct MirrorViscous {
-    Vec2 laplacian, approach;
-  };
-  MirrorViscous mirror_viscous(std::size_t i, const Vec2& x_wall, const Vec2& n_wall,
-                               const Vec2& v_wall, bool approach) const;
-  Vec2 repulsion(double r, const Vec2& n_wall) const;
-  Vec2 normal_damping(std::size_t i, double r, const Vec2& n_wall, const Vec2& v_wall,
-                      double dt) const;
-  double corner_overlap(std::size_t i) const;
-  erp::ConvexPart convex_part(std::size_t i) const;
   void remove_outside();
   double wall_gap_dt() const;
   void damp(double t, double dt);
 
   FluidOptions options_;
   std::unique_ptr<erp::WallLocator> locator_;
-  erp::WallWeightTable z_;
   double r_e_, n0_, lambda0_;
   particles::MpsWeight w_e_; ///< w(r) of eq. 8 at r_e
   double re2_;               ///< r_e^2 (the pair loops test r^2 < r_e^2)
@@ -161,9 +154,10 @@ private:
   particles::CellGrid grid_;
   particles::NeighborList neighbours_;
   erp::WallHits hits_;
+  WallTerms walls_; ///< the wall terms over particles_, grid_ and hits_
   WallForces wall_forces_;
-  std::vector<double> scratch_;              // per-particle work array
-  std::vector<Vec2> visc_wall_, visc_wall2_; // viscous wall force of each face (eq. 52)
+  std::vector<double> scratch_;                             // per-particle work array
+  std::array<std::vector<Vec2>, erp::max_faces> visc_wall_; // viscous wall force of each face
   std::vector<std::uint8_t> keep_;
   std::size_t capacity_;
   long step_ = 0, layout_ = 0, builds_ = 0;

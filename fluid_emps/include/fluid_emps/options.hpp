@@ -30,6 +30,52 @@ enum class WallContact { paper, damped, viscous };
 ///   particle pressed against it by the pressure around it (a wall force, sent to the structure).
 enum class WallPressure { own, neighbours };
 
+/// The wall part of pnd (eq. 20).
+struct WallPndOptions {
+  WallDensity density = WallDensity::added;
+};
+
+/// The mirror terms (eqs. 23-26) and the approach viscosity across the wall.
+struct MirrorOptions {
+  WallCondition condition = WallCondition::no_slip; ///< the mirror velocity of eq. 24
+  WallPressure pressure = WallPressure::own;        ///< p_i' of eqs. 25-26
+  /// The mirror sums over the real neighbours of x_i' on the particle's side of its wall only,
+  /// (x_j - x_wall) . n_wall >= 0. false: every neighbour within r_e, as in the paper, which
+  /// across a wall thinner than about 2 r_e reflects the fluid on the far side into the
+  /// particle's own side.
+  bool same_side = false;
+  /// alpha_w of the closing-pair viscosity alpha_w c l0 between a particle and the mirror images
+  /// of its neighbours that close in across a wall (a wall force; 0: off).
+  double approach_viscosity = 0.0;
+};
+
+/// Contact of particles with walls: the repulsive term (eq. 27) and what WallContact adds.
+struct WallContactOptions {
+  double alpha_rep = 0.0; ///< repulsive coefficient of eq. 27, N/m^3
+  WallContact model = WallContact::paper;
+  double damping = 1.0;    ///< damped: gamma in units of c / l0
+  double viscosity = 0.05; ///< viscous: alpha of the near-wall closing-pair viscosity
+};
+
+/// The wall model: which faces act on a particle and the options of each wall term.
+struct WallOptions {
+  /// At concave corners also apply the other faces (z, mirror terms and repulsion of the nearest
+  /// other face, geometry_erp's corner faces). false: the paper's nearest wall only (eq. 18),
+  /// which leaks particles into 90-degree tank corners.
+  bool corner_faces = true;
+  /// At convex corners count the solid's own virtual lattice (a wedge) in pnd and in the wall
+  /// pressure term, not the half-plane that eqs. 20 and 25 assume. false: the paper's equations,
+  /// which over-count pnd by up to 17 % of n0 beside a right-angle convex corner and drive a jet
+  /// away from it.
+  bool convex_corners = true;
+  WallPndOptions pnd;
+  MirrorOptions mirror;
+  WallContactOptions contact;
+  /// C_gap: a step closes at most C_gap of any particle's gap to a wall it approaches,
+  /// dt <= C_gap r / (-(v - v_wall) . n_wall) (0: off, the Courant and viscous limits alone).
+  double gap_courant = 0.0;
+};
+
 struct FluidOptions {
   double density = 1000.0;  ///< rho, kg/m^3
   double viscosity = 0.0;   ///< kinematic nu, m^2/s; 0 skips the viscous loop entirely
@@ -37,35 +83,9 @@ struct FluidOptions {
   double re_over_l0 = 3.1;  ///< effective radius r_e / l0
   double sound_speed = 0.0; ///< c of eq. 15, m/s
   double beta = 1.0;        ///< free-surface threshold n* < beta n0 (eq. 17)
-  double alpha_rep = 0.0;   ///< repulsive coefficient of eq. 27, N/m^3
   /// alpha of an artificial viscosity alpha c l0 on closing pairs (not in the paper; 0: off).
   double artificial_viscosity = 0.0;
-  WallContact wall_contact = WallContact::paper;
-  double wall_damping = 1.0;    ///< damped: gamma in units of c / l0
-  double wall_viscosity = 0.05; ///< viscous: alpha of the near-wall closing-pair viscosity
-  WallPressure wall_pressure = WallPressure::own;
-  /// alpha of the closing-pair viscosity alpha c l0 between a particle and the mirror images of
-  /// its neighbours that close in across a wall (a wall force; 0: off).
-  double wall_approach_viscosity = 0.0;
-  /// C_gap: a step closes at most C_gap of any particle's gap to a wall it approaches,
-  /// dt <= C_gap r / (-(v - v_wall) . n_wall) (0: off, the Courant and viscous limits alone).
-  double wall_gap_courant = 0.0;
-  WallCondition wall_condition = WallCondition::no_slip;
-  WallDensity wall_density = WallDensity::added;
-  /// At concave corners also apply the second wall face (z, mirror terms and repulsion of the
-  /// nearest other face, geometry_erp's second face). false: the paper's nearest wall only
-  /// (eq. 18), which leaks particles into 90-degree tank corners.
-  bool corner_faces = true;
-  /// At convex corners count the solid's own virtual lattice (a wedge) in pnd and in the wall
-  /// pressure term, not the half-plane that eqs. 20 and 25 assume. false: the paper's equations,
-  /// which over-count pnd by up to 17 % of n0 beside a right-angle convex corner and drive a jet
-  /// away from it.
-  bool convex_corners = true;
-  /// The mirror sums (eqs. 24-26) over the real neighbours of x_i' on the particle's side of its
-  /// wall only, (x_j - x_wall) . n_wall >= 0. false: every neighbour within r_e, as in the paper,
-  /// which across a wall thinner than about 2 r_e reflects the fluid on the far side into the
-  /// particle's own side.
-  bool mirror_same_side = false;
+  WallOptions wall;
   Vec2 gravity = Vec2::Zero();
   double damping_time = 0.0; ///< T_d: velocities damped at rate 20/T_d (1 - t/T_d) for t < T_d
   Vec2 domain_min = Vec2::Zero(), domain_max = Vec2::Zero(); ///< outside: removed and counted
@@ -75,11 +95,21 @@ struct FluidOptions {
 
   double r_e() const { return re_over_l0 * l0; }
   double volume() const { return l0 * l0; } ///< V_i = l0^d (eq. 43)
+  /// alpha of every closing-pair viscosity alpha c l0 the step applies (artificial, approach,
+  /// near-wall contact): the viscous time-step limit counts their sum.
+  double pair_viscosity_alpha() const {
+    return artificial_viscosity + wall.mirror.approach_viscosity +
+           (wall.contact.model == WallContact::viscous ? wall.contact.viscosity : 0.0);
+  }
+  /// Whether the step runs its viscous loop (eqs. 11, 24, and the closing-pair viscosities).
+  bool viscous_loop() const { return viscosity > 0 || pair_viscosity_alpha() > 0; }
 };
 
 /// The options a user sets, each once: key, member, range, doc; the member's initial value is the
 /// default (density, l0 and sound_speed have none). Gravity, domain, reordering, the list skin and
 /// the vector kernels are set by the caller.
 void visit_options(FluidOptions& options, OptionVisitor& visitor);
+/// The wall model's keys alone (a part of the above).
+void visit_options(WallOptions& options, OptionVisitor& visitor);
 
 } // namespace fsi::emps

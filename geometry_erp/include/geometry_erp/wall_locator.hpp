@@ -17,42 +17,55 @@
 // Equally near segments are resolved towards the lower segment index, so results do not depend
 // on the back-end or the thread count.
 //
-// Second face (optional, an extension of eq. 18 for concave corners): near a corner the nearest
+// Corner faces (optional, an extension of eq. 18 for concave corners): near a corner the nearest
 // wall alone leaves the other wall's half of the support empty, and particles leak into the
-// corner. With set_second_face(true) each hit also reports the nearest OTHER face within r_e:
-// a segment whose nearest point is strictly inside it (not at a node, so the next segment of the
-// same polyline never counts), with the particle on its fluid side, and whose normal differs from
-// n_wall by more than 30 degrees (so the gentle turns of a curved wall never count).
+// corner. With set_corner_faces(true) each hit also reports, as face k = 1, 2, ... < max_faces,
+// the nearest OTHER face within r_e: a segment whose nearest point is strictly inside it (not at
+// a node, so the next segment of the same polyline never counts), not one of faces 0..k-1, with
+// the particle on its fluid side, and whose normal differs from each of faces 0..k-1's n_wall by
+// more than 30 degrees (so the gentle turns of a curved wall never count).
 #include "fsi/core/types.hpp"
 #include "geometry_erp/wall_set.hpp"
 
+#include <array>
 #include <memory>
 #include <span>
 #include <vector>
 
 namespace fsi::erp {
 
-/// Query results, one entry per particle (struct-of-arrays). For a particle with no wall within
-/// r_e, segment = -1, r = +inf, crossed = 0 and the other fields are left unchanged.
-struct WallHits {
+/// Faces a particle's wall terms can take: the nearest wall (eq. 18) and, at a concave corner of
+/// the plane, one other face.
+inline constexpr std::size_t max_faces = 2;
+
+/// One face of every particle (struct-of-arrays): the segment (-1: none), the local coordinate t
+/// of x_wall on it, the distance r, the wall point, the normal from the wall to the particle and
+/// the wall velocity there.
+struct FaceHits {
   std::vector<int> segment;
   std::vector<double> t, r;
-  std::vector<Vec2> x_wall, n_wall, v_wall, a_wall;
+  std::vector<Vec2> x_wall, n_wall, v_wall;
+  void resize(std::size_t n);
+};
+
+/// Query results, one entry per particle. face[0] is the nearest wall; for a particle with no
+/// wall within r_e, its segment = -1, r = +inf, crossed = 0 and the other fields are left
+/// unchanged. face[k >= 1] are the corner faces (see above), segment = -1 where there is none or
+/// the query did not ask; a_wall and crossed belong to face[0].
+struct WallHits {
+  std::array<FaceHits, max_faces> face;
+  std::vector<Vec2> a_wall;
   std::vector<unsigned char> crossed;
-  /// Second face (see above); segment2 = -1 where there is none or the query did not ask.
-  std::vector<int> segment2;
-  std::vector<double> t2, r2;
-  std::vector<Vec2> x_wall2, n_wall2, v_wall2;
   /// Grows every array to n (no allocation once warmed up to the largest n).
   void resize(std::size_t n);
-  std::size_t size() const { return segment.size(); }
+  std::size_t size() const { return face[0].segment.size(); }
 };
 
 /// Distance below which a particle counts as on the wall, as a fraction of r_e.
 inline constexpr double on_wall_tolerance = 1e-10;
 
-/// A second face must turn by more than this from the first: cos 30 degrees.
-inline constexpr double second_face_max_cos = 0.8660254037844387;
+/// A corner face must turn by more than this from the faces before it: cos 30 degrees.
+inline constexpr double corner_face_max_cos = 0.8660254037844387;
 
 enum class LocatorKind { grid, aabb_tree };
 
@@ -88,9 +101,9 @@ public:
     locate(QueryPoints(x, y), hits);
   }
 
-  /// Also report the second face of concave corners (off by default).
-  void set_second_face(bool on) { second_face_ = on; }
-  bool second_face() const { return second_face_; }
+  /// Also report the other faces of concave corners (off by default).
+  void set_corner_faces(bool on) { corner_faces_ = on; }
+  bool corner_faces() const { return corner_faces_; }
   double r_e() const { return r_e_; }
   const WallSet& walls() const { return *walls_; }
 
@@ -100,7 +113,7 @@ protected:
   virtual void locate(const QueryPoints& points, WallHits& hits) const = 0;
   const WallSet* walls_;
   double r_e_;
-  bool second_face_ = false;
+  bool corner_faces_ = false;
 };
 
 /// A locator of the given kind, already updated.
