@@ -215,6 +215,17 @@ def m_growth(run, q, _others, _spec):
     return {"value": max(after) / after[0]}
 
 
+def m_decay(run, q, _others, _spec):
+    """Mean of a probe over the window over its mean over the window `before` (an energy that
+    oscillates as it falls)."""
+    now = inside(run, q)
+    then = inside(run, dict(q, window=q["before"]))
+    mean_then = sum(v for _, v in then) / len(then)
+    if mean_then <= 0:
+        raise AcceptanceError(f"{run.path}: {q['probe']}: mean over {q['before']} not positive")
+    return {"value": (sum(v for _, v in now) / len(now)) / mean_then}
+
+
 def m_oscillation(run, q, _others, _spec):
     """oscillation.measure over whole cycles in the window: mean, amplitude, frequency."""
     t, v = run.series(q["probe"])
@@ -268,7 +279,7 @@ def m_regression(run, q, _others, spec):
 
 MEASURES = {"peak": m_peak, "mean": m_mean, "final": m_final, "gradient": m_gradient,
             "front": m_front, "front_agreement": m_front_agreement,
-            "still_water": m_still_water, "growth": m_growth, "oscillation": m_oscillation,
+            "still_water": m_still_water, "growth": m_growth, "decay": m_decay, "oscillation": m_oscillation,
             "regression": m_regression}
 
 
@@ -380,8 +391,9 @@ def print_rows(rows, out=sys.stdout):
     for r in rows:
         err = "" if r["error"] is None else f", error {100 * r['error']:+.2f} %"
         note = f"  ({r['note']})" if r.get("note") else ""
-        print(f"  {r['status']:16} {r['name']}: {fmt(r['value'], r['unit'])} against "
-              f"{r['reference']}{err}, band {r['band']}{note}", file=out)
+        ref = "" if r["reference"] in (r["band"], "-") else f" against {r['reference']}"
+        print(f"  {r['status']:16} {r['name']}: {fmt(r['value'], r['unit'])}{ref}{err}, "
+              f"band {r['band']}{note}", file=out)
 
 
 def main(argv=None):

@@ -91,7 +91,8 @@ def write_regression(spec, case, run, directory):
         f.write(f"# Our own run of case {case['id']} (scripts/validate --tier quick), for the\n"
                 f"# regression criteria of acceptance.yaml: fsi {run.info.get('git_revision', '?')},"
                 f" {run.info.get('start', '?')}, {run.info.get('threads', '?')} thread(s);\n"
-                f"# every {step}th sample of {directory}/probes.csv.\n")
+                f"# {'every sample' if step == 1 else f'one sample in {step}'} of "
+                f"{directory}/probes.csv.\n")
         w = csv.writer(f, lineterminator="\n")
         w.writerow(["time"] + probes)
         for r in kept:
