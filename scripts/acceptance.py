@@ -387,7 +387,8 @@ def failed(rows):
     return any(r["status"] == "FAIL" for r in rows)
 
 
-def print_rows(rows, out=sys.stdout):
+def print_rows(rows, out=None):
+    out = out or sys.stdout
     for r in rows:
         err = "" if r["error"] is None else f", error {100 * r['error']:+.2f} %"
         note = f"  ({r['note']})" if r.get("note") else ""
