@@ -369,10 +369,9 @@ def match_case(spec, tier, run):
 
 def pair_of(spec, case, run):
     overrides = set(run.info.get("overrides", []))
-    for name, sets in (spec.get("pairs") or {}).items():
-        if sets and all(f"{k}={v}" in overrides for k, v in sets.items()):
-            return name
-    return default_pair(spec, case)
+    matching = [(len(sets), name) for name, sets in (spec.get("pairs") or {}).items()
+                if sets and all(f"{k}={v}" in overrides for k, v in sets.items())]
+    return max(matching)[1] if matching else default_pair(spec, case)
 
 
 def evaluate(spec, tier, case, pair, run, others):
