@@ -240,7 +240,8 @@ def main(argv=None):
         wall = time.monotonic() - t0
         res = {"scene": spec["scene"], "case": case["id"], "pair": pair, "spec": spec,
                "case_spec": case, "dir": os.path.relpath(directory, ROOT), "wall": wall,
-               "command": shown([os.path.relpath(c, ROOT) if c == args.fsi else c for c in cmd]),
+               "command": shown([os.path.relpath(c, ROOT) if c in (args.fsi, directory) else c
+                                 for c in cmd]),
                "rows": [], "error": None, "commit": "?", "date": "?", "plot": None}
         if code != 0:
             res["error"] = f"fsi exited {code} (see {res['dir']}/fsi.log)"
