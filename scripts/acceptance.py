@@ -376,6 +376,13 @@ def pair_of(spec, case, run):
 
 def evaluate(spec, tier, case, pair, run, others):
     rows = []
+    status = run.info.get("status", "completed")
+    if status != "completed":
+        # A run that stopped early is judged as far as it went, and fails.
+        rows.append({"name": "run completed", "value": None, "unit": "", "reference": "-",
+                     "error": None, "band": "-", "status": "FAIL",
+                     "note": f"run.json: {status} at t = {run.info.get('simulated_time')} s: "
+                             f"{run.info.get('message', '')}"})
     for c in spec.get("criteria", []):
         if applies(c, tier, case["id"], pair):
             rows.append(judge(c, run, others, spec))

@@ -68,6 +68,16 @@ class AcceptanceTest(unittest.TestCase):
         self.assertRegex(out, r"PASS +mid_span, mean over the last 0.5 s, against the plane-strain")
         self.assertRegex(out, r"FAIL +regression, mid_span against our committed run: 2.\d\d %")
 
+    def test_a_run_that_stopped_early_fails(self):
+        d = plate("plate_stopped", 1.0)
+        with open(os.path.join(d, "run.json"), "w") as f:
+            json.dump({"name": "hydrostatic_plate", "scene": "data/scenes/hydrostatic_plate.yaml",
+                       "overrides": ["time.end=1.5"], "status": "interrupted",
+                       "simulated_time": 1.5, "message": "stopped by signal 15"}, f)
+        status, out = check(d, "--tier", "quick")
+        self.assertEqual(status, 1, out)
+        self.assertIn("FAIL             run completed", out)
+
     def test_a_run_of_no_case_and_a_missing_column_are_errors(self):
         d = plate("plate_other", 1.0)
         with open(os.path.join(d, "run.json"), "w") as f:
