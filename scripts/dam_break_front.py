@@ -5,7 +5,7 @@ Prints, at each experimental T with Z <= 3.5, the simulated Z and the relative d
 the largest difference; draws DIR/front.png. --release: the scene time at which the column is
 let go (a scene that settles it behind a gate first); T = 0 there.
 
-Acceptance (issue 16): the experiment's release was not instantaneous, so its clock is shifted
+Acceptance (data/ref/dam_break_rigid/acceptance.yaml): the experiment's release was not instantaneous, so its clock is shifted
 by one offset dT in [0, 0.3] (T units), the least-squares fit of the relative differences over
 the points with 1.2 <= Z <= 3.5; over those points the largest shifted difference must be
 <= --tolerance (5 %), and the front speed dZ/dT between Z = 2 and 3.5 (straight-line fits of
@@ -67,6 +67,68 @@ def fitted_shift(T, Z, points):
     return min(fine, key=cost)
 
 
+def reference(path=REF):
+    """The experiment's (T, Z) points, those judged (1.2 <= Z <= 3.5) and its front speed."""
+    ref = [(float(t), float(z)) for t, z in rows(path)[1:]]
+    points = [(t, z) for t, z in ref if 1.2 <= z <= 3.5]
+    speed_pts = [(t, z) for t, z in ref if 2.0 <= z <= 3.5]
+    speed_exp = slope([t for t, _ in speed_pts], [z for _, z in speed_pts])
+    return ref, points, speed_exp
+
+
+def measure(d, probe="front", release=0.0, a=0.1, g=9.81):
+    """The acceptance figures of one run directory against Martin & Moyce: a dict with T, Z (the
+    run), ref, shift (fitted dT), table (T_exp, Z_exp, Z_sim(T), Z_sim(T - dT), inside), worst and
+    worst_raw (largest shifted / unshifted relative difference over 1.2 <= Z <= 3.5), speed_sim,
+    speed_exp, speed_diff, and shifted (the run's unshifted Z at the judged points, for the
+    agreement between two runs)."""
+    scale = math.sqrt(2.0 * g / a)
+    ref, points, speed_exp = reference()
+    T, Z = run_front(d, probe, release, scale, a)
+    shift = fitted_shift(T, Z, points)
+    worst = worst_raw = 0.0
+    shifted, table = [], []
+    for t, z in ref:
+        if z > 3.5 or t > T[-1]:
+            continue
+        z_raw, z_sh = at(T, Z, t), at(T, Z, t - shift)
+        d_raw, d_sh = (z_raw - z) / z, (z_sh - z) / z
+        inside = 1.2 <= z <= 3.5
+        if inside:
+            worst, worst_raw = max(worst, abs(d_sh)), max(worst_raw, abs(d_raw))
+            shifted.append(z_raw)
+        table.append((t, z, z_raw, d_raw, z_sh, d_sh, inside))
+    sim_pts = [(t, z) for t, z in zip(T, Z) if 2.0 <= z <= 3.5]
+    speed_sim = slope([t for t, _ in sim_pts], [z for _, z in sim_pts])
+    return {"T": T, "Z": Z, "ref": ref, "shift": shift, "table": table, "worst": worst,
+            "worst_raw": worst_raw, "speed_sim": speed_sim, "speed_exp": speed_exp,
+            "speed_diff": (speed_sim - speed_exp) / speed_exp, "shifted": shifted}
+
+
+def agreement(first, second):
+    """Largest relative difference of Z between two runs at the experiment's judged T (relative to
+    the first), from measure()'s "shifted" lists."""
+    n = min(len(first), len(second))
+    return max(abs(b - a_) / a_ for a_, b in zip(first[:n], second[:n]))
+
+
+def plot(m, out):
+    """The run's front over the experiment, shifted by the fitted dT and unshifted, into out."""
+    shift, ref = m["shift"], m["ref"]
+    plt.figure()
+    plt.plot(m["T"], m["Z"], label="fsi")
+    plt.plot([t - shift for t, _ in ref], [z for _, z in ref], "o",
+             label=f"Martin & Moyce 1952, T - {shift:.2f}")
+    plt.plot([t for t, _ in ref], [z for _, z in ref], "x", color="grey",
+             label="Martin & Moyce 1952, unshifted")
+    plt.xlabel("T = t sqrt(2g/a)")
+    plt.ylabel("Z = x/a")
+    plt.grid(alpha=0.3)
+    plt.legend()
+    plt.savefig(out, dpi=100)
+    plt.close()
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
     p.add_argument("dirs", nargs="+", metavar="DIR")
@@ -78,57 +140,27 @@ def main():
     p.add_argument("--agreement", type=float, default=0.03)
     p.add_argument("--release", type=float, default=0.0, help="scene time of the release, s")
     args = p.parse_args()
-    scale = math.sqrt(2.0 * args.g / args.a)
-    ref = [(float(t), float(z)) for t, z in rows(REF)[1:]]
-    points = [(t, z) for t, z in ref if 1.2 <= z <= 3.5]
-    speed_pts = [(t, z) for t, z in ref if 2.0 <= z <= 3.5]
-    speed_exp = slope([t for t, _ in speed_pts], [z for _, z in speed_pts])
     ok = True
     shifted_runs = []
     for d in args.dirs:
-        T, Z = run_front(d, args.probe, args.release, scale, args.a)
-        shift = fitted_shift(T, Z, points)
-        print(f"{d}: least-squares shift dT = {shift:.3f} (T units)")
+        m = measure(d, args.probe, args.release, args.a, args.g)
+        print(f"{d}: least-squares shift dT = {m['shift']:.3f} (T units)")
         print("T_exp  Z_exp  Z_sim(T)  diff     Z_sim(T-dT)  diff")
-        worst = worst_raw = 0.0
-        shifted = []
-        for t, z in ref:
-            if z > 3.5 or t > T[-1]:
-                continue
-            z_raw, z_sh = at(T, Z, t), at(T, Z, t - shift)
-            d_raw, d_sh = (z_raw - z) / z, (z_sh - z) / z
-            inside = 1.2 <= z <= 3.5
-            if inside:
-                worst, worst_raw = max(worst, abs(d_sh)), max(worst_raw, abs(d_raw))
-                shifted.append(z_raw)
+        for t, z, z_raw, d_raw, z_sh, d_sh, inside in m["table"]:
             print(f"{t:5.2f}  {z:5.2f}  {z_raw:6.2f}  {100 * d_raw:+6.1f} %  {z_sh:9.2f}  "
                   f"{100 * d_sh:+6.1f} %{'' if inside else '  (outside 1.2 <= Z <= 3.5)'}")
-        sim_pts = [(t, z) for t, z in zip(T, Z) if 2.0 <= z <= 3.5]
-        speed_sim = slope([t for t, _ in sim_pts], [z for _, z in sim_pts])
-        speed_diff = (speed_sim - speed_exp) / speed_exp
-        print(f"largest difference over 1.2 <= Z <= 3.5: shifted {100 * worst:.1f} % "
-              f"(tolerance {100 * args.tolerance:.0f} %), unshifted {100 * worst_raw:.1f} %")
-        print(f"front speed dZ/dT for 2 <= Z <= 3.5: {speed_sim:.3f} against {speed_exp:.3f} "
-              f"({100 * speed_diff:+.1f} %, tolerance {100 * args.speed_tolerance:.0f} %)")
-        ok = ok and worst <= args.tolerance and abs(speed_diff) <= args.speed_tolerance
-        shifted_runs.append(shifted)
-        plt.figure()
-        plt.plot(T, Z, label="fsi")
-        plt.plot([t - shift for t, _ in ref], [z for _, z in ref], "o",
-                 label=f"Martin & Moyce 1952, T - {shift:.2f}")
-        plt.plot([t for t, _ in ref], [z for _, z in ref], "x", color="grey",
-                 label="Martin & Moyce 1952, unshifted")
-        plt.xlabel("T = t sqrt(2g/a)")
-        plt.ylabel("Z = x/a")
-        plt.grid(alpha=0.3)
-        plt.legend()
+        print(f"largest difference over 1.2 <= Z <= 3.5: shifted {100 * m['worst']:.1f} % "
+              f"(tolerance {100 * args.tolerance:.0f} %), unshifted {100 * m['worst_raw']:.1f} %")
+        print(f"front speed dZ/dT for 2 <= Z <= 3.5: {m['speed_sim']:.3f} against "
+              f"{m['speed_exp']:.3f} ({100 * m['speed_diff']:+.1f} %, tolerance "
+              f"{100 * args.speed_tolerance:.0f} %)")
+        ok = ok and m["worst"] <= args.tolerance and abs(m["speed_diff"]) <= args.speed_tolerance
+        shifted_runs.append(m["shifted"])
         out = os.path.join(d, "front.png")
-        plt.savefig(out, dpi=100)
-        plt.close()
+        plot(m, out)
         print(f"plot: {out}")
     if len(shifted_runs) >= 2:
-        n = min(len(shifted_runs[0]), len(shifted_runs[1]))
-        agree = max(abs(b - a_) / a_ for a_, b in zip(shifted_runs[0][:n], shifted_runs[1][:n]))
+        agree = agreement(shifted_runs[0], shifted_runs[1])
         print(f"{args.dirs[0]} against {args.dirs[1]}: largest difference of Z at the experiment's T "
               f"{100 * agree:.1f} % (tolerance {100 * args.agreement:.0f} %)")
         ok = ok and agree <= args.agreement

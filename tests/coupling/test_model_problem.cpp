@@ -133,7 +133,7 @@ TEST_CASE("plain BGS diverges above m_a/m = 1 + k dt^2/4m", "[coupling][model]")
   CHECK(run(p, o, 1e-3, 1).unconverged == 0);
 }
 
-TEST_CASE("CSS error is first order in dt", "[coupling][model]") {
+TEST_CASE("CSS error is first order in dt", "[coupling][model][convergence]") {
   // (m + m_a) u'' + k u = F sin(W t), u(0) = u0, u'(0) = 0: exact solution.
   model::Parameters p;
   p.ma = 0.2;

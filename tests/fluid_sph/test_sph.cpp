@@ -98,7 +98,7 @@ TEST_CASE("sph: a lone particle sliding on a floor is spray, the tongue's tip on
 }
 
 TEST_CASE("sph: RKGC gradient consistency on a disordered set and its convergence order",
-          "[sph][consistency]") {
+          "[sph][consistency][convergence]") {
   // Lattice perturbed by 0.1 dp: B_i = A_i^-1 (eq. 19) makes the gradient of a linear field exact
   // (difference form B_i sum (psi_j - psi_i) grad W V_j); the RKGC form of eq. 18 equals it plus
   // psi_i sum_j (B_i + B_j) grad W_ij V_j, the zero-order residual that relaxation removes.

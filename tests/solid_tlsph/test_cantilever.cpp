@@ -120,7 +120,7 @@ TEST_CASE("tlsph: static cantilever within 2 % of Timoshenko and FEM at H/dp = 8
 // --- the paper's form (GradientCorrection::linear, clamped particles held) ---
 
 TEST_CASE("tlsph paper form: static cantilever converges at second order (H/dp = 4, 8)",
-          "[solid_tlsph][cantilever][paper]") {
+          "[solid_tlsph][cantilever][paper][convergence]") {
   const Result r4 = static_tip(beam(4).paper()), r8 = static_tip(beam(8).paper());
   const double order = std::log2(r4.error() / r8.error());
   INFO("paper form, error vs Timoshenko: H/dp = 4 " << r4.error() << ", 8 " << r8.error()

@@ -1,0 +1,114 @@
+"""The acceptance checker (scripts/acceptance.py, scripts/check_acceptance) on synthetic run
+directories: it passes what is inside a band and fails what drifts out of it, the regression
+comparison catches a 2 % change that the published band lets through, and every acceptance file
+loads with its scenes and regression files present."""
+import contextlib
+import io
+import json
+import os
+import sys
+import unittest
+
+from common import SOURCE, fresh
+
+sys.path.insert(0, os.path.join(SOURCE, "scripts"))
+import acceptance  # noqa: E402
+
+
+def write_run(name, scene, overrides, columns, rows):
+    d = fresh(name)
+    os.makedirs(d)
+    with open(os.path.join(d, "probes.csv"), "w") as f:
+        f.write(",".join(columns) + "\n")
+        for r in rows:
+            f.write(",".join(repr(v) for v in r) + "\n")
+    with open(os.path.join(d, "run.json"), "w") as f:
+        json.dump({"name": scene, "scene": f"data/scenes/{scene}.yaml",
+                   "overrides": overrides}, f)
+    return d
+
+
+def check(*args):
+    out = io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(out):
+        status = acceptance.main(list(args))
+    return status, out.getvalue()
+
+
+def tank(name, pressure):
+    """A still tank to 10 s: p_bottom constant, the energy falling after 2 s."""
+    rows = [(0.05 * k, pressure, pressure, 1e-4, 0.01 / (1 + k)) for k in range(201)]
+    return write_run(name, "hydrostatic_tank", [], ["time", "p_bottom", "p_centre", "mean_speed",
+                                                    "kinetic_energy"], rows)
+
+
+def plate(name, scale):
+    """The committed quick-tier plate series, multiplied by scale."""
+    ref = acceptance.read_reference_csv(os.path.join(SOURCE, "data", "ref", "hydrostatic_plate",
+                                                     "regression_quick.csv"))
+    rows = [(t, scale * v) for t, v in zip(ref["time"], ref["mid_span"])]
+    return write_run(name, "hydrostatic_plate", ["time.end=1.5"], ["time", "mid_span"], rows)
+
+
+class AcceptanceTest(unittest.TestCase):
+    def test_a_tank_within_one_percent_passes_and_two_percent_off_fails(self):
+        status, out = check(tank("tank_ok", 4905.0 * 0.995), "--tier", "standard")
+        self.assertEqual(status, 0, out)
+        self.assertIn("PASS", out)
+        status, out = check(tank("tank_off", 4905.0 * 0.98), "--tier", "standard")
+        self.assertEqual(status, 1, out)
+        self.assertRegex(out, r"FAIL +p_bottom .*: 4807 Pa against 4905 Pa, error -2.00 %")
+
+    def test_the_regression_catches_what_the_published_band_lets_through(self):
+        status, out = check(plate("plate_same", 1.0), "--tier", "quick")
+        self.assertEqual(status, 0, out)
+        self.assertIn("case quick, pair emps+fem", out)
+        status, out = check(plate("plate_stiffer", 1.02), "--tier", "quick")
+        self.assertEqual(status, 1, out)
+        self.assertRegex(out, r"PASS +mid_span, mean over the last 0.5 s, against the plane-strain")
+        self.assertRegex(out, r"FAIL +regression, mid_span against our committed run: 2.\d\d %")
+
+    def test_a_run_that_stopped_early_fails(self):
+        d = plate("plate_stopped", 1.0)
+        with open(os.path.join(d, "run.json"), "w") as f:
+            json.dump({"name": "hydrostatic_plate", "scene": "data/scenes/hydrostatic_plate.yaml",
+                       "overrides": ["time.end=1.5"], "status": "interrupted",
+                       "simulated_time": 1.5, "message": "stopped by signal 15"}, f)
+        status, out = check(d, "--tier", "quick")
+        self.assertEqual(status, 1, out)
+        self.assertIn("FAIL             run completed", out)
+
+    def test_a_run_of_no_case_and_a_missing_column_are_errors(self):
+        d = plate("plate_other", 1.0)
+        with open(os.path.join(d, "run.json"), "w") as f:
+            json.dump({"name": "hydrostatic_plate", "scene": "data/scenes/hydrostatic_plate.yaml",
+                       "overrides": ["time.end=9"]}, f)
+        status, out = check(d, "--tier", "quick")
+        self.assertEqual(status, 2, out)
+        self.assertIn("matches no case of tier quick", out)
+        d = write_run("tank_no_column", "hydrostatic_block", [], ["time", "x"], [(0.0, 1.0)])
+        status, out = check(d, "--tier", "standard")
+        self.assertEqual(status, 2, out)
+        self.assertIn("no column 'p_corner'", out)
+
+    def test_every_acceptance_file_loads_with_its_scenes_and_regression_files(self):
+        scenes = acceptance.scenes_with_acceptance()
+        self.assertGreaterEqual(len(scenes), 10)
+        for name in scenes:
+            spec = acceptance.load(name)
+            self.assertEqual(spec["scene"], name)
+            for case in spec["cases"]:
+                self.assertTrue(os.path.isfile(os.path.join(SOURCE, case["file"])), case["file"])
+                if "standard" in case["tiers"]:
+                    self.assertFalse(case.get("set"), f"{name} {case['id']}: standard is as shipped")
+                if case.get("regression"):
+                    self.assertTrue(os.path.isfile(os.path.join(SOURCE, "data", "ref", name,
+                                                                case["regression"])))
+            for c in spec["criteria"]:
+                self.assertIn(c["quantity"]["measure"], acceptance.MEASURES, c["name"])
+                if c.get("expected") == "fail":
+                    self.assertTrue(c.get("reason"), c["name"])
+
+
+if __name__ == "__main__":
+    unittest.main()
