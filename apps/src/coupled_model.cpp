@@ -162,6 +162,13 @@ std::optional<double> CoupledModel::probe(const ProbeSpec& probe) const {
   return fluid_->probe(probe);
 }
 
+std::vector<std::string> CoupledModel::take_notes() {
+  std::vector<std::string> notes = fluid_->take_notes();
+  for (const auto& st : structures_)
+    for (auto& n : st->take_notes()) notes.push_back(std::move(n));
+  return notes;
+}
+
 void CoupledModel::report(JsonObject& run) const {
   fluid_->report(run);
   for (const auto& st : structures_) st->report(run);

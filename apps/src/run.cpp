@@ -474,6 +474,8 @@ RunResult run_scene(const Scene& scene, std::vector<std::unique_ptr<Model>>& mod
         c.next_frame = std::min(c.next_frame + interval, end);
         update_last_words();
       }
+      for (auto& m : models)
+        for (const auto& note : m->take_notes()) log << "note: " << note << '\n';
       progress.update(c.time, c.step);
       if (options.on_step) options.on_step(c.time, c.step);
       if (checkpoint_due()) checkpoint();

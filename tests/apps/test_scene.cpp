@@ -49,8 +49,8 @@ TEST_CASE("apps: a valid scene reads back its values", "[apps][scene]") {
   CHECK(b.options.material.plane == fsi::materials::PlaneModel::plane_strain); // default
   CHECK(b.options.newmark.beta == 0.25);
   CHECK(b.options.newmark.gamma == 0.5);
-  CHECK(b.options.newton.max_iterations == 20);                                       // default
-  CHECK(b.options.linear_solver.kind == fsi::fem::LinearSolverKind::simplicial_ldlt); // default
+  CHECK(b.options.newton.max_iterations == 20);                                  // default
+  CHECK(b.options.linear_solver.kind == fsi::fem::LinearSolverKind::ldlt_or_lu); // default
   CHECK(b.clamped == std::vector<std::string>{"left"});
   REQUIRE(s.output.probes.size() == 1);
   CHECK(s.output.probes[0].point->y() == 0.1);

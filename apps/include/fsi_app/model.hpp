@@ -38,6 +38,9 @@ public:
   virtual std::optional<double> probe(const ProbeSpec& probe) const = 0;
   /// Adds counts and statistics (elements, particles, iterations) to run.json.
   virtual void report(JsonObject& run) const = 0;
+  /// What the user should know since the last call (e.g. a solver's fallback); the driver
+  /// prints each as `note: ...` on the log after the step.
+  virtual std::vector<std::string> take_notes() { return {}; }
 };
 
 } // namespace fsi::app

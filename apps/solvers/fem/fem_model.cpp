@@ -214,6 +214,20 @@ void FemModel::advance(double /*time*/, double dt) {
   if (report.substeps > 1) ++substepped_steps_, substeps_ += report.substeps;
   roundoff_stops_ += report.roundoff_stops;
   ++steps_;
+  const long fallbacks = structure_->linear_solver_fallbacks();
+  lu_fallbacks_ += fallbacks - lu_fallbacks_seen_;
+  lu_fallbacks_seen_ = fallbacks;
+}
+
+std::vector<std::string> FemModel::take_notes() {
+  if (lu_noted_ || lu_fallbacks_ == 0) return {};
+  lu_noted_ = true;
+  std::ostringstream s;
+  s << "structure '" << name() << "': the stiffness matrix is not positive definite at structure "
+    << "step " << structure_->step() << ", t = " << structure_->time()
+    << " s; LDLT gave way to UMFPACK LU there (linear_solver: auto; counted in run.json as "
+    << "structure_" << name() << ".linear_solver_lu_fallbacks)";
+  return {s.str()};
 }
 
 void FemModel::declare(FieldsFile& file) const {
@@ -255,6 +269,7 @@ void FemModel::write_state(StateArchive& archive) const {
               std::vector<std::int64_t>{newton_halvings_, steps_with_halvings_, substepped_steps_,
                                         substeps_});
   archive.put("run/" + prefix + "roundoff_stops", std::vector<std::int64_t>{roundoff_stops_});
+  archive.put("run/" + prefix + "lu_fallbacks", std::vector<std::int64_t>{lu_fallbacks_});
 }
 
 void FemModel::read_state(const StateArchive& archive) {
@@ -269,6 +284,8 @@ void FemModel::read_state(const StateArchive& archive) {
   }
   if (archive.all_integers().count("run/" + prefix + "roundoff_stops")) // absent before the count
     roundoff_stops_ = archive.integers("run/" + prefix + "roundoff_stops", 1)[0];
+  if (archive.all_integers().count("run/" + prefix + "lu_fallbacks")) // absent before the count
+    lu_fallbacks_ = archive.integers("run/" + prefix + "lu_fallbacks", 1)[0];
 }
 
 void FemModel::report(JsonObject& run) const {
@@ -282,7 +299,8 @@ void FemModel::report(JsonObject& run) const {
       .add("steps_with_newton_halvings", static_cast<long long>(steps_with_halvings_))
       .add("substepped_steps", static_cast<long long>(substepped_steps_))
       .add("substeps", static_cast<long long>(substeps_))
-      .add("newton_roundoff_stops", static_cast<long long>(roundoff_stops_));
+      .add("newton_roundoff_stops", static_cast<long long>(roundoff_stops_))
+      .add("linear_solver_lu_fallbacks", static_cast<long long>(lu_fallbacks_));
   run.add("structure_" + name(), s);
 }
 
