@@ -407,6 +407,7 @@ Scene parse_scene(const std::string& text, const std::filesystem::path& file,
   ctx.dir = file.parent_path();
   YAML::Node root = load_scene_yaml(text, file.string());
   if (!root.IsMap()) throw InputError(file.string() + ":1: scene: expected a block of keys");
+  unshare_override_paths(root, overrides, [&] { return load_scene_yaml(text, file.string()); });
   for (const auto& o : overrides) apply_override(root, o, ctx);
   Scene scene = read_scene(Section(root, "", ctx));
   scene.path = file;

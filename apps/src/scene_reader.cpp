@@ -89,6 +89,15 @@ struct DocumentStarts final : YAML::EventHandler {
 };
 } // namespace
 
+std::size_t yaml_documents(const std::string& text, std::size_t at_most) {
+  DocumentStarts starts;
+  std::istringstream in(text);
+  YAML::Parser parser(in);
+  while (starts.marks.size() < at_most && parser.HandleNextDocument(starts)) {
+  }
+  return starts.marks.size();
+}
+
 YAML::Node load_scene_yaml(const std::string& text, const std::string& file) {
   // The first document, then whether a second one starts: at most two documents are parsed
   // (YAML::LoadAll runs out of memory on some malformed inputs, making empty documents forever).
