@@ -648,6 +648,33 @@ case("issue41", "indefinite_structure_matrix",
          "structure_beam"]["linear_solver_lu_fallbacks"] > 0 else "no LU fallback counted",
      timeout=180)
 
+# A fluid blown out of its domain stops (exit 3) instead of completing; a region or a probe
+# outside the domain, a probe named time, a structure named after an output group: exit 2.
+fluid = write("scenes/fluid41.yaml", FLUID)
+sph_column = os.path.join(DATA, "sph_column.yaml")
+case("issue41", "fluid_blown_out", ["run", fluid, "--out", path("out", "blown"),
+                                    "--set", "gravity=[0, -1e9]"], "stop",
+     ["particles left the domain", "the fluid is empty"])
+case("issue41", "sph_fluid_drained",
+     ["run", sph_column, "--out", path("out", "drained"), "--set", "walls=[]", "--set",
+      "fluid.domain={min: [-0.1, 0.0], max: [0.2, 0.2]}", "--set", "gravity=[0, -1e4]"], "stop",
+     ["particles left the domain"])
+for name, scene, arg, names in [
+    ("region_outside_domain", fluid, "fluid.domain={min: [1, 1], max: [2, 2]}", ["fluid.domain"]),
+    ("sph_region_outside_domain", sph_column, "fluid.domain={min: [1, 1], max: [2, 2]}",
+     ["fluid.domain"]),
+    ("probe_far_outside", fluid, "output.probes[1].point=[1e308, 1e308]",
+     ["output.probes[1].point", "outside the fluid domain"]),
+    ("sph_probe_far_outside", sph_column, "output.probes[0].point=[1e308, 1e308]",
+     ["output.probes[0].point", "outside the fluid domain"]),
+    ("probe_named_time", fluid, "output.probes[1].name=time", ["output.probes[1].name", "reserved"]),
+    ("structure_named_path", base, "structures[0].name=a/b", ["structures[0].name"]),
+    ("structure_named_particles", base, "structures[0].name=particles",
+     ["structures[0].name", "reserved"]),
+    ("structure_named_dots", base, "structures[0].name=..", ["structures[0].name"]),
+]:
+    case("issue41", name, ["check", scene, "--set", arg], "error", names)
+
 # ---------------------------------------------------------------- the table
 shutil.rmtree(WORK, ignore_errors=True)
 bad = {"crash", "hang", "silent", "internal", "unclear"}

@@ -460,7 +460,13 @@ RunResult run_scene(const Scene& scene, std::vector<std::unique_ptr<Model>>& mod
         throw;
       }
       attempted = c.time + dt;
+      std::vector<std::optional<ParticleCount>> particles;
+      for (const auto& m : models) particles.push_back(m->particle_count());
       for (auto& m : models) m->advance(c.time, dt);
+      for (std::size_t k = 0; k < models.size(); ++k)
+        if (particles[k])
+          check_particle_loss(*particles[k], *models[k]->particle_count(), c.step + 1, c.time,
+                              attempted);
       ++c.step;
       c.time = scene.time.dt ? static_cast<double>(c.step) * *scene.time.dt : c.time + dt;
       // The last step ends at time.end exactly.

@@ -109,6 +109,9 @@ ProbeSpec read_probe(Section s) {
       return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
     });
     if (!ok_name) s.fail("name", "'" + p.name + "' is not a valid column name");
+    if (p.name == "time") // probes.csv's first column, and the Python result's time key
+      s.fail("name",
+             "'time' is reserved (the first column of probes.csv); name the probe otherwise");
     const auto on = structure_quantities();
     const bool on_structure = std::find(on.begin(), on.end(), p.quantity) != on.end();
     if (on_structure && p.structure.empty()) s.fail("structure", "required key missing");
@@ -267,10 +270,22 @@ CheckpointSpec read_checkpoint_spec(Section s) {
 void cross_check(Section& top, const Scene& scene, std::optional<Section>& fluid_section,
                  std::vector<Section>& structure_sections, std::vector<Section>& probe_sections) {
   std::set<std::string> names;
-  for (std::size_t i = 0; i < scene.structures.size(); ++i)
-    if (!names.insert(scene.structures[i].name).second)
-      structure_sections[i].fail("name",
-                                 "duplicate structure name '" + scene.structures[i].name + "'");
+  for (std::size_t i = 0; i < scene.structures.size(); ++i) {
+    const std::string& name = scene.structures[i].name;
+    // The name is a group of fields.h5 and checkpoints, a grid of fields.xmf and a run.json key.
+    const bool ok = !name.empty() && std::all_of(name.begin(), name.end(), [](char c) {
+      return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-';
+    });
+    if (!ok)
+      structure_sections[i].fail("name", "'" + name +
+                                             "' is not a valid name (letters, digits, _ and -: "
+                                             "it names output groups)");
+    if (name == "particles")
+      structure_sections[i].fail("name", "'particles' is reserved (the fluid's grid in "
+                                         "fields.h5); name the structure otherwise");
+    if (!names.insert(name).second)
+      structure_sections[i].fail("name", "duplicate structure name '" + name + "'");
+  }
   for (std::size_t i = 0; i < scene.output.probes.size(); ++i) {
     const auto& p = scene.output.probes[i];
     if (!p.structure.empty()) {

@@ -142,6 +142,11 @@ void EmpsModel::read_state(const StateArchive& archive) {
   walls_->read_state(archive, "walls/");
 }
 
+std::optional<ParticleCount> EmpsModel::particle_count() const {
+  const auto& o = fluid_->options();
+  return ParticleCount{fluid_->particles().size(), {o.domain_min, o.domain_max}};
+}
+
 void EmpsModel::report(JsonObject& run) const {
   JsonObject f;
   f.add("particles_initial", static_cast<long long>(initial_count_))

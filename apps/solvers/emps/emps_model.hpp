@@ -32,6 +32,7 @@ public:
   void declare(FieldsFile& file) const override;
   void write_frame(FieldsFile& file, const std::vector<std::string>& fields) const override;
   std::optional<double> probe(const ProbeSpec& probe) const override;
+  std::optional<ParticleCount> particle_count() const override;
   void report(JsonObject& run) const override;
   /// The fluid under "fluid/", all wall nodes under "walls/".
   void write_state(StateArchive& archive) const override;

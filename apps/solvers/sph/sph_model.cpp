@@ -304,6 +304,11 @@ void SphModel::report(JsonObject& run) const {
   run.add("fluid", f);
 }
 
+std::optional<ParticleCount> SphModel::particle_count() const {
+  const auto& o = fluid_->options();
+  return ParticleCount{fluid_->particles().size(), {o.domain_min, o.domain_max}};
+}
+
 void SphModel::write_state(StateArchive& archive) const {
   adapter_->write_state(archive);
 }
