@@ -675,6 +675,15 @@ for name, scene, arg, names in [
 ]:
     case("issue41", name, ["check", scene, "--set", arg], "error", names)
 
+# A wall motion that turns NaN: refused by range (period), or stopped by the wall guard (exit 3).
+table41 = write("scenes/overflow.csv", "time,value\n0,0\n1,10\n")
+case("issue41", "motion_period_denormal", ["check", fluid, "--set", "walls[2].motion.period=5e-324"],
+     "error", ["walls[2].motion.period", "not finite"])
+case("issue41", "wall_turns_nan",
+     ["run", fluid, "--out", path("out", "wallnan"), "--set",
+      "walls[2].motion={kind: table, table: %s, scale: 1e308}" % table41], "stop",
+     ["wall 'paddle'", "is not finite"])
+
 # ---------------------------------------------------------------- the table
 shutil.rmtree(WORK, ignore_errors=True)
 bad = {"crash", "hang", "silent", "internal", "unclear"}

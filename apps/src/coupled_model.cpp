@@ -162,6 +162,13 @@ std::optional<double> CoupledModel::probe(const ProbeSpec& probe) const {
   return fluid_->probe(probe);
 }
 
+std::optional<std::string> CoupledModel::non_finite() const {
+  if (auto what = fluid_->non_finite()) return what;
+  for (const auto& st : structures_)
+    if (auto what = st->non_finite()) return what;
+  return std::nullopt;
+}
+
 std::vector<std::string> CoupledModel::take_notes() {
   std::vector<std::string> notes = fluid_->take_notes();
   for (const auto& st : structures_)

@@ -464,6 +464,10 @@ RunResult run_scene(const Scene& scene, std::vector<std::unique_ptr<Model>>& mod
       for (const auto& m : models) particles.push_back(m->particle_count());
       for (auto& m : models) m->advance(c.time, dt);
       for (std::size_t k = 0; k < models.size(); ++k)
+        if (auto what = models[k]->non_finite())
+          throw RunError(*what + " after step " + std::to_string(c.step + 1) +
+                         ", t = " + format_g(attempted) + " s");
+      for (std::size_t k = 0; k < models.size(); ++k)
         if (particles[k])
           check_particle_loss(*particles[k], *models[k]->particle_count(), c.step + 1, c.time,
                               attempted);

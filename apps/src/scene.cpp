@@ -2,6 +2,7 @@
 
 #include "coupling/registry.hpp"
 #include "fsi/core/error.hpp"
+#include "fsi/core/format.hpp"
 #include "fsi_app/output/interface_history.hpp"
 #include "fsi_app/overrides.hpp"
 #include "fsi_app/resources.hpp"
@@ -166,6 +167,15 @@ MotionSpec read_motion(Section s) {
     m.amplitude = s.real("amplitude", Range::any(), "rad for rotation, m for translation");
     m.period = s.real("period", Range::positive(), "s");
     m.phase = s.real("phase", 0.0, Range::any(), "rad");
+    // Issue 41: a period so short that 2 pi / period or the acceleration amplitude
+    // amplitude (2 pi / period)^2 overflows makes the wall NaN (5e-324 passes "> 0").
+    const double omega = 2.0 * M_PI / m.period;
+    if (!doc && !(std::isfinite(omega) && std::isfinite(std::abs(m.amplitude) * omega * omega) &&
+                  std::isfinite(omega * omega)))
+      s.fail("period", significant(m.period, 6) + " s with amplitude " +
+                           significant(m.amplitude, 6) +
+                           ": the motion's acceleration amplitude * (2 pi / period)^2 is not "
+                           "finite; give a longer period");
   }
   if (doc || m.kind == "table") {
     m.table = s.file("table", "CSV with header; columns time (s) and value");

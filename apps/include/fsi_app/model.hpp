@@ -41,6 +41,10 @@ public:
   virtual void report(JsonObject& run) const = 0;
   /// A particle fluid's count and domain, for the driver's particle-loss guard (default: none).
   virtual std::optional<ParticleCount> particle_count() const { return std::nullopt; }
+  /// The first non-finite position or velocity of what the model moves (walls, structure nodes
+  /// or particles), named, e.g. "wall 'paddle' node 0 at (nan, nan) m"; the driver stops the run
+  /// on it (issue 41: a wall could go NaN and the run complete).
+  virtual std::optional<std::string> non_finite() const { return std::nullopt; }
   /// What the user should know since the last call (e.g. a solver's fallback); the driver
   /// prints each as `note: ...` on the log after the step.
   virtual std::vector<std::string> take_notes() { return {}; }

@@ -1,6 +1,7 @@
 #include "fem/fem_model.hpp"
 
 #include "fsi/core/error.hpp"
+#include "fsi_app/finite_guard.hpp"
 #include "fsi_app/wall_motion.hpp"
 #include "structure_fem/gmsh_reader.hpp"
 #include "structure_fem/loads.hpp"
@@ -217,6 +218,19 @@ void FemModel::advance(double /*time*/, double dt) {
   const long fallbacks = structure_->linear_solver_fallbacks();
   lu_fallbacks_ += fallbacks - lu_fallbacks_seen_;
   lu_fallbacks_seen_ = fallbacks;
+}
+
+std::optional<std::string> FemModel::non_finite() const {
+  const auto& u = structure_->displacement();
+  const auto& v = structure_->velocity();
+  const auto& X = structure_->mesh().X;
+  for (std::size_t k = 0; k < X.size(); ++k) {
+    const auto d = 2 * static_cast<Eigen::Index>(k);
+    if (auto what = non_finite_point("structure '" + name() + "' node " + std::to_string(k),
+                                     X[k] + Vec2(u[d], u[d + 1]), Vec2(v[d], v[d + 1])))
+      return what;
+  }
+  return std::nullopt;
 }
 
 std::vector<std::string> FemModel::take_notes() {

@@ -36,6 +36,7 @@ public:
   void declare(FieldsFile& file) const override;
   void write_frame(FieldsFile& file, const std::vector<std::string>& fields) const override;
   std::optional<double> probe(const ProbeSpec& probe) const override;
+  std::optional<std::string> non_finite() const override;
   void report(JsonObject& run) const override;
   /// Once per run: the first factorisation the default solver did by LU.
   std::vector<std::string> take_notes() override;
