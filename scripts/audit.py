@@ -684,6 +684,16 @@ case("issue41", "wall_turns_nan",
       "walls[2].motion={kind: table, table: %s, scale: 1e308}" % table41], "stop",
      ["wall 'paddle'", "is not finite"])
 
+# A restart of an edited scene file is refused (time.end may change).
+EDITED = S + "checkpoint:\n  interval_steps: 5\n"
+edited = write("scenes/edited.yaml", EDITED)
+run(["run", edited, "--out", path("out", "edited")])
+write("scenes/edited.yaml", edit(EDITED, "density: 1200.0", "density: 1300.0"))
+case("issue41", "restart_edited_scene",
+     ["run", edited, "--out", path("out", "edited"), "--restart",
+      path("out", "edited", "checkpoint_000000005.h5")], "error",
+     ["edited.yaml", "the scene was edited since"])
+
 # ---------------------------------------------------------------- the table
 shutil.rmtree(WORK, ignore_errors=True)
 bad = {"crash", "hang", "silent", "internal", "unclear"}

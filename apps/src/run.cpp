@@ -175,6 +175,7 @@ StateArchive make_archive(const Scene& scene, const std::vector<std::unique_ptr<
   a.put_integer("driver/threads", num_threads());
   a.put_integer("driver/failed", failed);
   a.put("driver/overrides", encode_strings(scene.overrides));
+  a.put_integer("driver/scene_digest", static_cast<std::int64_t>(scene.digest));
   for (const auto& m : models) m->write_state(a);
   return a;
 }
@@ -219,6 +220,12 @@ Clock read_archive(const Scene& scene, std::vector<std::unique_ptr<Model>>& mode
           override_difference(decode_strings(a.integers("driver/overrides")), scene.overrides);
       if (!diff.empty()) throw InputError(diff);
     }
+    // A scene edited since the checkpoint (checkpoints before the digest have none).
+    if (a.all_integers().count("driver/scene_digest") &&
+        static_cast<std::uint64_t>(a.integer("driver/scene_digest")) != scene.digest)
+      throw InputError("written for another version of " + scene.path.string() +
+                       ": the scene was edited since (a restart may change time.end only, in the "
+                       "file or by --set); restore the scene, or start a new run");
     if (c.time > scene.time.end * (1.0 + 1e-12))
       throw InputError("at t = " + format_g(c.time) +
                        " s, past time.end = " + format_g(scene.time.end) + " s of this run");

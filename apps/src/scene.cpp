@@ -421,6 +421,21 @@ void fail_at(const Scene& scene, int line, const std::string& key, const std::st
   throw InputError(scene.path.string() + ":" + std::to_string(line) + ": " + key + ": " + what);
 }
 
+namespace {
+/// FNV-1a 64 of the tree as YAML without time.end (the tree is read already: changed in place).
+std::uint64_t scene_digest(YAML::Node& root) {
+  if (root["time"].IsMap()) root["time"].remove("end");
+  YAML::Emitter out;
+  out << root;
+  std::uint64_t h = 14695981039346656037ULL;
+  for (const char c : std::string(out.c_str())) {
+    h ^= static_cast<unsigned char>(c);
+    h *= 1099511628211ULL;
+  }
+  return h;
+}
+} // namespace
+
 Scene load_scene(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
   return parse_scene(read_scene_file(file), file, overrides);
 }
@@ -435,6 +450,7 @@ Scene parse_scene(const std::string& text, const std::filesystem::path& file,
   unshare_override_paths(root, overrides, [&] { return load_scene_yaml(text, file.string()); });
   for (const auto& o : overrides) apply_override(root, o, ctx);
   Scene scene = read_scene(Section(root, "", ctx));
+  scene.digest = scene_digest(root);
   scene.path = file;
   scene.overrides = overrides;
   if (scene.name.empty()) scene.name = file.stem().string();
