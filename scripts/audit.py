@@ -694,6 +694,10 @@ case("issue41", "restart_edited_scene",
       path("out", "edited", "checkpoint_000000005.h5")], "error",
      ["edited.yaml", "the scene was edited since"])
 
+# More frames than a run may write (it filled the disk for ever): refused before step 0.
+case("issue41", "frames_beyond_cap", ["run", fluid, "--out", path("out", "frames"), "--set",
+                                      "output.interval=1e-12"], "error", ["output.interval", "frames"])
+
 # ---------------------------------------------------------------- the table
 shutil.rmtree(WORK, ignore_errors=True)
 bad = {"crash", "hang", "silent", "internal", "unclear"}

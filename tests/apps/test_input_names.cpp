@@ -71,3 +71,15 @@ TEST_CASE("apps: a fluid region outside fluid.domain is refused, for either flui
                          "region 0 reaches outside the domain\n");
   }
 }
+
+TEST_CASE("apps: more frames than a run may write are refused before step 0",
+          "[apps][scene][names]") {
+  // Issue 41 item 5: output.interval 1e-12 s with Courant stepping filled the disk for ever.
+  const std::string scene = data + "tiny_fluid.yaml";
+  const auto [status, err] = check(scene, "output.interval=1e-12");
+  CHECK(status == 2);
+  CHECK(err == scene + ": --set output.interval=1e-12: output.interval: time.end / "
+                       "output.interval = 2e+10 frames; a run writes at most 1e+05 (give a larger "
+                       "interval)\n");
+  CHECK(check(scene, "output.interval=2e-7").first == 0); // exactly 1e5 frames
+}
