@@ -698,6 +698,10 @@ case("issue41", "restart_edited_scene",
 case("issue41", "frames_beyond_cap", ["run", fluid, "--out", path("out", "frames"), "--set",
                                       "output.interval=1e-12"], "error", ["output.interval", "frames"])
 
+# A denormal structure density: refused by its range (it failed to factorise mid-run).
+case("issue41", "density_denormal", ["check", base, "--set", "structures[0].material.density=5e-324"],
+     "error", ["structures[0].material.density", "must be in"])
+
 # ---------------------------------------------------------------- the table
 shutil.rmtree(WORK, ignore_errors=True)
 bad = {"crash", "hang", "silent", "internal", "unclear"}
