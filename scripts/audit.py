@@ -702,6 +702,14 @@ case("issue41", "frames_beyond_cap", ["run", fluid, "--out", path("out", "frames
 case("issue41", "density_denormal", ["check", base, "--set", "structures[0].material.density=5e-324"],
      "error", ["structures[0].material.density", "must be in"])
 
+# A mesh path that is a folder, FIFO or device says what it is (not "file not found").
+for name, mesh, names in [("mesh_is_folder", WORK, ["is a folder"]),
+                          ("mesh_is_fifo", path("fifo.yaml"), ["not a regular file"]),
+                          ("mesh_is_dev_zero", "/dev/zero", ["not a regular file"])]:
+    case("issue41", name, ["check", base, "--set",
+                           "structures[0].mesh={kind: gmsh, file: %s}" % mesh], "error",
+         ["structures[0].mesh.file"] + names)
+
 # ---------------------------------------------------------------- the table
 shutil.rmtree(WORK, ignore_errors=True)
 bad = {"crash", "hang", "silent", "internal", "unclear"}

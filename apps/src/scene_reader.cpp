@@ -447,7 +447,12 @@ std::filesystem::path Section::file(const std::string& key, const std::string& d
   std::filesystem::path p = node.Scalar();
   if (p.is_relative()) p = ctx_->dir / p;
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(p, ec)) fail(key, "file not found: " + p.string());
+  // Say what the path is when it is not a file (issue 41: a folder, FIFO or device).
+  const std::filesystem::file_status st = std::filesystem::status(p, ec);
+  if (ec || !std::filesystem::exists(st)) fail(key, "file not found: " + p.string());
+  if (std::filesystem::is_directory(st)) fail(key, p.string() + " is a folder; give a file");
+  if (!std::filesystem::is_regular_file(st))
+    fail(key, p.string() + " is not a regular file (a FIFO, device or socket); give a file");
   return p;
 }
 

@@ -9,8 +9,10 @@
 #include "tlsph/tlsph_spec.hpp"
 
 #include <catch2/catch.hpp>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <sys/stat.h>
 
 using namespace fsi::app;
 
@@ -81,6 +83,25 @@ TEST_CASE("apps: a denormal or tiny structure density is refused by its range", 
     CHECK(r.err.find(": structures[0].material.density: must be in [0.001, 1e+06], got ") !=
           std::string::npos);
   }
+}
+
+TEST_CASE("apps: a mesh path that is a folder, FIFO or device says what it is", "[apps][scene]") {
+  // Issue 41 item 11: each said "file not found".
+  const auto fifo = std::filesystem::temp_directory_path() / "fsi_test_mesh_fifo.msh";
+  std::filesystem::remove(fifo);
+  REQUIRE(mkfifo(fifo.c_str(), 0644) == 0);
+  const std::string folder = std::filesystem::temp_directory_path().string();
+  for (const auto& [path, what] :
+       {std::pair<std::string, std::string>{folder, folder + " is a folder; give a file"},
+        {fifo.string(), fifo.string() + " is not a regular file (a FIFO, device or socket)"},
+        {"/dev/zero", "/dev/zero is not a regular file (a FIFO, device or socket)"}}) {
+    INFO(path);
+    const auto r = cli({"check", data + "valid_structure.yaml", "--set",
+                        "structures[0].mesh={kind: gmsh, file: " + path + "}"});
+    CHECK(r.status == 2);
+    CHECK(r.err.find(": structures[0].mesh.file: " + what) != std::string::npos);
+  }
+  std::filesystem::remove(fifo);
 }
 
 TEST_CASE("apps: each class of bad input names file, line and key, exit status 2",
