@@ -710,6 +710,15 @@ for name, mesh, names in [("mesh_is_folder", WORK, ["is a folder"]),
                            "structures[0].mesh={kind: gmsh, file: %s}" % mesh], "error",
          ["structures[0].mesh.file"] + names)
 
+# A closed wall polyline whose last point is its first: named (walls[2].polyline).
+case("issue41", "closed_polyline_zero_closing", ["check", fluid, "--set",
+     "walls[2]={name: box, closed: true, polyline: [[0.3, 0.0], [0.4, 0.0], [0.4, 0.1], [0.3, 0.0]]}"],
+     "error", ["walls[2].polyline", "zero-length"])
+# A structure solver failure names the structure, the step and the time.
+case("issue41", "structure_failure_named", ["run", base, "--out", path("out", "newton1"), "--set",
+                                            "structures[0].newton.max_iterations=1"], "stop",
+     ["structure 'beam': Newton", "structure step 1, t = 0.001"])
+
 # ---------------------------------------------------------------- the table
 shutil.rmtree(WORK, ignore_errors=True)
 bad = {"crash", "hang", "silent", "internal", "unclear"}

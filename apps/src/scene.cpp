@@ -218,6 +218,12 @@ WallSpec read_wall(Section s) {
       if ((w.polyline[i + 1] - w.polyline[i]).norm() == 0.0)
         s.fail("polyline", "points " + std::to_string(i) + " and " + std::to_string(i + 1) +
                                " coincide (zero-length segment)");
+  // Issue 41: the closing segment of a closed polyline too (it failed later, naming no key).
+  if (!s.context().documenting() && w.closed && w.polyline.size() > 2 &&
+      (w.polyline.front() - w.polyline.back()).norm() == 0.0)
+    s.fail("polyline", "the last point " + std::to_string(w.polyline.size() - 1) +
+                           " is the first (closed: true joins them by a zero-length segment); "
+                           "drop the last point");
   s.finish();
   return w;
 }

@@ -104,6 +104,17 @@ TEST_CASE("apps: a mesh path that is a folder, FIFO or device says what it is", 
   std::filesystem::remove(fifo);
 }
 
+TEST_CASE("apps: a closed wall polyline whose last point is its first is refused naming it",
+          "[apps][scene]") {
+  const std::string scene = data + "tiny_fluid.yaml";
+  const auto r = cli({"check", scene, "--set",
+                      "walls[2]={name: box, closed: true, polyline: [[0.3, 0.0], [0.4, 0.0], "
+                      "[0.4, 0.1], [0.3, 0.0]]}"});
+  CHECK(r.status == 2);
+  CHECK(r.err.find(": walls[2].polyline: the last point 3 is the first (closed: true joins them "
+                   "by a zero-length segment); drop the last point\n") != std::string::npos);
+}
+
 TEST_CASE("apps: each class of bad input names file, line and key, exit status 2",
           "[apps][scene]") {
   struct Case {

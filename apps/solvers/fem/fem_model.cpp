@@ -207,7 +207,13 @@ std::vector<Polygon> FemModel::occupied_area() const {
 }
 
 void FemModel::advance(double /*time*/, double dt) {
-  const auto& report = structure_->advance(dt);
+  const fem::StepReport* step = nullptr;
+  try { // the library's message has the step and time; the run names the structure (issue 41)
+    step = &structure_->advance(dt);
+  } catch (const RunError& e) {
+    throw RunError("structure '" + name() + "': " + e.what());
+  }
+  const auto& report = *step;
   newton_iterations_ += report.iterations;
   newton_max_ = std::max(newton_max_, report.iterations);
   newton_halvings_ += report.halvings;

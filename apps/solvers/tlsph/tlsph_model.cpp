@@ -111,7 +111,11 @@ std::vector<Polygon> TlsphModel::occupied_area() const {
 }
 
 void TlsphModel::advance(double time, double dt) {
-  substeps_ += solid_->advance(time, dt);
+  try { // the run names the structure (issue 41)
+    substeps_ += solid_->advance(time, dt);
+  } catch (const RunError& e) {
+    throw RunError("structure '" + name() + "': " + e.what());
+  }
   ++steps_;
 }
 
