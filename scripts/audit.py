@@ -614,6 +614,111 @@ try:
 except Exception as e:  # noqa: BLE001
     results.append(("signals", "sigkill_frames_readable", "silent", False, str(e)[:200]))
 
+# ---------------------------------------------------------------- issue 41 (held-out audit)
+# An override through a YAML alias changes only the node it names: two beams share &m, the
+# second's stiffness is overridden; their tip probes must then differ.
+ALIASED = (S.replace("      point: [1.0, 0.1]\n",
+                     "      point: [1.0, 0.1]\n    - name: tip1\n      quantity: displacement_y\n"
+                     "      structure: beam1\n      point: [1.0, 0.1]\n")
+           .replace("    material:\n", "    material: &m\n")
+           + "  - name: beam1\n    mesh: {kind: rectangle, width: 1.0, height: 0.1, "
+             "elements_x: 4, elements_y: 1}\n    material: *m\n    clamped: [left]\n"
+             "    newmark: {beta: 0.25, gamma: 0.5}\n")
+
+
+def tips_differ(d):
+    rows = open(os.path.join(d, "probes.csv")).read().split("\n")
+    last = rows[-2].split(",")
+    return None if last[1] != last[2] else "both beams changed: " + rows[-2]
+
+
+aliased = write("scenes/aliased.yaml", ALIASED)
+case("issue41", "set_through_alias",
+     ["run", aliased, "--out", path("out", "alias"),
+      "--set", "structures[1].material.youngs_modulus=2.0e7"], "ok",
+     check=lambda: tips_differ(path("out", "alias")))
+case("issue41", "set_second_document", ["check", base, "--set", "time.end=0.005\n---\n7"],
+     "error", ["base.yaml", "second YAML document"])
+# The shipped sloshing beam past t = 0.3036 s, where its K_eff stops being positive definite: the
+# default linear solver factorises it by LU and says so once.
+slosh = os.path.join(ROOT, "data/scenes/sloshing_elastic_beam_coarse.yaml")
+case("issue41", "indefinite_structure_matrix",
+     ["run", slosh, "--out", path("out", "slosh"), "--threads", "1", "--set", "time.end=0.31"],
+     "ok", check=lambda: None if json.load(open(path("out", "slosh", "run.json")))[
+         "structure_beam"]["linear_solver_lu_fallbacks"] > 0 else "no LU fallback counted",
+     timeout=180)
+
+# A fluid blown out of its domain stops (exit 3) instead of completing; a region or a probe
+# outside the domain, a probe named time, a structure named after an output group: exit 2.
+fluid = write("scenes/fluid41.yaml", FLUID)
+sph_column = os.path.join(DATA, "sph_column.yaml")
+case("issue41", "fluid_blown_out", ["run", fluid, "--out", path("out", "blown"),
+                                    "--set", "gravity=[0, -1e9]"], "stop",
+     ["particles left the domain", "the fluid is empty"])
+case("issue41", "sph_fluid_drained",
+     ["run", sph_column, "--out", path("out", "drained"), "--set", "walls=[]", "--set",
+      "fluid.domain={min: [-0.1, 0.0], max: [0.2, 0.2]}", "--set", "gravity=[0, -1e4]"], "stop",
+     ["particles left the domain"])
+for name, scene, arg, names in [
+    ("region_outside_domain", fluid, "fluid.domain={min: [1, 1], max: [2, 2]}", ["fluid.domain"]),
+    ("sph_region_outside_domain", sph_column, "fluid.domain={min: [1, 1], max: [2, 2]}",
+     ["fluid.domain"]),
+    ("probe_far_outside", fluid, "output.probes[1].point=[1e308, 1e308]",
+     ["output.probes[1].point", "outside the fluid domain"]),
+    ("sph_probe_far_outside", sph_column, "output.probes[0].point=[1e308, 1e308]",
+     ["output.probes[0].point", "outside the fluid domain"]),
+    ("probe_named_time", fluid, "output.probes[1].name=time", ["output.probes[1].name", "reserved"]),
+    ("structure_named_path", base, "structures[0].name=a/b", ["structures[0].name"]),
+    ("structure_named_particles", base, "structures[0].name=particles",
+     ["structures[0].name", "reserved"]),
+    ("structure_named_dots", base, "structures[0].name=..", ["structures[0].name"]),
+]:
+    case("issue41", name, ["check", scene, "--set", arg], "error", names)
+
+# A wall motion that turns NaN: refused by range (period), or stopped by the wall guard (exit 3).
+table41 = write("scenes/overflow.csv", "time,value\n0,0\n1,10\n")
+case("issue41", "motion_period_denormal", ["check", fluid, "--set", "walls[2].motion.period=5e-324"],
+     "error", ["walls[2].motion.period", "not finite"])
+case("issue41", "wall_turns_nan",
+     ["run", fluid, "--out", path("out", "wallnan"), "--set",
+      "walls[2].motion={kind: table, table: %s, scale: 1e308}" % table41], "stop",
+     ["wall 'paddle'", "is not finite"])
+
+# A restart of an edited scene file is refused (time.end may change).
+EDITED = S + "checkpoint:\n  interval_steps: 5\n"
+edited = write("scenes/edited.yaml", EDITED)
+run(["run", edited, "--out", path("out", "edited")])
+write("scenes/edited.yaml", edit(EDITED, "density: 1200.0", "density: 1300.0"))
+case("issue41", "restart_edited_scene",
+     ["run", edited, "--out", path("out", "edited"), "--restart",
+      path("out", "edited", "checkpoint_000000005.h5")], "error",
+     ["edited.yaml", "the scene was edited since"])
+
+# More frames than a run may write (it filled the disk for ever): refused before step 0.
+case("issue41", "frames_beyond_cap", ["run", fluid, "--out", path("out", "frames"), "--set",
+                                      "output.interval=1e-12"], "error", ["output.interval", "frames"])
+
+# A denormal structure density: refused by its range (it failed to factorise mid-run).
+case("issue41", "density_denormal", ["check", base, "--set", "structures[0].material.density=5e-324"],
+     "error", ["structures[0].material.density", "must be in"])
+
+# A mesh path that is a folder, FIFO or device says what it is (not "file not found").
+for name, mesh, names in [("mesh_is_folder", WORK, ["is a folder"]),
+                          ("mesh_is_fifo", path("fifo.yaml"), ["not a regular file"]),
+                          ("mesh_is_dev_zero", "/dev/zero", ["not a regular file"])]:
+    case("issue41", name, ["check", base, "--set",
+                           "structures[0].mesh={kind: gmsh, file: %s}" % mesh], "error",
+         ["structures[0].mesh.file"] + names)
+
+# A closed wall polyline whose last point is its first: named (walls[2].polyline).
+case("issue41", "closed_polyline_zero_closing", ["check", fluid, "--set",
+     "walls[2]={name: box, closed: true, polyline: [[0.3, 0.0], [0.4, 0.0], [0.4, 0.1], [0.3, 0.0]]}"],
+     "error", ["walls[2].polyline", "zero-length"])
+# A structure solver failure names the structure, the step and the time.
+case("issue41", "structure_failure_named", ["run", base, "--out", path("out", "newton1"), "--set",
+                                            "structures[0].newton.max_iterations=1"], "stop",
+     ["structure 'beam': Newton", "structure step 1, t = 0.001"])
+
 # ---------------------------------------------------------------- the table
 shutil.rmtree(WORK, ignore_errors=True)
 bad = {"crash", "hang", "silent", "internal", "unclear"}

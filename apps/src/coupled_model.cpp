@@ -162,6 +162,20 @@ std::optional<double> CoupledModel::probe(const ProbeSpec& probe) const {
   return fluid_->probe(probe);
 }
 
+std::optional<std::string> CoupledModel::non_finite() const {
+  if (auto what = fluid_->non_finite()) return what;
+  for (const auto& st : structures_)
+    if (auto what = st->non_finite()) return what;
+  return std::nullopt;
+}
+
+std::vector<std::string> CoupledModel::take_notes() {
+  std::vector<std::string> notes = fluid_->take_notes();
+  for (const auto& st : structures_)
+    for (auto& n : st->take_notes()) notes.push_back(std::move(n));
+  return notes;
+}
+
 void CoupledModel::report(JsonObject& run) const {
   fluid_->report(run);
   for (const auto& st : structures_) st->report(run);

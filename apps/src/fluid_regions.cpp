@@ -71,6 +71,28 @@ ParticleArea read_particle_area(Section& s, double l0) {
   return a;
 }
 
+void check_in_domain(const Scene& scene, Section& s, std::vector<Section>& probes,
+                     const ParticleArea& area, const std::pair<Vec2, Vec2>& domain) {
+  const auto inside = [&](const Vec2& p) {
+    return p.x() >= domain.first.x() && p.x() <= domain.second.x() && p.y() >= domain.first.y() &&
+           p.y() <= domain.second.y();
+  };
+  for (std::size_t i = 0; i < area.regions.size(); ++i)
+    for (const Vec2& p : area.regions[i])
+      if (!inside(p))
+        s.fail(area.domain ? "domain" : "regions",
+               "fluid region " + std::to_string(i) + " reaches outside the domain");
+  // Issue 41: a point outside reads nothing (0) for the whole run.
+  for (std::size_t i = 0; i < scene.output.probes.size(); ++i) {
+    const ProbeSpec& p = scene.output.probes[i];
+    if (!p.structure.empty()) continue;
+    if (p.point && !inside(*p.point))
+      probes[i].fail("point", "the point is outside the fluid domain");
+    if (p.box_min && p.box_max && (!inside(*p.box_min) || !inside(*p.box_max)))
+      probes[i].fail("max", "the box reaches outside the fluid domain");
+  }
+}
+
 std::pair<Vec2, Vec2> ParticleArea::domain_or_box(const Scene& scene, double margin) const {
   if (domain) return *domain;
   Vec2 lo = Vec2::Constant(std::numeric_limits<double>::infinity()), hi = -lo;

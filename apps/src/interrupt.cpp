@@ -2,6 +2,7 @@
 
 #include <csignal>
 #include <fcntl.h>
+#include <mutex>
 #include <unistd.h>
 
 namespace fsi::app {
@@ -9,6 +10,11 @@ namespace fsi::app {
 namespace {
 
 volatile std::sig_atomic_t received_signal = 0;
+// The guards alive (nested runs, e.g. a progress callback that runs another scene, or runs in two
+// threads): the first installs the handlers and saves the previous ones, the last restores them
+// (issue 41: a single saved pair let an inner guard's restore re-install fsi's own handler).
+std::mutex guards_mutex;
+int guards = 0;
 struct sigaction previous_int, previous_term;
 
 // The run.json to leave on a second signal: two buffers, the handler reads the active one while
@@ -52,6 +58,8 @@ void record(int signal) {
 } // namespace
 
 InterruptGuard::InterruptGuard() {
+  const std::lock_guard<std::mutex> lock(guards_mutex);
+  if (guards++ > 0) return; // installed by an enclosing or concurrent run
   received_signal = 0;
   active = -1;
   struct sigaction action = {};
@@ -65,6 +73,8 @@ InterruptGuard::InterruptGuard() {
 }
 
 InterruptGuard::~InterruptGuard() {
+  const std::lock_guard<std::mutex> lock(guards_mutex);
+  if (--guards > 0) return;
   sigaction(SIGINT, &previous_int, nullptr);
   sigaction(SIGTERM, &previous_term, nullptr);
   active = -1;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <optional>
 #include <yaml-cpp/depthguard.h>
 
 namespace fsi::app {
@@ -50,7 +51,62 @@ std::vector<Step> parse_path(const std::string& path, const std::string& text,
   return steps;
 }
 
+/// Puts `entry` in `container`'s existing slot `step` (a map key or a list index) without
+/// assigning through the slot's old node, which a YAML alias may share with other slots. The
+/// slots after it are taken out and put back: the order and the other slots' nodes stay.
+void replace_slot(YAML::Node& container, const Step& step, const YAML::Node& entry) {
+  if (step.index >= 0) {
+    std::vector<YAML::Node> tail;
+    for (auto i = static_cast<std::size_t>(step.index); i < container.size(); ++i)
+      tail.push_back(container[i]);
+    for (std::size_t i = container.size(); i-- > static_cast<std::size_t>(step.index);)
+      container.remove(i);
+    container.push_back(entry);
+    for (std::size_t i = 1; i < tail.size(); ++i) container.push_back(tail[i]);
+    return;
+  }
+  std::vector<std::pair<YAML::Node, YAML::Node>> tail;
+  for (const auto& kv : container)
+    if (!tail.empty() || (kv.first.IsScalar() && kv.first.Scalar() == step.key))
+      tail.emplace_back(kv.first, kv.second);
+  for (const auto& kv : tail) container.remove(kv.first.Scalar());
+  for (const auto& [key, value] : tail)
+    container.force_insert(key, key.Scalar() == step.key ? entry : value);
+}
+
+/// The child at `step` if `node` has it.
+std::optional<YAML::Node> child(const YAML::Node& node, const Step& step) {
+  if (step.index >= 0) {
+    if (!node.IsSequence() || step.index >= static_cast<long>(node.size())) return std::nullopt;
+    return node[static_cast<std::size_t>(step.index)];
+  }
+  if (!node.IsMap() || !node[step.key]) return std::nullopt;
+  return node[step.key];
+}
+
 } // namespace
+
+void unshare_override_paths(YAML::Node& root, const std::vector<std::string>& overrides,
+                            const std::function<YAML::Node()>& reparse) {
+  for (const auto& text : overrides) {
+    const std::size_t eq = text.find('=');
+    if (eq == std::string::npos || eq == 0) continue;
+    std::vector<Step> steps;
+    try {
+      steps = parse_path(text.substr(0, eq), text, "");
+    } catch (const InputError&) {
+      continue;
+    }
+    YAML::Node node = root;
+    for (std::size_t k = 0; k < steps.size() && child(node, steps[k]); ++k) {
+      std::optional<YAML::Node> copy = reparse(); // pristine: no override has applied yet
+      for (std::size_t j = 0; j <= k && copy; ++j) copy = child(*copy, steps[j]);
+      if (!copy) break;
+      replace_slot(node, steps[k], *copy);
+      node.reset(*copy);
+    }
+  }
+}
 
 void apply_override(YAML::Node& root, const std::string& text, ReadContext& ctx) {
   // Every message names the scene file the override applies to, then the argument (at most
@@ -65,6 +121,10 @@ void apply_override(YAML::Node& root, const std::string& text, ReadContext& ctx)
   YAML::Node value;
   try {
     value = YAML::Load(value_text);
+    // One value: a second document (`1\n---\n7`) would be dropped silently (issue 41).
+    if (yaml_documents(value_text, 2) > 1)
+      throw InputError(where + path +
+                       ": the value holds a second YAML document (a '---' line); give one value");
   } catch (const YAML::DeepRecursion& e) {
     throw InputError(where + path + ": value nested too deeply (" + std::to_string(e.depth()) +
                      " levels)");

@@ -175,6 +175,7 @@ StateArchive make_archive(const Scene& scene, const std::vector<std::unique_ptr<
   a.put_integer("driver/threads", num_threads());
   a.put_integer("driver/failed", failed);
   a.put("driver/overrides", encode_strings(scene.overrides));
+  a.put_integer("driver/scene_digest", static_cast<std::int64_t>(scene.digest));
   for (const auto& m : models) m->write_state(a);
   return a;
 }
@@ -219,6 +220,12 @@ Clock read_archive(const Scene& scene, std::vector<std::unique_ptr<Model>>& mode
           override_difference(decode_strings(a.integers("driver/overrides")), scene.overrides);
       if (!diff.empty()) throw InputError(diff);
     }
+    // A scene edited since the checkpoint (checkpoints before the digest have none).
+    if (a.all_integers().count("driver/scene_digest") &&
+        static_cast<std::uint64_t>(a.integer("driver/scene_digest")) != scene.digest)
+      throw InputError("written for another version of " + scene.path.string() +
+                       ": the scene was edited since (a restart may change time.end only, in the "
+                       "file or by --set); restore the scene, or start a new run");
     if (c.time > scene.time.end * (1.0 + 1e-12))
       throw InputError("at t = " + format_g(c.time) +
                        " s, past time.end = " + format_g(scene.time.end) + " s of this run");
@@ -460,7 +467,17 @@ RunResult run_scene(const Scene& scene, std::vector<std::unique_ptr<Model>>& mod
         throw;
       }
       attempted = c.time + dt;
+      std::vector<std::optional<ParticleCount>> particles;
+      for (const auto& m : models) particles.push_back(m->particle_count());
       for (auto& m : models) m->advance(c.time, dt);
+      for (std::size_t k = 0; k < models.size(); ++k)
+        if (auto what = models[k]->non_finite())
+          throw RunError(*what + " after step " + std::to_string(c.step + 1) +
+                         ", t = " + format_g(attempted) + " s");
+      for (std::size_t k = 0; k < models.size(); ++k)
+        if (particles[k])
+          check_particle_loss(*particles[k], *models[k]->particle_count(), c.step + 1, c.time,
+                              attempted);
       ++c.step;
       c.time = scene.time.dt ? static_cast<double>(c.step) * *scene.time.dt : c.time + dt;
       // The last step ends at time.end exactly.
@@ -474,6 +491,8 @@ RunResult run_scene(const Scene& scene, std::vector<std::unique_ptr<Model>>& mod
         c.next_frame = std::min(c.next_frame + interval, end);
         update_last_words();
       }
+      for (auto& m : models)
+        for (const auto& note : m->take_notes()) log << "note: " << note << '\n';
       progress.update(c.time, c.step);
       if (options.on_step) options.on_step(c.time, c.step);
       if (checkpoint_due()) checkpoint();

@@ -2,6 +2,7 @@
 
 #include "coupling/registry.hpp"
 #include "fsi/core/error.hpp"
+#include "fsi/core/format.hpp"
 #include "fsi_app/output/interface_history.hpp"
 #include "fsi_app/overrides.hpp"
 #include "fsi_app/resources.hpp"
@@ -109,6 +110,9 @@ ProbeSpec read_probe(Section s) {
       return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
     });
     if (!ok_name) s.fail("name", "'" + p.name + "' is not a valid column name");
+    if (p.name == "time") // probes.csv's first column, and the Python result's time key
+      s.fail("name",
+             "'time' is reserved (the first column of probes.csv); name the probe otherwise");
     const auto on = structure_quantities();
     const bool on_structure = std::find(on.begin(), on.end(), p.quantity) != on.end();
     if (on_structure && p.structure.empty()) s.fail("structure", "required key missing");
@@ -125,6 +129,9 @@ ProbeSpec read_probe(Section s) {
   s.finish();
   return p;
 }
+
+/// The most frames a run may write (docs/reliability.md, issue 41).
+constexpr double kMaxFrames = 1e5;
 
 OutputSpec read_output(Section s, double end_time, std::vector<Section>& probe_sections) {
   OutputSpec o;
@@ -147,6 +154,12 @@ OutputSpec read_output(Section s, double end_time, std::vector<Section>& probe_s
   }
   if (!s.context().documenting() && o.interval > end_time)
     s.fail("interval", "is larger than time.end");
+  // Issue 41: 1e-12 s with Courant stepping wrote 2,029 frames (42 MB) in 25 s towards 1e12;
+  // what cannot finish is refused before step 0 (each frame is also at least one step).
+  if (!s.context().documenting() && !(end_time / o.interval <= kMaxFrames))
+    s.fail("interval", "time.end / output.interval = " + significant(end_time / o.interval, 3) +
+                           " frames; a run writes at most " + significant(kMaxFrames, 3) +
+                           " (give a larger interval)");
   s.finish();
   return o;
 }
@@ -163,6 +176,15 @@ MotionSpec read_motion(Section s) {
     m.amplitude = s.real("amplitude", Range::any(), "rad for rotation, m for translation");
     m.period = s.real("period", Range::positive(), "s");
     m.phase = s.real("phase", 0.0, Range::any(), "rad");
+    // Issue 41: a period so short that 2 pi / period or the acceleration amplitude
+    // amplitude (2 pi / period)^2 overflows makes the wall NaN (5e-324 passes "> 0").
+    const double omega = 2.0 * M_PI / m.period;
+    if (!doc && !(std::isfinite(omega) && std::isfinite(std::abs(m.amplitude) * omega * omega) &&
+                  std::isfinite(omega * omega)))
+      s.fail("period", significant(m.period, 6) + " s with amplitude " +
+                           significant(m.amplitude, 6) +
+                           ": the motion's acceleration amplitude * (2 pi / period)^2 is not "
+                           "finite; give a longer period");
   }
   if (doc || m.kind == "table") {
     m.table = s.file("table", "CSV with header; columns time (s) and value");
@@ -196,6 +218,12 @@ WallSpec read_wall(Section s) {
       if ((w.polyline[i + 1] - w.polyline[i]).norm() == 0.0)
         s.fail("polyline", "points " + std::to_string(i) + " and " + std::to_string(i + 1) +
                                " coincide (zero-length segment)");
+  // Issue 41: the closing segment of a closed polyline too (it failed later, naming no key).
+  if (!s.context().documenting() && w.closed && w.polyline.size() > 2 &&
+      (w.polyline.front() - w.polyline.back()).norm() == 0.0)
+    s.fail("polyline", "the last point " + std::to_string(w.polyline.size() - 1) +
+                           " is the first (closed: true joins them by a zero-length segment); "
+                           "drop the last point");
   s.finish();
   return w;
 }
@@ -267,10 +295,22 @@ CheckpointSpec read_checkpoint_spec(Section s) {
 void cross_check(Section& top, const Scene& scene, std::optional<Section>& fluid_section,
                  std::vector<Section>& structure_sections, std::vector<Section>& probe_sections) {
   std::set<std::string> names;
-  for (std::size_t i = 0; i < scene.structures.size(); ++i)
-    if (!names.insert(scene.structures[i].name).second)
-      structure_sections[i].fail("name",
-                                 "duplicate structure name '" + scene.structures[i].name + "'");
+  for (std::size_t i = 0; i < scene.structures.size(); ++i) {
+    const std::string& name = scene.structures[i].name;
+    // The name is a group of fields.h5 and checkpoints, a grid of fields.xmf and a run.json key.
+    const bool ok = !name.empty() && std::all_of(name.begin(), name.end(), [](char c) {
+      return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-';
+    });
+    if (!ok)
+      structure_sections[i].fail("name", "'" + name +
+                                             "' is not a valid name (letters, digits, _ and -: "
+                                             "it names output groups)");
+    if (name == "particles")
+      structure_sections[i].fail("name", "'particles' is reserved (the fluid's grid in "
+                                         "fields.h5); name the structure otherwise");
+    if (!names.insert(name).second)
+      structure_sections[i].fail("name", "duplicate structure name '" + name + "'");
+  }
   for (std::size_t i = 0; i < scene.output.probes.size(); ++i) {
     const auto& p = scene.output.probes[i];
     if (!p.structure.empty()) {
@@ -396,6 +436,21 @@ void fail_at(const Scene& scene, int line, const std::string& key, const std::st
   throw InputError(scene.path.string() + ":" + std::to_string(line) + ": " + key + ": " + what);
 }
 
+namespace {
+/// FNV-1a 64 of the tree as YAML without time.end (the tree is read already: changed in place).
+std::uint64_t scene_digest(YAML::Node& root) {
+  if (root["time"].IsMap()) root["time"].remove("end");
+  YAML::Emitter out;
+  out << root;
+  std::uint64_t h = 14695981039346656037ULL;
+  for (const char c : std::string(out.c_str())) {
+    h ^= static_cast<unsigned char>(c);
+    h *= 1099511628211ULL;
+  }
+  return h;
+}
+} // namespace
+
 Scene load_scene(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
   return parse_scene(read_scene_file(file), file, overrides);
 }
@@ -407,8 +462,10 @@ Scene parse_scene(const std::string& text, const std::filesystem::path& file,
   ctx.dir = file.parent_path();
   YAML::Node root = load_scene_yaml(text, file.string());
   if (!root.IsMap()) throw InputError(file.string() + ":1: scene: expected a block of keys");
+  unshare_override_paths(root, overrides, [&] { return load_scene_yaml(text, file.string()); });
   for (const auto& o : overrides) apply_override(root, o, ctx);
   Scene scene = read_scene(Section(root, "", ctx));
+  scene.digest = scene_digest(root);
   scene.path = file;
   scene.overrides = overrides;
   if (scene.name.empty()) scene.name = file.stem().string();

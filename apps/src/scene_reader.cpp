@@ -89,6 +89,15 @@ struct DocumentStarts final : YAML::EventHandler {
 };
 } // namespace
 
+std::size_t yaml_documents(const std::string& text, std::size_t at_most) {
+  DocumentStarts starts;
+  std::istringstream in(text);
+  YAML::Parser parser(in);
+  while (starts.marks.size() < at_most && parser.HandleNextDocument(starts)) {
+  }
+  return starts.marks.size();
+}
+
 YAML::Node load_scene_yaml(const std::string& text, const std::string& file) {
   // The first document, then whether a second one starts: at most two documents are parsed
   // (YAML::LoadAll runs out of memory on some malformed inputs, making empty documents forever).
@@ -438,7 +447,12 @@ std::filesystem::path Section::file(const std::string& key, const std::string& d
   std::filesystem::path p = node.Scalar();
   if (p.is_relative()) p = ctx_->dir / p;
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(p, ec)) fail(key, "file not found: " + p.string());
+  // Say what the path is when it is not a file (issue 41: a folder, FIFO or device).
+  const std::filesystem::file_status st = std::filesystem::status(p, ec);
+  if (ec || !std::filesystem::exists(st)) fail(key, "file not found: " + p.string());
+  if (std::filesystem::is_directory(st)) fail(key, p.string() + " is a folder; give a file");
+  if (!std::filesystem::is_regular_file(st))
+    fail(key, p.string() + " is not a regular file (a FIFO, device or socket); give a file");
   return p;
 }
 

@@ -5,7 +5,9 @@ namespace fsi::materials {
 void visit_options(MaterialOptions& o, OptionVisitor& v) {
   v.required("youngs_modulus", o.youngs_modulus, Range::positive(), "E, Pa");
   v.required("poisson_ratio", o.poisson_ratio, Range::open(-1.0, 0.5), "nu");
-  v.required("density", o.density, Range::positive(), "rho_s, kg/m^3");
+  // Issue 41: a denormal density (5e-324) made the mass matrix unfactorisable mid-run.
+  v.required("density", o.density, Range::closed(1e-3, 1e6),
+             "rho_s, kg/m^3 (a tiny or denormal density leaves the mass matrix unfactorisable)");
   v.choice("plane", o.plane,
            {{"strain", PlaneModel::plane_strain}, {"stress", PlaneModel::plane_stress}},
            "2D idealisation");

@@ -95,6 +95,11 @@ def _override_list(overrides):
         return []
     if isinstance(overrides, dict):
         return [_override_text(k, v) for k, v in overrides.items()]
+    # A lone string would be iterated character by character (issue 41).
+    if isinstance(overrides, (str, bytes)) or not hasattr(overrides, "__iter__"):
+        raise TypeError("overrides: expected a dict (key -> value) or a list of 'key=value' "
+                        f"strings, got {type(overrides).__name__} {overrides!r}; e.g. "
+                        f"[{overrides!r}]")
     return [str(o) for o in overrides]
 
 

@@ -82,6 +82,37 @@ public:
   }
 };
 
+/// ldlt_or_lu: LDL^T first for every factorisation, UMFPACK LU when LDL^T refuses K. Deciding
+/// per factorisation keeps the result independent of history (a restart is bitwise the run).
+class LdltOrLu final : public LinearSolver {
+public:
+  void analyze(const SparseMatrix& K) override {
+    ldlt_.analyze(K);
+    lu_analyzed_ = false;
+  }
+  void factorize(const SparseMatrix& K) override {
+    try {
+      ldlt_.factorize(K);
+      active_ = &ldlt_;
+    } catch (const RunError&) {
+      if (!lu_analyzed_) lu_.analyze(K), lu_analyzed_ = true;
+      lu_.factorize(K);
+      active_ = &lu_;
+      ++fallbacks_;
+    }
+  }
+  Vector solve(const Vector& b) override { return active_->solve(b); }
+  long fallbacks() const override { return fallbacks_; }
+
+private:
+  DirectSolver<Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower>> ldlt_{
+      LinearSolverKind::simplicial_ldlt};
+  DirectSolver<Eigen::UmfPackLU<SparseMatrix>> lu_{LinearSolverKind::umfpack};
+  LinearSolver* active_ = &ldlt_;
+  bool lu_analyzed_ = false;
+  long fallbacks_ = 0;
+};
+
 template <class Preconditioner>
 using Cg = Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper, Preconditioner>;
 
@@ -120,6 +151,8 @@ const char* to_string(LinearSolverKind kind) {
     return "umfpack";
   case LinearSolverKind::simplicial_ldlt:
     return "simplicial_ldlt";
+  case LinearSolverKind::ldlt_or_lu:
+    return "ldlt_or_lu";
   }
   return "unknown";
 }
@@ -149,6 +182,8 @@ std::unique_ptr<LinearSolver> make_linear_solver(const LinearSolverOptions& o) {
   case K::simplicial_ldlt:
     return std::make_unique<DirectSolver<Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower>>>(
         o.kind);
+  case K::ldlt_or_lu:
+    return std::make_unique<LdltOrLu>();
   }
   throw InputError("linear_solver: unknown kind");
 }

@@ -22,11 +22,13 @@ void visit_options(NewtonOptions& o, OptionVisitor& v) {
 
 void visit_options(LinearSolverOptions& o, OptionVisitor& v) {
   v.choice("linear_solver", o.kind,
-           {{"cholmod", LinearSolverKind::cholmod},
+           {{"auto", LinearSolverKind::ldlt_or_lu},
+            {"cholmod", LinearSolverKind::cholmod},
             {"umfpack", LinearSolverKind::umfpack},
             {"ldlt", LinearSolverKind::simplicial_ldlt},
             {"cg", LinearSolverKind::cg_incomplete_cholesky}},
-           "sparse direct (CHOLMOD, UMFPACK, Eigen LDLT) or preconditioned CG");
+           "sparse direct (CHOLMOD, UMFPACK, Eigen LDLT; auto: LDLT, UMFPACK LU for a matrix LDLT "
+           "refuses, counted in run.json) or preconditioned CG");
 }
 
 } // namespace fsi::fem

@@ -342,14 +342,15 @@ TEST_CASE("apps: guards stop the run with one message, the last state and exit s
   SECTION("Newton-Raphson does not converge") {
     require_guard(structure, "newton",
                   {"--threads", "1", "--set", "structures[0].newton.max_iterations=1"},
-                  {"Newton did not converge in 1 iterations", "largest residual at node ",
-                   "structure step 1, t = 0.001"});
+                  {"structure 'beam': Newton did not converge in 1 iterations",
+                   "largest residual at node ", "structure step 1, t = 0.001"});
   }
   SECTION("an inverted element") {
     require_guard(
         structure, "inverted",
         {"--threads", "1", "--set", "structures[0].loads=[{boundary: right, force: [0, -1.0e9]}]"},
-        {"element ", "det F = ", "inverted element", "structure step 1, t = 0.001"});
+        {"structure 'beam': element ", "det F = ", "inverted element",
+         "structure step 1, t = 0.001"});
   }
   SECTION("coupling does not converge within the scene's limit") {
     require_guard(coupled, "coupling",

@@ -32,6 +32,18 @@ class SceneTest(unittest.TestCase):
                 self.assertEqual(str(caught.exception), err.strip())
                 self.assertRegex(str(caught.exception), r"^[^:]+cantilever\.yaml(:\d+)?: ")
 
+    def test_overrides_as_one_string_are_a_type_error(self):
+        # Issue 41: 'time.end=0.005' was iterated character by character.
+        for bad in ["time.end=0.005", b"time.end=0.005", 7]:
+            with self.subTest(bad=bad):
+                with self.assertRaises(TypeError) as caught:
+                    fsi.load(CANTILEVER, bad)
+                self.assertIn("overrides: expected a dict (key -> value) or a list of "
+                              "'key=value' strings, got " + type(bad).__name__,
+                              str(caught.exception))
+        with self.assertRaises(TypeError):
+            fsi.load(CANTILEVER).with_overrides("time.end=0.005")
+
     def test_override_values_from_python(self):
         # Numbers, lists and strings become YAML values; the result is checked like --set.
         scene = fsi.load(CANTILEVER, {"time.end": 0.5, "gravity": [0.0, -1.0],

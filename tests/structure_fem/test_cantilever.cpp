@@ -98,6 +98,30 @@ TEST_CASE("fem: CHOLMOD and LDLT refuse an indefinite matrix", "[structure_fem][
   CHECK_THAT(x[1], Catch::Matchers::WithinAbs(-0.5, 1e-15));
 }
 
+TEST_CASE("fem: the default solver factorises an indefinite matrix by LU and counts it",
+          "[structure_fem][solver]") {
+  // Issue 41 item 13: the default must not stop where LDL^T without pivoting does.
+  CHECK(LinearSolverOptions{}.kind == LinearSolverKind::ldlt_or_lu);
+  SparseMatrix A(3, 3);
+  A.insert(0, 0) = 4.0;
+  A.insert(1, 1) = -2.0;
+  A.insert(2, 2) = 1.0;
+  A.makeCompressed();
+  SparseMatrix B = A;
+  B.coeffRef(1, 1) = 2.0; // positive definite: LDL^T again, no fallback
+  auto solver = make_linear_solver({});
+  solver->analyze(A);
+  solver->factorize(A);
+  Vector x = solver->solve(Vector::Ones(3));
+  CHECK(x[0] == 0.25);
+  CHECK(x[1] == -0.5);
+  CHECK(solver->fallbacks() == 1);
+  solver->factorize(B);
+  x = solver->solve(Vector::Ones(3));
+  CHECK(x[1] == 0.5);
+  CHECK(solver->fallbacks() == 1);
+}
+
 TEST_CASE("fem: past the buckling load CHOLMOD and LDLT stop, UMFPACK follows the straight path",
           "[structure_fem][solver]") {
   // Slender plane-stress column, EI = 1, Euler load of a cantilever pi^2 EI / (4 L^2) = 2.47;
@@ -125,4 +149,7 @@ TEST_CASE("fem: past the buckling load CHOLMOD and LDLT stop, UMFPACK follows th
   const int tip = tip_node(beam_mesh(c), c);
   CHECK_THAT(u[2 * tip], Catch::Matchers::WithinRel(-P * b.L / (b.E * b.h), 1e-3));
   CHECK(std::abs(u[2 * tip + 1]) < 1e-12);
+  // The default (ldlt_or_lu) takes the same path: LU where LDL^T refuses K_T.
+  const Vector u_auto = solve(LinearSolverKind::ldlt_or_lu);
+  CHECK((u_auto - u).norm() <= 1e-12 * u.norm());
 }

@@ -44,6 +44,9 @@ public:
   void write_frame(FieldsFile& file, const std::vector<std::string>& fields) const override;
   std::optional<double> probe(const ProbeSpec& probe) const override;
   void report(JsonObject& run) const override;
+  std::vector<std::string> take_notes() override;
+  std::optional<ParticleCount> particle_count() const override { return fluid_->particle_count(); }
+  std::optional<std::string> non_finite() const override;
   /// The coupler with both participants (coupling::CouplingScheme::write_state).
   void write_state(StateArchive& archive) const override { scheme_->write_state(archive); }
   void read_state(const StateArchive& archive) override { scheme_->read_state(archive); }

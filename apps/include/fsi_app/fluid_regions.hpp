@@ -20,6 +20,11 @@ struct ParticleArea {
 /// that the spacing l0 fits every region.
 ParticleArea read_particle_area(Section& s, double l0);
 
+/// The regions and every fluid probe's point (or box) lie in `domain` (the particles' box,
+/// given or derived): s.fail names fluid.domain (fluid.regions without one) or the probe's key.
+void check_in_domain(const Scene& scene, Section& s, std::vector<Section>& probes,
+                     const ParticleArea& area, const std::pair<Vec2, Vec2>& domain);
+
 /// Each region on its own lattice at spacing l0, l0/2 from the scene's walls (as written) and
 /// outside the `solid` areas. InputError (scene file and line) when no particle fits.
 std::vector<Vec2> fill_regions(const Scene& scene, const std::vector<Polygon>& regions, double l0,

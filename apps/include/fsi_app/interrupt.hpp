@@ -10,13 +10,15 @@ namespace fsi::app {
 
 class InterruptGuard {
 public:
-  /// Installs the handlers; the destructor restores the previous ones.
+  /// Installs the handlers; the destructor restores the previous ones. Re-entrant: while guards
+  /// nest or overlap (any order, any thread) the first installs and the last restores, and a
+  /// signal stops every run they guard.
   InterruptGuard();
   ~InterruptGuard();
   InterruptGuard(const InterruptGuard&) = delete;
   InterruptGuard& operator=(const InterruptGuard&) = delete;
 
-  /// The signal received since construction, or 0.
+  /// The signal received since the first live guard was made, or 0.
   int received() const;
   /// What a second signal writes (to FILE.tmp, renamed to FILE) before it ends the process.
   void set_last_words(const std::filesystem::path& file, const std::string& text);

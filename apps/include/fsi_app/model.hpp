@@ -4,6 +4,7 @@
 #include "fsi/core/state_archive.hpp"
 #include "fsi_app/output/fields_file.hpp"
 #include "fsi_app/output/json.hpp"
+#include "fsi_app/particle_guard.hpp"
 #include "fsi_app/scene.hpp"
 
 #include <filesystem>
@@ -38,6 +39,15 @@ public:
   virtual std::optional<double> probe(const ProbeSpec& probe) const = 0;
   /// Adds counts and statistics (elements, particles, iterations) to run.json.
   virtual void report(JsonObject& run) const = 0;
+  /// A particle fluid's count and domain, for the driver's particle-loss guard (default: none).
+  virtual std::optional<ParticleCount> particle_count() const { return std::nullopt; }
+  /// The first non-finite position or velocity of what the model moves (walls, structure nodes
+  /// or particles), named, e.g. "wall 'paddle' node 0 at (nan, nan) m"; the driver stops the run
+  /// on it (issue 41: a wall could go NaN and the run complete).
+  virtual std::optional<std::string> non_finite() const { return std::nullopt; }
+  /// What the user should know since the last call (e.g. a solver's fallback); the driver
+  /// prints each as `note: ...` on the log after the step.
+  virtual std::vector<std::string> take_notes() { return {}; }
 };
 
 } // namespace fsi::app

@@ -5,6 +5,7 @@
 #include "coupling/options.hpp"
 #include "fsi/core/types.hpp"
 
+#include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -112,6 +113,9 @@ struct Scene {
   std::optional<CouplingSpec> coupling;
   std::optional<CheckpointSpec> checkpoint; ///< absent: checkpoints only on SIGINT/SIGTERM
   std::vector<std::string> overrides;       ///< `key=value` as given on the command line
+  /// FNV-1a of the scene tree after the overrides, without time.end (the one key a restart may
+  /// change): a restart of an edited scene is refused (issue 41).
+  std::uint64_t digest = 0;
 };
 
 /// `FILE:LINE: KEY: what` for problems found after parsing (e.g. while building a mesh).

@@ -54,6 +54,9 @@ std::string read_scene_file(const std::filesystem::path& file);
 /// syntax error and on a second document (naming the lines of both).
 YAML::Node load_scene_yaml(const std::string& text, const std::string& file);
 
+/// How many YAML documents `text` holds, counting at most `at_most` (parse errors propagate).
+std::size_t yaml_documents(const std::string& text, std::size_t at_most);
+
 class Section {
 public:
   /// `key_line` is the 1-based line of the key that opened this block (0 for the top level).

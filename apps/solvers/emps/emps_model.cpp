@@ -1,6 +1,7 @@
 #include "emps/emps_model.hpp"
 
 #include "fsi/core/error.hpp"
+#include "fsi_app/finite_guard.hpp"
 #include "fsi_app/output/json_options.hpp"
 #include "fsi_app/wall_motion.hpp"
 #include "particles/kernels.hpp"
@@ -25,13 +26,17 @@ EmpsModel::EmpsModel(const Scene& scene, const std::vector<InterfaceMesh>& inter
     : walls_(std::make_unique<erp::WallSet>()) {
   int group = 0;
   for (const auto& w : scene.walls) {
+    wall_names_.push_back("wall '" + w.name + "'");
     if (w.motion)
       walls_->add_rigid_polyline(w.polyline, w.closed, group++, w.motion->pivot, make_motion(w));
     else
       walls_->add_polyline(w.polyline, w.closed, group++);
   }
   interface_walls_.reserve(interfaces.size()); // the adapter keeps a reference to the list
-  for (const auto& mesh : interfaces) interface_walls_.emplace_back(*walls_, mesh, group++);
+  for (const auto& mesh : interfaces) {
+    wall_names_.push_back("interface " + std::to_string(interface_walls_.size()));
+    interface_walls_.emplace_back(*walls_, mesh, group++);
+  }
   const FluidSpec& f = scene.fluid->as<FluidSpec>();
   const std::vector<Vec2> positions = fill_regions(scene, f.area.regions, f.options.l0, solid);
   initial_count_ = positions.size();
@@ -141,6 +146,23 @@ void EmpsModel::write_state(StateArchive& archive) const {
 void EmpsModel::read_state(const StateArchive& archive) {
   fluid_->read_state(archive, "fluid/");
   walls_->read_state(archive, "walls/");
+}
+
+std::optional<std::string> EmpsModel::non_finite() const {
+  const erp::WallSegments& s = walls_->segments();
+  const erp::WallNodes& n = walls_->nodes();
+  for (std::size_t k = 0; k < s.size(); ++k)
+    for (const int node : s.node[k])
+      if (auto what = non_finite_point(
+              wall_names_[static_cast<std::size_t>(s.group[k])] + " node " + std::to_string(node),
+              n.x[static_cast<std::size_t>(node)], n.v[static_cast<std::size_t>(node)]))
+        return what;
+  return std::nullopt;
+}
+
+std::optional<ParticleCount> EmpsModel::particle_count() const {
+  const auto& o = fluid_->options();
+  return ParticleCount{fluid_->particles().size(), {o.domain_min, o.domain_max}};
 }
 
 void EmpsModel::report(JsonObject& run) const {

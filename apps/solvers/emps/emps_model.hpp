@@ -32,6 +32,8 @@ public:
   void declare(FieldsFile& file) const override;
   void write_frame(FieldsFile& file, const std::vector<std::string>& fields) const override;
   std::optional<double> probe(const ProbeSpec& probe) const override;
+  std::optional<ParticleCount> particle_count() const override;
+  std::optional<std::string> non_finite() const override;
   void report(JsonObject& run) const override;
   /// The fluid under "fluid/", all wall nodes under "walls/".
   void write_state(StateArchive& archive) const override;
@@ -56,6 +58,7 @@ private:
   std::unique_ptr<emps::EmpsFluid> fluid_;
   std::unique_ptr<FluidAdapter> adapter_;
   std::size_t initial_count_ = 0;
+  std::vector<std::string> wall_names_; ///< by wall group: the scene's walls, then the interfaces
   mutable std::vector<double> xy_, v_, flag_; // output buffers
 };
 

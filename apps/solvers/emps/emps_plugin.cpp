@@ -3,6 +3,7 @@
 #include "emps/emps_plugin.hpp"
 
 #include "emps/emps_model.hpp"
+#include "fsi_app/fluid_regions.hpp"
 
 #include <cmath>
 
@@ -36,8 +37,12 @@ Footprint footprint(const Scene& scene) {
                             {o.domain_min, o.domain_max}, {o.r_e() * (1.0 + o.skin), 3, 4});
 }
 
-// Every rule is local to the block (read_fluid).
-void check(const Scene&, Section&, std::vector<Section>&) {}
+// Against the scene: the regions and the fluid probes lie in the domain (given or derived).
+void check(const Scene& scene, Section& s, std::vector<Section>& probes) {
+  const emps::FluidOptions o = fluid_options(scene);
+  check_in_domain(scene, s, probes, scene.fluid->as<FluidSpec>().area,
+                  {o.domain_min, o.domain_max});
+}
 
 // The interfaces as ERP walls (eqs. 47-51) check their meshes; the regions are filled.
 void validate(const Scene& scene, const std::vector<InterfaceMesh>& interfaces,

@@ -1,6 +1,7 @@
 #include "fem/fem_model.hpp"
 
 #include "fsi/core/error.hpp"
+#include "fsi_app/finite_guard.hpp"
 #include "fsi_app/wall_motion.hpp"
 #include "structure_fem/gmsh_reader.hpp"
 #include "structure_fem/loads.hpp"
@@ -206,7 +207,13 @@ std::vector<Polygon> FemModel::occupied_area() const {
 }
 
 void FemModel::advance(double /*time*/, double dt) {
-  const auto& report = structure_->advance(dt);
+  const fem::StepReport* step = nullptr;
+  try { // the library's message has the step and time; the run names the structure (issue 41)
+    step = &structure_->advance(dt);
+  } catch (const RunError& e) {
+    throw RunError("structure '" + name() + "': " + e.what());
+  }
+  const auto& report = *step;
   newton_iterations_ += report.iterations;
   newton_max_ = std::max(newton_max_, report.iterations);
   newton_halvings_ += report.halvings;
@@ -214,6 +221,33 @@ void FemModel::advance(double /*time*/, double dt) {
   if (report.substeps > 1) ++substepped_steps_, substeps_ += report.substeps;
   roundoff_stops_ += report.roundoff_stops;
   ++steps_;
+  const long fallbacks = structure_->linear_solver_fallbacks();
+  lu_fallbacks_ += fallbacks - lu_fallbacks_seen_;
+  lu_fallbacks_seen_ = fallbacks;
+}
+
+std::optional<std::string> FemModel::non_finite() const {
+  const auto& u = structure_->displacement();
+  const auto& v = structure_->velocity();
+  const auto& X = structure_->mesh().X;
+  for (std::size_t k = 0; k < X.size(); ++k) {
+    const auto d = 2 * static_cast<Eigen::Index>(k);
+    if (auto what = non_finite_point("structure '" + name() + "' node " + std::to_string(k),
+                                     X[k] + Vec2(u[d], u[d + 1]), Vec2(v[d], v[d + 1])))
+      return what;
+  }
+  return std::nullopt;
+}
+
+std::vector<std::string> FemModel::take_notes() {
+  if (lu_noted_ || lu_fallbacks_ == 0) return {};
+  lu_noted_ = true;
+  std::ostringstream s;
+  s << "structure '" << name() << "': the stiffness matrix is not positive definite at structure "
+    << "step " << structure_->step() << ", t = " << structure_->time()
+    << " s; LDLT gave way to UMFPACK LU there (linear_solver: auto; counted in run.json as "
+    << "structure_" << name() << ".linear_solver_lu_fallbacks)";
+  return {s.str()};
 }
 
 void FemModel::declare(FieldsFile& file) const {
@@ -255,6 +289,7 @@ void FemModel::write_state(StateArchive& archive) const {
               std::vector<std::int64_t>{newton_halvings_, steps_with_halvings_, substepped_steps_,
                                         substeps_});
   archive.put("run/" + prefix + "roundoff_stops", std::vector<std::int64_t>{roundoff_stops_});
+  archive.put("run/" + prefix + "lu_fallbacks", std::vector<std::int64_t>{lu_fallbacks_});
 }
 
 void FemModel::read_state(const StateArchive& archive) {
@@ -269,6 +304,8 @@ void FemModel::read_state(const StateArchive& archive) {
   }
   if (archive.all_integers().count("run/" + prefix + "roundoff_stops")) // absent before the count
     roundoff_stops_ = archive.integers("run/" + prefix + "roundoff_stops", 1)[0];
+  if (archive.all_integers().count("run/" + prefix + "lu_fallbacks")) // absent before the count
+    lu_fallbacks_ = archive.integers("run/" + prefix + "lu_fallbacks", 1)[0];
 }
 
 void FemModel::report(JsonObject& run) const {
@@ -282,7 +319,8 @@ void FemModel::report(JsonObject& run) const {
       .add("steps_with_newton_halvings", static_cast<long long>(steps_with_halvings_))
       .add("substepped_steps", static_cast<long long>(substepped_steps_))
       .add("substeps", static_cast<long long>(substeps_))
-      .add("newton_roundoff_stops", static_cast<long long>(roundoff_stops_));
+      .add("newton_roundoff_stops", static_cast<long long>(roundoff_stops_))
+      .add("linear_solver_lu_fallbacks", static_cast<long long>(lu_fallbacks_));
   run.add("structure_" + name(), s);
 }
 

@@ -36,7 +36,10 @@ public:
   void declare(FieldsFile& file) const override;
   void write_frame(FieldsFile& file, const std::vector<std::string>& fields) const override;
   std::optional<double> probe(const ProbeSpec& probe) const override;
+  std::optional<std::string> non_finite() const override;
   void report(JsonObject& run) const override;
+  /// Once per run: the first factorisation the default solver did by LU.
+  std::vector<std::string> take_notes() override;
   /// The structure and its Newton counters under "structures/<name>/", coupled or not.
   void write_state(StateArchive& archive) const override;
   void read_state(const StateArchive& archive) override;
@@ -60,7 +63,10 @@ private:
   int newton_max_ = 0;
   long newton_halvings_ = 0, steps_with_halvings_ = 0; ///< Newton safeguard (Structure::newton)
   long substepped_steps_ = 0, substeps_ = 0;           ///< retried steps, their sub-steps
-  long roundoff_stops_ = 0; ///< Newton solves ended at the round-off floor (fem::NewtonOptions)
+  long roundoff_stops_ = 0;    ///< Newton solves ended at the round-off floor (fem::NewtonOptions)
+  long lu_fallbacks_ = 0;      ///< factorisations done by LU (fem::LinearSolverKind::ldlt_or_lu)
+  long lu_fallbacks_seen_ = 0; ///< the structure's own count at the last advance
+  bool lu_noted_ = false;
 };
 
 } // namespace fsi::app::fem_plugin

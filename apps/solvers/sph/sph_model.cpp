@@ -2,6 +2,7 @@
 
 #include "fsi/core/error.hpp"
 #include "fsi/core/state_archive.hpp"
+#include "fsi_app/finite_guard.hpp"
 #include "fsi_app/fluid_regions.hpp"
 #include "fsi_app/wall_motion.hpp"
 
@@ -302,6 +303,22 @@ void SphModel::report(JsonObject& run) const {
       .add("acoustic_steps", static_cast<long long>(fluid_->steps()))
       .add("advection_steps", static_cast<long long>(fluid_->advection_steps()));
   run.add("fluid", f);
+}
+
+std::optional<std::string> SphModel::non_finite() const {
+  const sph::WallParticles& w = fluid_->walls();
+  for (std::size_t i = 0; i < w.size(); ++i) {
+    const std::string what = i < first_point_
+                                 ? "wall particle " + std::to_string(i)
+                                 : "interface point " + std::to_string(i - first_point_);
+    if (auto bad = non_finite_point(what, {w.x[i], w.y[i]}, {w.vx[i], w.vy[i]})) return bad;
+  }
+  return std::nullopt;
+}
+
+std::optional<ParticleCount> SphModel::particle_count() const {
+  const auto& o = fluid_->options();
+  return ParticleCount{fluid_->particles().size(), {o.domain_min, o.domain_max}};
 }
 
 void SphModel::write_state(StateArchive& archive) const {

@@ -30,6 +30,8 @@ public:
   std::optional<double> stable_dt(double courant) const override;
   void write_frame(FieldsFile& file, const std::vector<std::string>& fields) const override;
   std::optional<double> probe(const ProbeSpec& probe) const override;
+  std::optional<ParticleCount> particle_count() const override;
+  std::optional<std::string> non_finite() const override;
   void report(JsonObject& run) const override;
   /// The fluid under "fluid/", the interface motion at the fluid's time under "fluid/interface/".
   void write_state(StateArchive& archive) const override;

@@ -11,25 +11,14 @@ namespace fsi::app::sph_plugin {
 
 namespace {
 
-bool inside(const sph::SphOptions& o, const Vec2& p) {
-  return p.x() >= o.domain_min.x() && p.x() <= o.domain_max.x() && p.y() >= o.domain_min.y() &&
-         p.y() <= o.domain_max.y();
-}
-
-// Against the scene: the regions and pressure probes lie in the domain (given or derived), a
+// Against the scene: the regions and the fluid probes lie in the domain (given or derived), a
 // wall_force probe gives the total only.
 void check(const Scene& scene, Section& s, std::vector<Section>& probes) {
   const SphSpec& f = scene.fluid->as<SphSpec>();
   const sph::SphOptions o = sph_options(scene);
-  for (std::size_t i = 0; i < f.area.regions.size(); ++i)
-    for (const Vec2& p : f.area.regions[i])
-      if (!inside(o, p))
-        s.fail(f.area.domain ? "domain" : "regions",
-               "fluid region " + std::to_string(i) + " reaches outside the domain");
+  check_in_domain(scene, s, probes, f.area, {o.domain_min, o.domain_max});
   for (std::size_t i = 0; i < scene.output.probes.size(); ++i) {
     const ProbeSpec& p = scene.output.probes[i];
-    if (p.quantity == "pressure" && p.point && !inside(o, *p.point))
-      probes[i].fail("point", "the pressure point is outside the fluid domain");
     if ((p.quantity == "wall_force_x" || p.quantity == "wall_force_y") && p.part != "total")
       probes[i].fail("part", "fluid type sph gives the total wall force only (part: total)");
   }

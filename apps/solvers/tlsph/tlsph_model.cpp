@@ -2,6 +2,7 @@
 
 #include "fsi/core/error.hpp"
 #include "fsi/core/state_archive.hpp"
+#include "fsi_app/finite_guard.hpp"
 #include "fsi_app/wall_motion.hpp"
 #include "geometry_erp/motion.hpp"
 
@@ -110,8 +111,20 @@ std::vector<Polygon> TlsphModel::occupied_area() const {
 }
 
 void TlsphModel::advance(double time, double dt) {
-  substeps_ += solid_->advance(time, dt);
+  try { // the run names the structure (issue 41)
+    substeps_ += solid_->advance(time, dt);
+  } catch (const RunError& e) {
+    throw RunError("structure '" + name() + "': " + e.what());
+  }
   ++steps_;
+}
+
+std::optional<std::string> TlsphModel::non_finite() const {
+  for (std::size_t i = 0; i < solid_->size(); ++i)
+    if (auto what = non_finite_point("structure '" + name() + "' particle " + std::to_string(i),
+                                     solid_->position(i), solid_->velocity(i)))
+      return what;
+  return std::nullopt;
 }
 
 void TlsphModel::write_frame(FieldsFile& file, const std::vector<std::string>& fields) const {

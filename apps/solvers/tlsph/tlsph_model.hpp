@@ -23,6 +23,7 @@ public:
   /// displacement_x|y at the probe's point: its nearest particle's, or the kernel interpolation
   /// (interpolate: true); displacement_x|y_tank: the same in the clamped_motion wall's frame.
   std::optional<double> probe(const ProbeSpec& probe) const override;
+  std::optional<std::string> non_finite() const override;
   void report(JsonObject& run) const override;
   /// The solid and its counters under "structures/<name>/".
   void write_state(StateArchive& archive) const override;

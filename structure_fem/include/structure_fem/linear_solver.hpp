@@ -15,11 +15,15 @@ enum class LinearSolverKind {
   cholmod,                ///< sparse direct supernodal Cholesky, CHOLMOD (SPD K)
   umfpack,                ///< sparse direct LU, UMFPACK (any nonsingular K, e.g. indefinite)
   simplicial_ldlt,        ///< Eigen's sparse LDL^T (symmetric, no pivoting)
+  /// The default: LDL^T, and UMFPACK LU for each factorisation LDL^T refuses (a K_eff that is
+  /// not positive definite, e.g. a rubber beam at large deformation); counted in fallbacks().
+  ldlt_or_lu,
 };
 
 struct LinearSolverOptions {
-  /// The default: fastest on 2D meshes of 48-20,000 T6 (docs/performance.md "structure_fem").
-  LinearSolverKind kind = LinearSolverKind::simplicial_ldlt;
+  /// The default: LDL^T, the fastest on 2D meshes of 48-20,000 T6 (docs/performance.md
+  /// "structure_fem"), with LU where it fails.
+  LinearSolverKind kind = LinearSolverKind::ldlt_or_lu;
   double cg_tolerance = 1e-12; ///< relative residual ||K x - b|| / ||b|| of CG, in (0, 1)
   int cg_max_iterations = 0;   ///< 0: Eigen's default (2 n); else >= 1
 };
@@ -38,6 +42,8 @@ public:
   virtual Vector solve(const Vector& b) = 0;
   /// Iterations of the last solve (1 for direct solvers).
   virtual int iterations() const { return 1; }
+  /// Factorisations done by the fallback LU since construction (ldlt_or_lu; else 0).
+  virtual long fallbacks() const { return 0; }
 };
 
 std::unique_ptr<LinearSolver> make_linear_solver(const LinearSolverOptions& options);

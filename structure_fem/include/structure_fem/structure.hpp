@@ -166,6 +166,9 @@ public:
   /// Energies of the free motion; the work of prescribed motions is not counted.
   Energies energies() const;
 
+  /// Factorisations the default solver did by LU since construction (LinearSolver::fallbacks).
+  long linear_solver_fallbacks() const { return solver_->fallbacks(); }
+
   /// The report of the last advance().
   const StepReport& last_report() const { return report_; }
 
