@@ -1,7 +1,7 @@
 #pragma once
-// Binning shared by CellGrid and PeriodicGrid: the cell index along an axis, and the counting sort
-// (cost linear in the particle count; stable: within a cell, particles keep their index order, so
-// the binning is deterministic).
+// Binning of CellBinning: the cell index along an axis, and the counting sort (cost linear in the
+// particle count; stable: within a cell, particles keep their index order, so the binning is
+// deterministic).
 #include "fsi/core/parallel.hpp"
 
 #include <algorithm>

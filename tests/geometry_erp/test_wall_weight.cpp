@@ -5,6 +5,8 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <numbers>
+#include <utility>
 
 using namespace fsi::erp;
 using Catch::Matchers::WithinAbs;
@@ -25,15 +27,21 @@ double block_pnd(int k, int rows, int half, double l0, const WeightFunction& w) 
 
 } // namespace
 
-TEST_CASE("erp: n0 and lambda0 of the quadratic weight for r_e = 1.5 l0", "[wall_weight]") {
-  // Neighbours within r_e: 4 at l0, 4 at sqrt(2) l0.
+TEST_CASE("erp: n0 and lambda0 of the quadratic weight for r_e = 1.5 l0, square and cubic "
+          "lattices",
+          "[wall_weight]") {
+  // Neighbours within r_e: 4 at l0 and 4 at sqrt(2) l0 in 2-D; 6 at l0 and 12 at sqrt(2) l0 in 3-D
+  // (the 8 at sqrt(3) l0 lie beyond r_e).
   const double l0 = 0.01, r_e = 1.5 * l0;
   const MpsWeight w(r_e);
   const double w1 = std::pow(1.0 / 1.5 - 1.0, 2), w2 = std::pow(std::sqrt(2.0) / 1.5 - 1.0, 2);
-  const double n0 = 4.0 * w1 + 4.0 * w2;
+  const double n0 = 4.0 * w1 + 4.0 * w2, n0_3 = 6.0 * w1 + 12.0 * w2;
   CHECK_THAT(lattice_n0(l0, r_e, w), WithinRel(n0, 1e-14));
   CHECK_THAT(lattice_lambda0(l0, r_e, w),
              WithinRel((4.0 * w1 * l0 * l0 + 8.0 * w2 * l0 * l0) / n0, 1e-14));
+  CHECK_THAT(lattice_n0<3>(l0, r_e, w), WithinRel(n0_3, 1e-14));
+  CHECK_THAT(lattice_lambda0<3>(l0, r_e, w),
+             WithinRel((6.0 * w1 * l0 * l0 + 24.0 * w2 * l0 * l0) / n0_3, 1e-14));
 }
 
 TEST_CASE("erp: z(r) table matches the direct lattice sum", "[wall_weight]") {
@@ -132,4 +140,48 @@ TEST_CASE("erp: eq. 10's lattice sums of a flat wall and of a convex corner bala
         REQUIRE_THAT(gy - q.y(), WithinAbs(0.0, 1e-12));
       }
   }
+}
+
+namespace {
+
+/// n0 and sum r^2 w over the cubic lattice of spacing l0 written out: every offset (i, j, k) up to
+/// r_e / l0 + 2 per axis, the quadratic weight (1 - r / r_e)^2 inside r_e (eq. 8) spelled here.
+std::pair<double, double> cubic_lattice_sums(double l0, double r_e) {
+  const int m = static_cast<int>(r_e / l0) + 2;
+  double n0 = 0.0, r2w = 0.0;
+  for (int i = -m; i <= m; ++i)
+    for (int j = -m; j <= m; ++j)
+      for (int k = -m; k <= m; ++k) {
+        const double r = l0 * std::sqrt(double(i * i + j * j + k * k));
+        if ((i == 0 && j == 0 && k == 0) || r >= r_e) continue;
+        const double w = (1.0 - r / r_e) * (1.0 - r / r_e);
+        n0 += w;
+        r2w += r * r * w;
+      }
+  return {n0, r2w};
+}
+
+} // namespace
+
+TEST_CASE("erp: n0 and lambda0 on the 3-D cubic lattice equal the sums written out",
+          "[wall_weight]") {
+  for (const double ratio : {2.1, 3.1, 4.0}) {
+    const double l0 = 1.46e-3, r_e = ratio * l0;
+    const auto [n0, r2w] = cubic_lattice_sums(l0, r_e);
+    INFO("r_e / l0 = " << ratio);
+    CHECK_THAT(lattice_n0<3>(l0, r_e, MpsWeight(r_e)), WithinRel(n0, 1e-12));
+    CHECK_THAT(lattice_lambda0<3>(l0, r_e, MpsWeight(r_e)), WithinRel(r2w / n0, 1e-12));
+  }
+}
+
+TEST_CASE("erp: n0 and lambda0 on the 3-D cubic lattice tend to their continuum values",
+          "[wall_weight]") {
+  // For l0 << r_e the sums become integrals with 4 pi r^2 dr / l0^3 and w = (1 - r / r_e)^2:
+  // n0 -> (4 pi / 30) (r_e / l0)^3 and lambda0 -> (1/105) / (1/30) r_e^2 = (2/7) r_e^2 (the 2-D
+  // lattice would give 2 pi / 12 (r_e / l0)^2 and r_e^2 / 5). Measured deviation at r_e = 20 l0:
+  // 3e-4 for both.
+  const double l0 = 1e-3, r_e = 20.0 * l0;
+  const MpsWeight w(r_e);
+  CHECK_THAT(lattice_n0<3>(l0, r_e, w), WithinRel(4.0 * std::numbers::pi / 30.0 * 8000.0, 1e-3));
+  CHECK_THAT(lattice_lambda0<3>(l0, r_e, w), WithinRel(2.0 / 7.0 * r_e * r_e, 1e-3));
 }

@@ -1,6 +1,6 @@
 #pragma once
 // Wall weight z(r) (eq. 20) and the lattice constants n0 (eq. 9) and lambda0 (eq. 12), all on the
-// same square lattice of spacing l0.
+// same square lattice of spacing l0 (n0 and lambda0 also on the cubic lattice in 3-D).
 //
 // Lattice of z: a flat wall at y = 0, fluid rows at y = l0/2 + k l0 (k >= 0), virtual rows behind
 // the wall at y = -l0/2 - m l0 (m >= 0), the continuation of the fluid lattice; columns at
@@ -35,11 +35,12 @@ double wall_gradient_sum(double r, double l0, double r_e, const WeightFunction& 
 /// db = b + l0/2 + k l0.
 Vec2 corner_gradient_sum(double a, double b, double l0, double r_e, const WeightFunction& w);
 
-/// n0 = sum_{j != i} w(|x_j - x_i|) over the full square lattice (eq. 9).
-double lattice_n0(double l0, double r_e, const WeightFunction& w);
+/// n0 = sum_{j != i} w(|x_j - x_i|) over the full D-dimensional cubic lattice of spacing l0
+/// (eq. 9): the square lattice for D = 2 (the 2-D solvers), the cubic one for D = 3.
+template <int D = 2> double lattice_n0(double l0, double r_e, const WeightFunction& w);
 
-/// lambda0 = sum_{j != i} |x_j - x_i|^2 w / sum_{j != i} w over the full square lattice (eq. 12).
-double lattice_lambda0(double l0, double r_e, const WeightFunction& w);
+/// lambda0 = sum_{j != i} |x_j - x_i|^2 w / sum_{j != i} w over the same lattice (eq. 12).
+template <int D = 2> double lattice_lambda0(double l0, double r_e, const WeightFunction& w);
 
 /// z(r) tabulated once and interpolated by a natural cubic spline. z = 0 from r = r_e - l0/2 on
 /// (the nearest virtual row is l0/2 behind the wall), so the table spans [0, r_e - l0/2]. The

@@ -1,56 +1,89 @@
 #pragma once
-// Cell-linked list: particles binned into square cells of side h by a counting sort (cost linear
-// in N); the cells of a row are contiguous in `order`, so the 3 x 3 block around a point is three
+// Cell-linked list in D = 2 or 3 dimensions: particles binned into cubic cells of side h by a
+// counting sort (cost linear in N). Cells are numbered x fastest, then y, then z, so the cells of a
+// row (fixed y and z) are contiguous in `order` and the 3^D block around a point is 3^(D-1)
 // contiguous ranges. With h >= the search radius, the block holds every particle within h.
-#include "fsi/core/types.hpp"
+#include "particles/cell_binning.hpp"
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
 namespace fsi::particles {
 
-class CellGrid {
+template <int D> class BasicCellGrid : public CellBinning<D> {
 public:
   /// Covers [lo, hi] with one spare cell on every side.
-  CellGrid(const Vec2& lo, const Vec2& hi, double h);
+  BasicCellGrid(const VecD<D>& lo, const VecD<D>& hi, double h);
 
-  /// Bins n particles; afterwards cell c holds order()[begin(c) .. begin(c+1)).
-  void bin(const double* x, const double* y, std::size_t n);
-
-  int cell_x(double x) const;
-  int cell_y(double y) const;
-  int nx() const { return nx_; }
-  int ny() const { return ny_; }
+  using CellBinning<D>::cell;
+  using CellBinning<D>::cells;
   double h() const { return h_; }
-  const std::vector<std::uint32_t>& order() const { return order_; }
-  std::uint32_t begin(int cx, int cy) const {
-    return start_[static_cast<std::size_t>(cy * nx_ + cx)];
+  /// First slot of cell cx of row `row` (row = cy in 2-D, cz ny + cy in 3-D); begin(nx, row) is
+  /// the next row's start.
+  std::uint32_t begin(int cx, int row) const {
+    return start_[static_cast<std::size_t>(row * n_[0] + cx)];
   }
 
-  /// The 3 x 3 cell block around a point, clamped to the grid: cells x0..x1 of rows y0..y1. Row
-  /// r's particles are order()[begin(x0, r) .. begin(x1 + 1, r)).
+  /// Rows of the 3^D block around a point (at most 3^(D-1)).
+  static constexpr int max_rows = D == 2 ? 3 : 9;
+  /// The 3^D cell block around a point, clamped to the grid: cells x0..x1 of rows row[0 .. rows),
+  /// y fastest. Row k's particles are order()[begin(x0, row[k]) .. begin(x1 + 1, row[k])).
   struct Block {
-    int x0, x1, y0, y1;
+    int x0, x1, rows;
+    std::array<int, max_rows> row;
   };
-  Block block_near(double px, double py) const {
-    const int cx = cell_x(px), cy = cell_y(py);
-    return {cx > 0 ? cx - 1 : 0, cx + 1 < nx_ ? cx + 1 : nx_ - 1, cy > 0 ? cy - 1 : 0,
-            cy + 1 < ny_ ? cy + 1 : ny_ - 1};
+  Block block_near(const VecD<D>& p) const {
+    Block b{};
+    near(0, p[0], b.x0, b.x1);
+    int y0, y1;
+    near(1, p[1], y0, y1);
+    if constexpr (D == 2) {
+      for (int y = y0; y <= y1; ++y) b.row[static_cast<std::size_t>(b.rows++)] = y;
+    } else {
+      int z0, z1;
+      near(2, p[2], z0, z1);
+      for (int z = z0; z <= z1; ++z)
+        for (int y = y0; y <= y1; ++y) b.row[static_cast<std::size_t>(b.rows++)] = z * n_[1] + y;
+    }
+    return b;
   }
-  /// f(j) for every binned particle j in the 3 x 3 cell block around (px, py), clamped to the grid.
-  template <class F> void for_each_near(double px, double py, F&& f) const {
-    const Block b = block_near(px, py);
-    for (int r = b.y0; r <= b.y1; ++r)
-      for (std::uint32_t k = begin(b.x0, r), end = begin(b.x1 + 1, r); k < end; ++k) f(order_[k]);
+  Block block_near(double px, double py) const requires(D == 2) {
+    return block_near(VecD<D>(px, py));
+  }
+
+  /// f(j) for every binned particle j in the 3^D cell block around p, clamped to the grid.
+  template <class F> void for_each_near(const VecD<D>& p, F&& f) const {
+    const Block b = block_near(p);
+    for (int r = 0; r < b.rows; ++r) {
+      const int row = b.row[static_cast<std::size_t>(r)];
+      for (std::uint32_t k = begin(b.x0, row), end = begin(b.x1 + 1, row); k < end; ++k)
+        f(order_[k]);
+    }
+  }
+  template <class F> void for_each_near(double px, double py, F&& f) const requires(D == 2) {
+    for_each_near(VecD<D>(px, py), f);
   }
 
 private:
-  Vec2 lo_;
-  double h_, inv_h_;
-  int nx_, ny_;
-  std::vector<std::uint32_t> cell_;  // per particle
-  std::vector<std::uint32_t> start_; // per cell, nx*ny + 1 (begin(nx, r) is the next row's start)
-  std::vector<std::uint32_t> order_;
+  using CellBinning<D>::n_;
+  using CellBinning<D>::start_;
+  using CellBinning<D>::order_;
+
+  /// The cells c0..c1 around coordinate v along `axis`: its cell and the two beside, clamped.
+  void near(int axis, double v, int& c0, int& c1) const {
+    const int c = cell(axis, v), n = cells(axis);
+    c0 = c > 0 ? c - 1 : 0;
+    c1 = c + 1 < n ? c + 1 : n - 1;
+  }
+
+  double h_;
 };
+
+extern template class BasicCellGrid<2>;
+extern template class BasicCellGrid<3>;
+
+/// The 2-D grid of the 2-D solvers.
+using CellGrid = BasicCellGrid<2>;
 
 } // namespace fsi::particles

@@ -1,9 +1,11 @@
 #pragma once
 // Smoothing kernels of the particle solvers, each in one place.
-//   MpsWeight  — the MPS weight function of the EMPS fluid and the ERP wall tables (EMPS paper, eq.
-//   8). WendlandC2 — the 2-D Wendland C2 kernel of the SPH fluid and the TL-SPH solid (RKGC paper,
-//   eq. 4;
-//                ../shared/sph-method-notes.md, "Kernel and resolution").
+//   MpsWeight         the MPS weight function of the EMPS fluid and the ERP wall tables (EMPS
+//   paper,
+//                     eq. 8); it does not depend on the dimension.
+//   BasicWendlandC2<D> the Wendland C2 kernel of the SPH fluid and the TL-SPH solid in D = 2 or 3
+//                     dimensions (RKGC paper, eq. 4; ../shared/sph-method-notes.md, "Kernel and
+//                     resolution"); WendlandC2 is the 2-D one.
 #include <numbers>
 
 namespace fsi::particles {
@@ -22,16 +24,24 @@ struct MpsWeight {
   double operator()(double r) const { return r < r_e ? inside(r) : 0.0; }
 };
 
-/// Wendland C2 in 2-D with smoothing length h, support 2h, q = r/h:
-///   W(q) = 7 / (4 pi h^2) (1 - q/2)^4 (1 + 2q),   dW/dr = 7 / (4 pi h^3) * 0.625 q (q - 2)^3 (<=
-///   0).
-/// (0.625 = 5/8: d/dq [(1 - q/2)^4 (1 + 2q)] = -5 q (1 - q/2)^3 = (5/8) q (q - 2)^3.)
-struct WendlandC2 {
+/// Wendland C2 in D = 2 or 3 dimensions with smoothing length h, support 2h, q = r/h:
+///   W(q) = sigma_D (1 - q/2)^4 (1 + 2q),   dW/dr = sigma_D / h * 0.625 q (q - 2)^3 (<= 0),
+///   sigma_2 = 7 / (4 pi h^2),   sigma_3 = 21 / (16 pi h^3)
+/// (each normalises W to integrate to 1 over R^D; 0.625 = 5/8: d/dq [(1 - q/2)^4 (1 + 2q)] =
+/// -5 q (1 - q/2)^3 = (5/8) q (q - 2)^3).
+template <int D> struct BasicWendlandC2 {
+  static_assert(D == 2 || D == 3, "Wendland C2 is normalised for D = 2 and D = 3");
   double h, inv_h, factor_w, factor_dw;
-  explicit WendlandC2(double smoothing_length)
-      : h(smoothing_length), inv_h(1.0 / smoothing_length),
-        factor_w(7.0 / (4.0 * std::numbers::pi * smoothing_length * smoothing_length)),
+  explicit BasicWendlandC2(double smoothing_length)
+      : h(smoothing_length), inv_h(1.0 / smoothing_length), factor_w(sigma(smoothing_length)),
         factor_dw(factor_w * inv_h * 0.625) {}
+  /// sigma_D of the comment above.
+  static double sigma(double h) {
+    if constexpr (D == 2)
+      return 7.0 / (4.0 * std::numbers::pi * h * h);
+    else
+      return 21.0 / (16.0 * std::numbers::pi * h * h * h);
+  }
   double cutoff() const { return 2.0 * h; }
   double W(double r) const {
     const double q = r * inv_h;
@@ -47,5 +57,8 @@ struct WendlandC2 {
     return factor_dw * q * s * s * s;
   }
 };
+
+/// The 2-D kernel of the 2-D solvers.
+using WendlandC2 = BasicWendlandC2<2>;
 
 } // namespace fsi::particles
