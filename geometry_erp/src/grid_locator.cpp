@@ -19,13 +19,24 @@ void GridLocator::update() {
   const WallSet& walls = *walls_;
   const auto& seg = walls.segments().node;
   const auto& x = walls.nodes().x;
+  // A segment with a non-finite node is binned nowhere: no particle can be near it, and the run's
+  // finite-value guard stops the run after the step (the grid stays finite).
+  const auto finite = [&](const std::array<int, 2>& ab) {
+    return x[static_cast<std::size_t>(ab[0])].allFinite() &&
+           x[static_cast<std::size_t>(ab[1])].allFinite();
+  };
   Vec2 lo = Vec2::Constant(std::numeric_limits<double>::infinity());
   Vec2 hi = -lo;
-  for (const auto& [a, b] : seg) {
-    lo = lo.cwiseMin(x[static_cast<std::size_t>(a)]).cwiseMin(x[static_cast<std::size_t>(b)]);
-    hi = hi.cwiseMax(x[static_cast<std::size_t>(a)]).cwiseMax(x[static_cast<std::size_t>(b)]);
+  bool any = false;
+  for (const auto& ab : seg) {
+    if (!finite(ab)) continue;
+    any = true;
+    lo = lo.cwiseMin(x[static_cast<std::size_t>(ab[0])])
+             .cwiseMin(x[static_cast<std::size_t>(ab[1])]);
+    hi = hi.cwiseMax(x[static_cast<std::size_t>(ab[0])])
+             .cwiseMax(x[static_cast<std::size_t>(ab[1])]);
   }
-  if (seg.empty()) lo = hi = Vec2::Zero();
+  if (!any) lo = hi = Vec2::Zero();
   const Vec2 extent = hi - lo;
   h_ = std::max(r_e_, std::sqrt(extent.x() * extent.y() / max_cells));
   h_ = std::max({h_, extent.x() / max_cells, extent.y() / max_cells});
@@ -46,6 +57,7 @@ void GridLocator::update() {
   cell_begin_.assign(cells + 1, 0);
   int i0, i1, j0, j1;
   for (const auto& ab : seg) {
+    if (!finite(ab)) continue;
     cell_range(ab, i0, i1, j0, j1);
     for (int j = j0; j <= j1; ++j)
       for (int i = i0; i <= i1; ++i) ++cell_begin_[static_cast<std::size_t>(j * nx_ + i) + 1];
@@ -53,6 +65,7 @@ void GridLocator::update() {
   for (std::size_t c = 0; c < cells; ++c) cell_begin_[c + 1] += cell_begin_[c];
   cell_segment_.resize(static_cast<std::size_t>(cell_begin_[cells]));
   for (std::size_t s = 0; s < seg.size(); ++s) {
+    if (!finite(seg[s])) continue;
     const SegmentGeometry geometry = detail::segment_geometry(walls, static_cast<int>(s));
     cell_range(seg[s], i0, i1, j0, j1);
     for (int j = j0; j <= j1; ++j)
