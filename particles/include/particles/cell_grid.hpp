@@ -49,7 +49,7 @@ public:
     return b;
   }
   Block block_near(double px, double py) const requires(D == 2) {
-    return block_near(VecD<D>(px, py));
+    return block_near(plane_point(px, py));
   }
 
   /// f(j) for every binned particle j in the 3^D cell block around p, clamped to the grid.
@@ -62,10 +62,18 @@ public:
     }
   }
   template <class F> void for_each_near(double px, double py, F&& f) const requires(D == 2) {
-    for_each_near(VecD<D>(px, py), f);
+    for_each_near(plane_point(px, py), f);
   }
 
 private:
+  /// (px, py) as a VecD<D>: well-formed for every D, since an explicit instantiation for D = 3
+  /// may instantiate the 2-D forms' bodies (clang 14) although their constraint excludes them.
+  static VecD<D> plane_point(double px, double py) {
+    VecD<D> p = VecD<D>::Zero();
+    p[0] = px;
+    p[1] = py;
+    return p;
+  }
   using CellBinning<D>::n_;
   using CellBinning<D>::start_;
   using CellBinning<D>::order_;

@@ -18,7 +18,7 @@ public:
   /// Throws std::invalid_argument if a periodic direction holds fewer than 3 cells.
   BasicPeriodicGrid(const VecD<D>& lo, const VecD<D>& hi, double cell,
                     const std::array<bool, D>& periodic);
-  BasicPeriodicGrid(const Vec2& lo, const Vec2& hi, double cell, bool periodic_x,
+  BasicPeriodicGrid(const VecD<D>& lo, const VecD<D>& hi, double cell, bool periodic_x,
                     bool periodic_y) requires(D == 2)
       : BasicPeriodicGrid(lo, hi, cell, {periodic_x, periodic_y}) {}
 
