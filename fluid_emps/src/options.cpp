@@ -50,7 +50,26 @@ void visit_options(WallContactOptions& o, OptionVisitor& v) {
 
 } // namespace
 
+void apply_wall_preset(WallOptions& o, WallModel model) {
+  const double alpha_rep = o.contact.alpha_rep;
+  o = WallOptions{}; // the paper's terms
+  o.model = model;
+  o.contact.alpha_rep = alpha_rep;
+  if (model == WallModel::paper) return;
+  o.mirror.same_side = true;
+  o.mirror.approach_viscosity = 0.5;
+  o.gap_courant = 0.5;
+}
+
 void visit_options(WallOptions& o, OptionVisitor& v) {
+  const WallModel before = o.model;
+  v.choice(
+      "wall_model", o.model, {{"paper", WallModel::paper}, {"default", WallModel::standard}},
+      "the wall terms' preset: paper, Mitsume 2023 as printed (eqs. 18-27; with the corner "
+      "faces and convex corners below); default, one set for every scene (same-side mirror sums, "
+      "approach viscosity 0.5, wall-gap limit 0.5). The wall keys below are "
+      "expert overrides of one term each, applied after the preset");
+  if (o.model != before) apply_wall_preset(o, o.model);
   v.flag("corner_faces", o.corner_faces,
          "at concave wall corners also apply the nearest other face (its z, mirror terms and "
          "repulsion, the doubly counted quadrant once); false: the nearest wall only, eq. 18");

@@ -261,3 +261,40 @@ TEST_CASE("apps: docs/scenes.md is the generated scene reference", "[apps][scene
   text << in.rdbuf();
   CHECK(text.str() == scene_reference());
 }
+
+TEST_CASE("apps: the wall model's preset is read before its term keys, which override it",
+          "[apps][scene]") {
+  const std::string scene = FSI_SOURCE_DIR "/data/scenes/dam_break_rigid.yaml";
+  const auto wall = [&](std::vector<std::string> sets) {
+    const Scene s = load_scene(scene, sets);
+    return dynamic_cast<const emps_plugin::FluidSpec&>(*s.fluid->spec).options.wall;
+  };
+  // The preset alone: every term but the scene's alpha_rep is the preset's.
+  fsi::emps::WallOptions standard;
+  standard.contact.alpha_rep = 1.0e7;
+  fsi::emps::apply_wall_preset(standard, fsi::emps::WallModel::standard);
+  const auto a = wall({"fluid.wall_model=default"});
+  CHECK(a.model == fsi::emps::WallModel::standard);
+  CHECK(a.mirror.same_side);
+  CHECK(a.mirror.approach_viscosity == standard.mirror.approach_viscosity);
+  CHECK(a.gap_courant == standard.gap_courant);
+  CHECK(a.gap_courant > 0.0);
+  CHECK(a.contact.alpha_rep == 1.0e7);
+  // A term key overrides the preset wherever it stands in the block.
+  const auto b = wall({"fluid.mirror_same_side=false", "fluid.wall_gap_courant=0.25",
+                       "fluid.wall_model=default", "fluid.wall_approach_viscosity=0.2"});
+  CHECK_FALSE(b.mirror.same_side);
+  CHECK(b.gap_courant == 0.25);
+  CHECK(b.mirror.approach_viscosity == 0.2);
+  // paper: the library's terms as printed, with the scene's own keys on top.
+  const auto c = wall({"fluid.wall_model=paper"});
+  CHECK(c.model == fsi::emps::WallModel::paper);
+  CHECK(c.mirror.approach_viscosity == 0.5); // dam_break_rigid.yaml's key
+  CHECK_FALSE(c.mirror.same_side);
+  CHECK(c.contact.model == fsi::emps::WallContact::paper);
+  CHECK(c.gap_courant == 0.0);
+  // A name outside the two is refused naming the key.
+  const CliResult r = cli({"check", scene, "--set", "fluid.wall_model=tuned"});
+  CHECK(r.status == 2);
+  CHECK(r.err.find("fluid.wall_model") != std::string::npos);
+}

@@ -195,15 +195,17 @@ TEST_CASE("emps: what the fluid's momentum loses to the walls, the walls receive
           "[emps]") {
   // A blob thrown at a tank's floor and side wall with gravity and viscosity: in every step and for
   // every wall contact (with either mirror pressure, with the approach viscosity and with the
-  // same-side mirror sums), sum_i m (v_i^{n+1} - v_i^n) = dt (M g + sum_i f_wall,i), the
-  // fluid-fluid terms being antisymmetric in pairs; and the force split of wall_force_parts adds up
-  // to -sum_i f_wall,i, with the repulsive part non-zero (the blob hits the walls).
+  // same-side mirror sums, and the default preset's terms together), sum_i m (v_i^{n+1} - v_i^n) =
+  // dt (M g + sum_i f_wall,i), the fluid-fluid terms being antisymmetric in pairs; and the force
+  // split of wall_force_parts adds up to -sum_i f_wall,i, with the repulsive part non-zero (the
+  // blob hits the walls).
   const double l0 = 0.01, dt = 2e-5;
   struct Mode {
     emps::WallContact contact;
     emps::WallPressure pressure;
     double approach;
     bool same_side;
+    bool preset_default = false; // the default preset's terms, over the rest of the mode
   };
   using C = emps::WallContact;
   using P = emps::WallPressure;
@@ -211,7 +213,7 @@ TEST_CASE("emps: what the fluid's momentum loses to the walls, the walls receive
       GENERATE(Mode{C::paper, P::own, 0.0, false}, Mode{C::damped, P::own, 0.0, false},
                Mode{C::viscous, P::own, 0.0, false}, Mode{C::paper, P::neighbours, 0.0, false},
                Mode{C::paper, P::own, 0.1, false}, Mode{C::viscous, P::neighbours, 0.1, false},
-               Mode{C::paper, P::own, 0.1, true});
+               Mode{C::paper, P::own, 0.1, true}, Mode{C::paper, P::own, 0.0, false, true});
   erp::WallSet walls;
   walls.add_polyline(open_tank(0.4, 0.4), false, 0);
   auto positions =
@@ -226,6 +228,7 @@ TEST_CASE("emps: what the fluid's momentum loses to the walls, the walls receive
   options.wall.mirror.same_side = mode.same_side;
   options.wall.contact.damping = 2.0;
   options.wall.contact.viscosity = 0.1;
+  if (mode.preset_default) emps::apply_wall_preset(options.wall, emps::WallModel::standard);
   emps::EmpsFluid fluid(options, positions, walls);
   std::vector<Vec2> v(positions.size(), Vec2(2.5, -1.5));
   fluid.set_velocities(v);

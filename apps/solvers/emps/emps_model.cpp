@@ -176,9 +176,9 @@ void EmpsModel::report(JsonObject& run) const {
   if (fluid_->options().wall.gap_courant > 0)
     f.add("wall_gap_limited_steps", static_cast<long long>(fluid_->gap_limited_steps()));
   emps::WallOptions wall = fluid_->options().wall; // the visitor takes its members by reference
-  JsonOptions wall_model;
-  emps::visit_options(wall, wall_model);
-  f.add("wall_model", wall_model.object);
+  JsonOptions wall_terms;                          // the preset's name and every term as resolved
+  emps::visit_options(wall, wall_terms);
+  f.add("wall", wall_terms.object);
   const emps::StepTimes& t = fluid_->times();
   JsonObject seconds; // this process's wall seconds per part of the fluid's step
   seconds.add("neighbours", t.neighbours)
