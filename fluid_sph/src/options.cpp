@@ -1,7 +1,10 @@
 // The fluid's user options, each declared once (key, member, range, doc): the scene reader, the
-// validator and the generated reference visit them.
+// validator and the generated reference visit them; validate() checks them together.
 #include "fluid_sph/options.hpp"
 
+#include "shared.hpp"
+
+#include "fsi/core/error.hpp"
 #include "particles/fluid_keys.hpp"
 
 namespace fsi::sph {
@@ -41,6 +44,56 @@ void visit_options(SphOptions& o, OptionVisitor& v) {
   v.real("fixed_dt", o.fixed_dt, Range::non_negative(),
          "> 0: every acoustic step is fixed_dt, s, and the advection step Dt a whole number of "
          "them (a hydrostatic case); 0: both steps by the dual criteria");
+}
+
+std::string to_string(Correction c) {
+  return c == Correction::none ? "none" : "rkgc";
+}
+
+void SphOptions::validate() const {
+  const auto fail = [](const std::string& key, double v, const std::string& range) {
+    throw InputError("fluid_sph: " + key + " = " + fmt(v) + ", allowed " + range);
+  };
+  if (!(rho0 > 0.0)) fail("rho0", rho0, "> 0");
+  if (!(c0 > 0.0)) fail("c0", c0, "> 0");
+  if (!(dp > 0.0)) fail("dp", dp, "> 0");
+  if (!(h_over_dp >= 1.0 && h_over_dp <= 2.0)) fail("h_over_dp", h_over_dp, "[1, 2]");
+  if (!(viscosity >= 0.0)) fail("viscosity", viscosity, ">= 0");
+  if (!(wkgc_alpha >= 0.0 && wkgc_alpha <= 1.0)) fail("wkgc_alpha", wkgc_alpha, "[0, 1]");
+  if (!(transport_coefficient >= 0.0 && transport_coefficient <= 1.0))
+    fail("transport_coefficient", transport_coefficient, "[0, 1]");
+  if (transport_velocity && free_surface)
+    throw InputError("fluid_sph: transport_velocity = true needs free_surface = false (eq. 24 is "
+                     "for internal flows)");
+  if (!(u_ref >= 0.0)) fail("u_ref", u_ref, ">= 0");
+  if (!(advection_cfl > 0.0 && advection_cfl <= 1.0))
+    fail("advection_cfl", advection_cfl, "(0, 1]");
+  if (!(acoustic_cfl > 0.0 && acoustic_cfl <= 1.0)) fail("acoustic_cfl", acoustic_cfl, "(0, 1]");
+  if (!(viscous_number >= 0.0 && viscous_number <= 0.5))
+    fail("viscous_number", viscous_number, "[0, 0.5]");
+  if (!(fixed_dt >= 0.0)) fail("fixed_dt", fixed_dt, ">= 0");
+  if (!(damping_time >= 0.0)) fail("damping_time", damping_time, ">= 0");
+  if (!(rho_min_factor > 0.0 && rho_min_factor < 1.0))
+    fail("rho_min_factor", rho_min_factor, "(0, 1)");
+  if (!(rho_max_factor > 1.0)) fail("rho_max_factor", rho_max_factor, "> 1");
+  const Vec2 size = domain_max - domain_min;
+  if (!(size.x() > 0.0)) fail("domain_max.x - domain_min.x", size.x(), "> 0");
+  if (!(size.y() > 0.0)) fail("domain_max.y - domain_min.y", size.y(), "> 0");
+  if (inflow.on()) {
+    if (!periodic_x)
+      throw InputError("fluid_sph: inflow.buffer > 0 needs periodic_x (the channel wraps in x)");
+    if (!(inflow.buffer <= 0.5 * size.x()))
+      fail("inflow.buffer", inflow.buffer, "(0, half the periodic length]");
+    if (!(inflow.velocity > 0.0)) fail("inflow.velocity", inflow.velocity, "> 0");
+    if (!(inflow.ramp_time >= 0.0)) fail("inflow.ramp_time", inflow.ramp_time, ">= 0");
+    if (!(inflow.y_max > inflow.y_min))
+      fail("inflow.y_max - inflow.y_min", inflow.y_max - inflow.y_min, "> 0");
+  }
+  const double cut = 2.0 * h();
+  if (periodic_x && size.x() < 3.0 * cut)
+    fail("periodic length x", size.x(), ">= 3 kernel supports (6 h)");
+  if (periodic_y && size.y() < 3.0 * cut)
+    fail("periodic length y", size.y(), ">= 3 kernel supports (6 h)");
 }
 
 } // namespace fsi::sph

@@ -1,0 +1,135 @@
+// The neighbour pairs of an advection step (fluid-fluid and fluid-wall, from the build positions,
+// e_ij, dW_ij and r_ij per pair) and the through-a-wall guard.
+#include "fluid_sph/sph_fluid.hpp"
+
+#include "shared.hpp"
+
+#include "fsi/core/error.hpp"
+#include "fsi/core/parallel.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace fsi::sph {
+
+namespace {
+
+/// Neighbour j at (dx, dy) = x_i - x_j into slot k of a pair set: e_ij, dW_ij, r_ij.
+inline void store_pair(std::uint32_t k, std::uint32_t j, double dx, double dy,
+                       const particles::WendlandC2& kernel, std::vector<std::uint32_t>& js,
+                       std::vector<double>& ex, std::vector<double>& ey, std::vector<double>& dw,
+                       std::vector<double>& rs) {
+  const double r = std::sqrt(dx * dx + dy * dy);
+  js[k] = j;
+  ex[k] = dx / r;
+  ey[k] = dy / r;
+  dw[k] = kernel.dW(r);
+  rs[k] = r;
+}
+
+} // namespace
+
+void SphFluid::build_pairs(bool guard) {
+  auto& f = fluid_;
+  const std::size_t n = f.size(), nw = walls_.size();
+  grid_.bin(f.xb.data(), f.yb.data(), n);
+  wall_grid_.bin(walls_.xb.data(), walls_.yb.data(), nw);
+  const double cut2 = kernel_.cutoff() * kernel_.cutoff();
+  count_.resize(2 * n);
+  parallel_for_balanced(n, [&](std::size_t i) {
+    const double xi = f.xb[i], yi = f.yb[i];
+    std::uint32_t c = 0, cw = 0;
+    grid_.for_each_near(xi, yi, [&](std::uint32_t j, double sx, double sy) {
+      const double dx = xi - f.xb[j] - sx, dy = yi - f.yb[j] - sy;
+      const double r2 = dx * dx + dy * dy;
+      if (j != i && r2 < cut2 && r2 > 0.0) ++c;
+    });
+    wall_grid_.for_each_near(xi, yi, [&](std::uint32_t a, double sx, double sy) {
+      const double dx = xi - walls_.xb[a] - sx, dy = yi - walls_.yb[a] - sy;
+      const double r2 = dx * dx + dy * dy;
+      if (r2 < cut2 && r2 > 0.0) ++cw;
+    });
+    count_[i] = c;
+    count_[n + i] = cw;
+  });
+  pstart_.resize(n + 1);
+  wstart_.resize(n + 1);
+  pstart_[0] = wstart_[0] = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    pstart_[i + 1] = pstart_[i] + count_[i];
+    wstart_[i + 1] = wstart_[i] + count_[n + i];
+  }
+  // Grow only (with headroom): no allocation in the usual advection step.
+  if (pstart_[n] > pj_.size()) {
+    const std::size_t m = pstart_[n] + pstart_[n] / 8 + 16;
+    pj_.resize(m), pex_.resize(m), pey_.resize(m), pdw_.resize(m), pr_.resize(m);
+  }
+  if (wstart_[n] > wj_.size()) {
+    const std::size_t m = wstart_[n] + wstart_[n] / 8 + 16;
+    wj_.resize(m), wex_.resize(m), wey_.resize(m), wdw_.resize(m), wr_.resize(m);
+  }
+  // Fill, in the same visiting order, then the through-a-wall guard (issue 20, Antoci's gate):
+  // from wall point a, with p = (x_i - x_a) . n_a - depth_a and q = (x_i - x_a) x n_a, the
+  // particle's signed distance to the wall surface is s_a = p on a face, the same from every
+  // point of a flat face (all layers); on the bisector of a convex corner whose faces' normals
+  // are 2 phi apart, with corner_a = sin(phi), s_a = cos(phi) p + sin(phi) |q|, the larger of
+  // the signed distances to the two faces' lines through the corner. A particle is behind the
+  // walls when s_a < -dp/2 (the first layer's plane, the guard's tolerance) for the nearest
+  // point AND every point within 1.5 dp more (the nearest's lattice neighbours, dp and
+  // sqrt(2) dp away): the intersection of half-planes, the inside test at a convex corner,
+  // where a particle beside a thin body's end is behind the end face's plane but in front of
+  // the side face. Given up: a particle through a face near a concave corner is caught only
+  // once it is out of the other face's range (about a dp from it); acceptable for a guard,
+  // which only has to stop a run whose particles get well through a wall. At a flat wall it
+  // flags what the nearest point's plane did, and a particle past the first layer too. Where the
+  // caller gave the nearest point's group an exact surface (the constructor's distances), a
+  // particle is flagged only if that surface puts it behind the tolerance too: the end face of a
+  // body 2 dp thick may have no point of its own (its row nearer the side faces), and a particle
+  // above that end is then behind both sides' planes.
+  const double reach = 1.5 * options_.dp, tolerance = -0.5 * options_.dp;
+  const std::size_t behind = parallel_reduce_balanced(
+      n, none,
+      [&](std::size_t i) {
+        const double xi = f.xb[i], yi = f.yb[i];
+        std::uint32_t k = pstart_[i];
+        grid_.for_each_near(xi, yi, [&](std::uint32_t j, double sx, double sy) {
+          const double dx = xi - f.xb[j] - sx, dy = yi - f.yb[j] - sy;
+          const double r2 = dx * dx + dy * dy;
+          if (j == i || r2 >= cut2 || r2 <= 0.0) return;
+          store_pair(k++, j, dx, dy, kernel_, pj_, pex_, pey_, pdw_, pr_);
+        });
+        const std::uint32_t kw0 = wstart_[i];
+        std::uint32_t kw = kw0;
+        double nearest = cut2;
+        std::uint32_t a_nearest = 0;
+        wall_grid_.for_each_near(xi, yi, [&](std::uint32_t a, double sx, double sy) {
+          const double dx = xi - walls_.xb[a] - sx, dy = yi - walls_.yb[a] - sy;
+          const double r2 = dx * dx + dy * dy;
+          if (r2 >= cut2 || r2 <= 0.0) return;
+          store_pair(kw++, a, dx, dy, kernel_, wj_, wex_, wey_, wdw_, wr_);
+          if (r2 < nearest) nearest = r2, a_nearest = a;
+        });
+        if (!guard) return none;
+        const double within = std::sqrt(nearest) + reach;
+        for (std::uint32_t k = kw0; k < kw; ++k) {
+          if (wr_[k] > within) continue;
+          const std::uint32_t a = wj_[k];
+          const double nx = walls_.nx[a], ny = walls_.ny[a], sine = walls_.corner[a];
+          const double p = wr_[k] * (wex_[k] * nx + wey_[k] * ny) - walls_.depth[a];
+          const double q = wr_[k] * (wex_[k] * ny - wey_[k] * nx);
+          if (std::sqrt(1.0 - sine * sine) * p + sine * std::abs(q) >= tolerance) return none;
+        }
+        if (kw == kw0) return none;
+        // The group's exact surface, where the caller gave it (at the positions of the pairs).
+        const std::size_t g = walls_.group[a_nearest];
+        if (g < distances_.size() && distances_[g] && distances_[g](Vec2(xi, yi)) >= tolerance)
+          return none;
+        return i;
+      },
+      [](std::size_t a, std::size_t b) { return std::min(a, b); });
+  if (behind != none)
+    throw RunError("fluid_sph: behind the first wall layer (through a wall): " +
+                   where(behind, step_, t_));
+}
+
+} // namespace fsi::sph

@@ -1,0 +1,57 @@
+// The fluid's state: save and restore in memory, write and read a checkpoint (the pairs rebuilt
+// from the restored build positions).
+#include "fluid_sph/sph_fluid.hpp"
+
+#include "fsi/core/error.hpp"
+#include "fsi/core/parallel.hpp"
+#include "fsi/core/state_archive.hpp"
+
+#include <cstdint>
+
+namespace fsi::sph {
+
+void SphFluid::save(State& s) const {
+  fluid_.fields.save(s.fluid);
+  walls_.fields.save(s.walls);
+  s.t = t_, s.Dt = Dt_, s.elapsed = elapsed_, s.dt_acoustic = dt_acoustic_;
+  s.step = step_, s.builds = builds_, s.sub = sub_, s.subs = subs_, s.removed = removed_;
+}
+
+void SphFluid::restore(const State& s) {
+  fluid_.fields.restore(s.fluid);
+  walls_.fields.restore(s.walls);
+  t_ = s.t, Dt_ = s.Dt, elapsed_ = s.elapsed, dt_acoustic_ = s.dt_acoustic;
+  step_ = s.step, builds_ = s.builds, sub_ = s.sub, subs_ = s.subs, removed_ = s.removed;
+  build_pairs(false); // the restored advection step's pairs, from its build positions (checked)
+  parallel_for(fluid_.size(), [&](std::size_t i) {
+    fluid_.p[i] = options_.c0 * options_.c0 * (fluid_.rho[i] - options_.rho0);
+  });
+}
+
+void SphFluid::write_state(StateArchive& a, const std::string& prefix) const {
+  fluid_.fields.write_state(a, prefix + "fluid/");
+  walls_.fields.write_state(a, prefix + "walls/");
+  a.put(prefix + "clock", std::vector<double>{t_, Dt_, elapsed_, dt_acoustic_});
+  a.put(prefix + "counters", std::vector<std::int64_t>{step_, builds_, sub_, subs_,
+                                                       static_cast<std::int64_t>(removed_)});
+}
+
+void SphFluid::read_state(const StateArchive& a, const std::string& prefix) {
+  const std::size_t nw = walls_.size();
+  const auto& clock = a.reals(prefix + "clock", 4);
+  const auto& counters = a.integers(prefix + "counters", 5);
+  fluid_.fields.read_state(a, prefix + "fluid/");
+  walls_.fields.read_state(a, prefix + "walls/");
+  if (walls_.size() != nw)
+    throw InputError("checkpoint: '" + prefix + "walls/' has " + std::to_string(walls_.size()) +
+                     " wall particles, this scene has " + std::to_string(nw));
+  t_ = clock[0], Dt_ = clock[1], elapsed_ = clock[2], dt_acoustic_ = clock[3];
+  step_ = counters[0], builds_ = counters[1], sub_ = counters[2], subs_ = counters[3];
+  removed_ = static_cast<std::size_t>(counters[4]);
+  build_pairs(false); // as restore: the pairs were checked when first built
+  parallel_for(fluid_.size(), [&](std::size_t i) {
+    fluid_.p[i] = options_.c0 * options_.c0 * (fluid_.rho[i] - options_.rho0);
+  });
+}
+
+} // namespace fsi::sph

@@ -1,0 +1,208 @@
+// The sections of a .msh file read into Parsed: physical names, entities, nodes and elements of
+// formats 4.1 and 2.2, each node and element checked as it is read (element type and order, the
+// plane z = 0, repeated and unknown tags).
+#include "gmsh_sections.hpp"
+
+#include <cstdlib>
+
+namespace fsi::fem::gmsh {
+
+namespace {
+
+int nodes_per_element(Lexer& lex, long type, long tag) {
+  const std::string element = "element " + std::to_string(tag) + ": ";
+  switch (type) {
+  case 9:
+    return 6; // 6-node triangle
+  case 8:
+    return 3; // 3-node line
+  case 15:
+    return 1; // point
+  case 2:
+    lex.fail(element + "3-node triangle (type 2): wrong element order, need second-order 6-node "
+                       "triangles (type 9): mesh with gmsh -2 -order 2");
+  case 1:
+    lex.fail(element + "2-node line (type 1): wrong element order, need 3-node lines (type 8): "
+                       "mesh with gmsh -2 -order 2");
+  case 3:
+  case 10:
+  case 16:
+    lex.fail(element + "quadrangle (type " + std::to_string(type) +
+             "): need 6-node triangles (type 9): remove Recombine (Mesh.RecombineAll = 0) and "
+             "mesh with gmsh -2 -order 2");
+  case 21:
+  case 23:
+  case 25:
+    lex.fail(element + "triangle of order 3 or more (type " + std::to_string(type) +
+             "): need 6-node triangles (type 9): mesh with gmsh -2 -order 2");
+  default:
+    lex.fail(element + "unsupported element type " + std::to_string(type) +
+             " (only 9, 8 and 15: a 2D mesh from gmsh -2 -order 2)");
+  }
+}
+
+/// A node's z: the mesh must lie in the plane z = 0.
+void check_planar(Lexer& lex, long tag, double z) {
+  if (std::abs(z) > 1e-12)
+    lex.fail("node " + std::to_string(tag) + ": z = " + std::to_string(z) +
+             " m: the mesh must lie in the plane z = 0 (draw the geometry at z = 0)");
+}
+
+void add_node(Lexer& lex, Parsed& p, long tag, double x, double y, double z, int at) {
+  check_planar(lex, tag, z);
+  const auto [it, fresh] = p.node_index.emplace(tag, static_cast<int>(p.mesh.X.size()));
+  if (!fresh)
+    throw InputError(lex.binary()
+                         ? lex.where() + "node " + std::to_string(tag) + ": node tag given twice"
+                         : lex.path() + ":" + std::to_string(at) + ": node " + std::to_string(tag) +
+                               ": node tag given twice");
+  p.mesh.X.emplace_back(x, y);
+  p.mesh.node_label.push_back(tag);
+  if (!lex.binary()) p.lines.node_line.push_back(at);
+}
+
+/// One element of type `type` with its nodes (gmsh tags) read by `node`.
+template <class Next>
+void add_element(Lexer& lex, Parsed& p, long type, long tag, long entity, int at, Next node,
+                 std::vector<long> physicals = {}, bool msh22 = false) {
+  const int nn = nodes_per_element(lex, type, tag);
+  std::array<long, 6> tags{};
+  for (int k = 0; k < nn; ++k) {
+    tags[static_cast<std::size_t>(k)] = node();
+    if (!p.node_index.count(tags[static_cast<std::size_t>(k)]))
+      lex.fail("element " + std::to_string(tag) + ": unknown node " +
+               std::to_string(tags[static_cast<std::size_t>(k)]));
+  }
+  if (type == 9) {
+    std::array<long, 3> corners{tags[0], tags[1], tags[2]};
+    std::sort(corners.begin(), corners.end());
+    if (msh22 && !p.triangles.insert(corners).second) return; // the same triangle, another group
+    std::array<int, 6> el{};
+    for (std::size_t k = 0; k < 6; ++k) el[k] = p.node_index.at(tags[k]);
+    p.mesh.elements.push_back(el);
+    p.mesh.element_label.push_back(tag);
+    if (!lex.binary()) p.lines.element_line.push_back(at);
+  } else if (type == 8) {
+    p.raw_lines.push_back({{tags[0], tags[1], tags[2]}, tag, entity, at, std::move(physicals)});
+  }
+}
+
+/// The header of a msh 4.1 $Nodes or $Elements section (`what`: node or element): the number of
+/// blocks (returned), the number of items and their smallest and largest tag.
+long read_block_header(Lexer& lex, const std::string& what) {
+  lex.begin_section();
+  const long blocks = lex.size("the number of " + what + " blocks");
+  lex.size("the number of " + what + "s");
+  lex.size("the minimum " + what + " tag");
+  lex.size("the maximum " + what + " tag");
+  return blocks;
+}
+
+// A format 2.2 section: its record count, then each record's tag and the line it is on.
+template <class Record>
+void read_records_22(Lexer& lex, const char* count, const char* tag_name, Record record) {
+  const long n = lex.integer(count);
+  for (long i = 0; i < n; ++i) {
+    const long tag = lex.integer(tag_name);
+    record(tag, lex.line());
+  }
+}
+
+} // namespace
+
+void read_physical_names(Lexer& lex, Parsed& p) {
+  const long n = lex.integer("the number of physical names");
+  for (long i = 0; i < n; ++i) {
+    const long dim = lex.integer("a physical dimension");
+    const long tag = lex.integer("a physical tag");
+    const std::string at = lex.where();
+    const std::string rest = lex.rest_of_line();
+    const auto a = rest.find('"'), b = rest.rfind('"');
+    if (a == std::string::npos || b == a) throw InputError(at + "physical name must be quoted");
+    p.physical_name[{dim, tag}] = rest.substr(a + 1, b - a - 1);
+  }
+  lex.expect("$EndPhysicalNames");
+}
+
+void read_entities_41(Lexer& lex, Parsed& p) {
+  lex.begin_section();
+  long count[4];
+  for (auto& c : count) c = lex.size("the number of entities");
+  for (long dim = 0; dim < 4; ++dim)
+    for (long i = 0; i < count[dim]; ++i) {
+      const long tag = lex.tag("an entity tag");
+      for (int k = 0; k < (dim == 0 ? 3 : 6); ++k) lex.number("an entity bounding box");
+      const long n_phys = lex.size("the number of physical tags");
+      auto& phys = p.entity_physicals[{dim, tag}];
+      for (long k = 0; k < n_phys; ++k) phys.push_back(std::abs(lex.tag("a physical tag")));
+      if (dim > 0) {
+        const long n_bound = lex.size("the number of bounding entities");
+        for (long k = 0; k < n_bound; ++k) lex.tag("a bounding entity");
+      }
+    }
+  lex.end_section("$EndEntities");
+}
+
+void read_nodes_41(Lexer& lex, Parsed& p) {
+  const long blocks = read_block_header(lex, "node");
+  for (long b = 0; b < blocks; ++b) {
+    const long dim = lex.tag("a node block dimension");
+    lex.tag("a node block entity");
+    const long parametric = lex.tag("the parametric flag");
+    const long n = lex.size("the number of nodes in the block");
+    std::vector<long> tags;
+    for (long i = 0; i < n; ++i) tags.push_back(lex.size("a node tag"));
+    for (long i = 0; i < n; ++i) {
+      if (!lex.binary()) lex.at_end(); // to the line of the coordinates
+      const int at = lex.line();
+      const double x = lex.number("a node coordinate"), y = lex.number("a node coordinate");
+      const double z = lex.number("a node coordinate");
+      for (long k = 0; parametric && k < dim; ++k) lex.number("a parametric coordinate");
+      add_node(lex, p, tags[static_cast<std::size_t>(i)], x, y, z, at);
+    }
+  }
+  lex.end_section("$EndNodes");
+}
+
+void read_elements_41(Lexer& lex, Parsed& p) {
+  const long blocks = read_block_header(lex, "element");
+  for (long b = 0; b < blocks; ++b) {
+    lex.tag("an element block dimension");
+    const long entity = lex.tag("an element block entity");
+    const long type = lex.tag("an element type");
+    const long n = lex.size("the number of elements in the block");
+    for (long i = 0; i < n; ++i) {
+      const long tag = lex.size("an element tag");
+      add_element(lex, p, type, tag, entity, lex.line(),
+                  [&] { return lex.size("an element node"); });
+    }
+  }
+  lex.end_section("$EndElements");
+}
+
+void read_nodes_22(Lexer& lex, Parsed& p) {
+  read_records_22(lex, "the number of nodes", "a node tag", [&](long tag, int at) {
+    const double x = lex.real("a node coordinate"), y = lex.real("a node coordinate");
+    add_node(lex, p, tag, x, y, lex.real("a node coordinate"), at);
+  });
+  lex.expect("$EndNodes");
+}
+
+void read_elements_22(Lexer& lex, Parsed& p) {
+  read_records_22(lex, "the number of elements", "an element tag", [&](long tag, int at) {
+    const long type = lex.integer("an element type");
+    const long n_tags = lex.integer("the number of element tags");
+    if (n_tags < 0) lex.fail("element " + std::to_string(tag) + ": negative number of tags");
+    std::vector<long> tags;
+    for (long k = 0; k < n_tags; ++k) tags.push_back(lex.integer("an element tag"));
+    // Tag 1: the physical group (0: none), tag 2: the elementary entity.
+    std::vector<long> physicals;
+    if (!tags.empty() && tags[0] != 0) physicals.push_back(std::abs(tags[0]));
+    add_element(
+        lex, p, type, tag, tags.size() > 1 ? tags[1] : 0, at,
+        [&] { return lex.integer("an element node"); }, physicals, true);
+  });
+  lex.expect("$EndElements");
+}
+
+} // namespace fsi::fem::gmsh
