@@ -48,28 +48,7 @@ void visit_options(WallContactOptions& o, OptionVisitor& v) {
          "wall_contact viscous: alpha of the near-wall closing-pair viscosity");
 }
 
-} // namespace
-
-void apply_wall_preset(WallOptions& o, WallModel model) {
-  const double alpha_rep = o.contact.alpha_rep;
-  o = WallOptions{}; // the paper's terms
-  o.model = model;
-  o.contact.alpha_rep = alpha_rep;
-  if (model == WallModel::paper) return;
-  o.mirror.same_side = true;
-  o.mirror.approach_viscosity = 0.5;
-  o.gap_courant = 0.5;
-}
-
 void visit_options(WallOptions& o, OptionVisitor& v) {
-  const WallModel before = o.model;
-  v.choice(
-      "wall_model", o.model, {{"paper", WallModel::paper}, {"default", WallModel::standard}},
-      "the wall terms' preset: paper, Mitsume 2023 as printed (eqs. 18-27; with the corner "
-      "faces and convex corners below); default, one set for every scene (same-side mirror sums, "
-      "approach viscosity 0.5, wall-gap limit 0.5). The wall keys below are "
-      "expert overrides of one term each, applied after the preset");
-  if (o.model != before) apply_wall_preset(o, o.model);
   v.flag("corner_faces", o.corner_faces,
          "at concave wall corners also apply the nearest other face (its z, mirror terms and "
          "repulsion, the doubly counted quadrant once); false: the nearest wall only, eq. 18");
@@ -85,10 +64,35 @@ void visit_options(WallOptions& o, OptionVisitor& v) {
          "eq. 27 would stop; 0 = off)");
 }
 
+} // namespace
+
+void apply_wall_preset(FluidOptions& o, WallModel model) {
+  const double alpha_rep = o.wall.contact.alpha_rep;
+  o.wall = WallOptions{}; // the paper's terms
+  o.wall.model = model;
+  o.wall.contact.alpha_rep = alpha_rep;
+  o.artificial_viscosity = 0.0;
+  if (model == WallModel::paper) return;
+  o.wall.pnd.density = WallDensity::scaled;
+  o.wall.mirror.same_side = true;
+  o.wall.mirror.approach_viscosity = 0.5;
+  o.wall.gap_courant = 0.5;
+  o.artificial_viscosity = 0.2;
+}
+
 void visit_options(FluidOptions& o, OptionVisitor& v) {
   particles::visit_fluid_keys(o.density, o.viscosity, o.l0, o.sound_speed, o.damping_time, v);
   v.real("re_over_l0", o.re_over_l0, Range::closed(2.0, 5.0), "effective radius r_e / l0");
   v.real("beta", o.beta, Range::left_open(0.0, 1.5), "free-surface threshold, eq. 17");
+  const WallModel before = o.wall.model;
+  v.choice("wall_model", o.wall.model,
+           {{"paper", WallModel::paper}, {"default", WallModel::standard}},
+           "the wall model's preset: paper, Mitsume 2023 as printed (eqs. 18-27, with the corner "
+           "faces and convex corners below); default, one set for every scene: the paper's plus "
+           "wall_density scaled, mirror_same_side, wall_approach_viscosity 0.5, wall_gap_courant "
+           "0.5 and artificial_viscosity 0.2 (docs/fluid_emps.md). The wall keys below and "
+           "artificial_viscosity are expert overrides of one term each, applied after the preset");
+  if (o.wall.model != before) apply_wall_preset(o, o.wall.model);
   v.real("artificial_viscosity", o.artificial_viscosity, Range::non_negative(),
          "alpha: closing particle pairs feel a viscosity alpha c l0 along their line of centres "
          "(damps acoustic noise; not in the paper, 0 = off)");

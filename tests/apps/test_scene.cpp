@@ -265,34 +265,42 @@ TEST_CASE("apps: docs/scenes.md is the generated scene reference", "[apps][scene
 TEST_CASE("apps: the wall model's preset is read before its term keys, which override it",
           "[apps][scene]") {
   const std::string scene = FSI_SOURCE_DIR "/data/scenes/dam_break_rigid.yaml";
-  const auto wall = [&](std::vector<std::string> sets) {
+  const auto fluid = [&](std::vector<std::string> sets) {
     const Scene s = load_scene(scene, sets);
-    return dynamic_cast<const emps_plugin::FluidSpec&>(*s.fluid->spec).options.wall;
+    return dynamic_cast<const emps_plugin::FluidSpec&>(*s.fluid->spec).options;
   };
-  // The preset alone: every term but the scene's alpha_rep is the preset's.
-  fsi::emps::WallOptions standard;
-  standard.contact.alpha_rep = 1.0e7;
-  fsi::emps::apply_wall_preset(standard, fsi::emps::WallModel::standard);
-  const auto a = wall({"fluid.wall_model=default"});
-  CHECK(a.model == fsi::emps::WallModel::standard);
-  CHECK(a.mirror.same_side);
-  CHECK(a.mirror.approach_viscosity == standard.mirror.approach_viscosity);
-  CHECK(a.gap_courant == standard.gap_courant);
-  CHECK(a.gap_courant > 0.0);
-  CHECK(a.contact.alpha_rep == 1.0e7);
-  // A term key overrides the preset wherever it stands in the block.
-  const auto b = wall({"fluid.mirror_same_side=false", "fluid.wall_gap_courant=0.25",
-                       "fluid.wall_model=default", "fluid.wall_approach_viscosity=0.2"});
-  CHECK_FALSE(b.mirror.same_side);
-  CHECK(b.gap_courant == 0.25);
-  CHECK(b.mirror.approach_viscosity == 0.2);
+  using fsi::emps::WallModel;
+  // The preset alone: every wall term but the scene's alpha_rep, and the artificial viscosity,
+  // are the preset's, whatever the scene's keys before it.
+  fsi::emps::FluidOptions standard;
+  fsi::emps::apply_wall_preset(standard, WallModel::standard);
+  const auto a = fluid({"fluid.wall_model=default", "fluid.wall_approach_viscosity=0.5"});
+  CHECK(a.wall.model == WallModel::standard);
+  CHECK(a.wall.pnd.density == fsi::emps::WallDensity::scaled);
+  CHECK(a.wall.mirror.same_side);
+  CHECK(a.wall.mirror.approach_viscosity == standard.wall.mirror.approach_viscosity);
+  CHECK(a.wall.gap_courant == standard.wall.gap_courant);
+  CHECK(a.wall.gap_courant > 0.0);
+  CHECK(a.artificial_viscosity == standard.artificial_viscosity);
+  CHECK(a.artificial_viscosity > 0.0);
+  CHECK(a.wall.contact.alpha_rep == 1.0e7); // the scene's
+  // A term key overrides the preset wherever it stands in the block or the overrides.
+  const auto b = fluid({"fluid.mirror_same_side=false", "fluid.wall_gap_courant=0.25",
+                        "fluid.wall_model=default", "fluid.wall_approach_viscosity=0.2",
+                        "fluid.artificial_viscosity=0.05"});
+  CHECK_FALSE(b.wall.mirror.same_side);
+  CHECK(b.wall.gap_courant == 0.25);
+  CHECK(b.wall.mirror.approach_viscosity == 0.2);
+  CHECK(b.artificial_viscosity == 0.05);
+  CHECK(b.wall.pnd.density == fsi::emps::WallDensity::scaled);
   // paper: the library's terms as printed, with the scene's own keys on top.
-  const auto c = wall({"fluid.wall_model=paper"});
-  CHECK(c.model == fsi::emps::WallModel::paper);
-  CHECK(c.mirror.approach_viscosity == 0.5); // dam_break_rigid.yaml's key
-  CHECK_FALSE(c.mirror.same_side);
-  CHECK(c.contact.model == fsi::emps::WallContact::paper);
-  CHECK(c.gap_courant == 0.0);
+  const auto c = fluid({"fluid.wall_model=paper"});
+  CHECK(c.wall.model == WallModel::paper);
+  CHECK(c.wall.mirror.approach_viscosity == 0.5); // dam_break_rigid.yaml's key
+  CHECK_FALSE(c.wall.mirror.same_side);
+  CHECK(c.wall.pnd.density == fsi::emps::WallDensity::added);
+  CHECK(c.wall.gap_courant == 0.0);
+  CHECK(c.artificial_viscosity == 0.0);
   // A name outside the two is refused naming the key.
   const CliResult r = cli({"check", scene, "--set", "fluid.wall_model=tuned"});
   CHECK(r.status == 2);

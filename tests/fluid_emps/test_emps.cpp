@@ -228,7 +228,7 @@ TEST_CASE("emps: what the fluid's momentum loses to the walls, the walls receive
   options.wall.mirror.same_side = mode.same_side;
   options.wall.contact.damping = 2.0;
   options.wall.contact.viscosity = 0.1;
-  if (mode.preset_default) emps::apply_wall_preset(options.wall, emps::WallModel::standard);
+  if (mode.preset_default) emps::apply_wall_preset(options, emps::WallModel::standard);
   emps::EmpsFluid fluid(options, positions, walls);
   std::vector<Vec2> v(positions.size(), Vec2(2.5, -1.5));
   fluid.set_velocities(v);

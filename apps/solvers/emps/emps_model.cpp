@@ -175,10 +175,10 @@ void EmpsModel::report(JsonObject& run) const {
       .add("neighbour_list_builds", static_cast<long long>(fluid_->neighbour_builds()));
   if (fluid_->options().wall.gap_courant > 0)
     f.add("wall_gap_limited_steps", static_cast<long long>(fluid_->gap_limited_steps()));
-  emps::WallOptions wall = fluid_->options().wall; // the visitor takes its members by reference
-  JsonOptions wall_terms;                          // the preset's name and every term as resolved
-  emps::visit_options(wall, wall_terms);
-  f.add("wall", wall_terms.object);
+  emps::FluidOptions options = fluid_->options(); // the visitor takes its members by reference
+  JsonOptions resolved; // every key as the run used it: the wall model's preset and each term
+  emps::visit_options(options, resolved);
+  f.add("options", resolved.object);
   const emps::StepTimes& t = fluid_->times();
   JsonObject seconds; // this process's wall seconds per part of the fluid's step
   seconds.add("neighbours", t.neighbours)

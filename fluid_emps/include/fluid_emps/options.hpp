@@ -30,11 +30,12 @@ enum class WallContact { paper, damped, viscous };
 ///   particle pressed against it by the pressure around it (a wall force, sent to the structure).
 enum class WallPressure { own, neighbours };
 
-/// The wall model's presets: the terms and values of every wall option but alpha_rep (the scene's
-/// coefficient of eq. 27, as in the paper). paper: Mitsume 2023 as printed (eqs. 18-27, the
-/// corner faces and convex corners aside). standard (key "default"): the far-side images left out
-/// of the mirror sums, the approach viscosity 0.5 and the wall-gap step limit 0.5
-/// (docs/fluid_emps.md, "Choosing the wall terms": what each fixes and its evidence).
+/// The wall model's presets (key wall_model): every wall term and value but alpha_rep (the scene's
+/// coefficient of eq. 27, as in the paper), and the artificial viscosity of the fluid beside them.
+/// paper: Mitsume 2023 as printed (eqs. 18-27, with the corner faces and convex corners).
+/// standard (key "default"): the paper's plus the compressed wall density, the far-side images
+/// left out of the mirror sums, the approach viscosity 0.5, the wall-gap step limit 0.5 and the
+/// artificial viscosity 0.2 (docs/fluid_emps.md, "The wall model": what each fixes, its evidence).
 enum class WallModel { paper, standard };
 
 /// The wall part of pnd (eq. 20).
@@ -66,7 +67,8 @@ struct WallContactOptions {
 
 /// The wall model: which faces act on a particle and the options of each wall term.
 struct WallOptions {
-  /// The preset the terms below start from; each key read after it overrides one term.
+  /// The preset the terms below and the artificial viscosity start from (apply_wall_preset);
+  /// each key read after it overrides one term.
   WallModel model = WallModel::paper;
   /// At concave corners also apply the other faces (z, mirror terms and repulsion of the nearest
   /// other face, geometry_erp's corner faces). false: the paper's nearest wall only (eq. 18),
@@ -116,12 +118,10 @@ struct FluidOptions {
 
 /// The options a user sets, each once: key, member, range, doc; the member's initial value is the
 /// default (density, l0 and sound_speed have none). Gravity, domain, reordering, the list skin and
-/// the vector kernels are set by the caller.
+/// the vector kernels are set by the caller. A visitor that changes `wall_model` (a reader) sets
+/// its preset (apply_wall_preset) before it visits the keys the preset covers, which override it.
 void visit_options(FluidOptions& options, OptionVisitor& visitor);
-/// The wall model's keys alone (a part of the above). A visitor that changes `wall_model` (a
-/// reader) sets the preset's terms before it visits the term keys, so that those override it.
-void visit_options(WallOptions& options, OptionVisitor& visitor);
-/// Sets every term of `options` but alpha_rep to the preset `model`'s.
-void apply_wall_preset(WallOptions& options, WallModel model);
+/// Sets every wall term but alpha_rep, and the artificial viscosity, to the preset `model`'s.
+void apply_wall_preset(FluidOptions& options, WallModel model);
 
 } // namespace fsi::emps
