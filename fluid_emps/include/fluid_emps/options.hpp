@@ -35,7 +35,8 @@ enum class WallPressure { own, neighbours };
 /// paper: Mitsume 2023 as printed (eqs. 18-27, with the corner faces and convex corners).
 /// standard (key "default"): the paper's plus the compressed wall density, the far-side images
 /// left out of the mirror sums, the approach viscosity 0.5, the wall-gap step limit 0.5 and the
-/// artificial viscosity 0.2 (docs/fluid_emps.md, "The wall model": what each fixes, its evidence).
+/// artificial viscosity 0.2 (docs/fluid_emps.md, "The wall model": what each fixes, its evidence
+/// so far; it is being validated on every scene).
 enum class WallModel { paper, standard };
 
 /// The wall part of pnd (eq. 20).
