@@ -15,6 +15,7 @@
 #include <iterator>
 #include <set>
 #include <sstream>
+#include <type_traits>
 #include <yaml-cpp/depthguard.h>
 
 namespace fsi::app {
@@ -104,7 +105,8 @@ ProbeSpec read_probe(Section s) {
   p.interpolate = s.boolean("interpolate", false,
                             "(type tlsph) displacement at point by the kernel interpolation of "
                             "the particles' displacements (linear correction, reference "
-                            "configuration); false: the particle nearest to point");
+                            "configuration); false: the particle nearest to point (type fem: "
+                            "the node at point either way, the FE interpolation there)");
   if (!s.context().documenting()) {
     const bool ok_name = !p.name.empty() && std::all_of(p.name.begin(), p.name.end(), [](char c) {
       return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
@@ -373,6 +375,9 @@ void read_solver_block(Section& s, const std::vector<Plugin>& plugins, Block& bl
   block.line = s.line();
   block.type = s.choice("type", types, types.front(), what + " solver (apps/solvers/<type>/)");
   if (!s.context().documenting()) {
+    if constexpr (std::is_same_v<Plugin, StructurePlugin>)
+      for (const auto& p : plugins)
+        if (p.name == block.type && p.adopt) p.adopt(s);
     for (const auto& p : plugins)
       if (p.name != block.type && s.has(p.name)) check_set_aside(s, p);
     s.lift(block.type);
