@@ -492,6 +492,15 @@ std::string scene_reference() {
       << "the chosen type's is read as keys of the solver block, the others are checked and set\n"
       << "aside, so one scene runs with any fluid and any structure by `--set fluid.type=sph\n"
       << "--set structures[0].type=tlsph` (tests/apps/data/tiny_any_pair.yaml).\n\n"
+      << "A structure given for one type only takes the other type's geometry from it, so\n"
+      << "`--set structures[N].type=tlsph` or `=fem` alone switches it: without a `region`, the\n"
+      << "TL-SPH solid fills the FE mesh's outline (a rectangle, or a Gmsh mesh's boundary) at\n"
+      << "`dp` = the mesh's node spacing unless `dp` is given, each FE `clamped` side (straight,\n"
+      << "along an axis) continued 4 rows outwards into a clamped box; without a `mesh`, the FE\n"
+      << "type meshes a TL-SPH rectangle `{min, max}` with nodes about dp apart, a clamped box\n"
+      << "holding a side's strip becoming that clamped side, or reads a Gmsh `region.file`.\n"
+      << "What does not translate (FE `loads`, a slanted clamped side, a TL-SPH polygon) is an\n"
+      << "error naming the key (apps/solvers/structure_geometry.hpp).\n\n"
       << "| key | type | default | allowed | meaning |\n|---|---|---|---|---|\n";
   for (const auto& k : *ctx.collector)
     out << "| `" << k.path << "` | " << k.type << " | " << k.fallback << " | " << k.range << " | "
