@@ -157,7 +157,7 @@ void tlsph_from_fem(Section& s) {
   if (!fe.loads.empty())
     fe_keys.fail("loads", "a TL-SPH solid takes no constant loads: with loads the entry is of "
                           "type fem only");
-  Outline o = outline_of(fe.mesh, fe_keys);
+  const Outline o = outline_of(fe.mesh, fe_keys);
   double dp = o.spacing;
   const YAML::Node dp_given = given(entry, "tlsph", "dp", dp_line);
   std::vector<KeyValue> added;
