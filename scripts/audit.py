@@ -17,6 +17,7 @@ but does not fail the audit (none is pending now). Exit status 1 on any crash, h
 internal or unclear outcome of a case that is not pending.
 """
 
+import fcntl
 import json
 import os
 import shutil
@@ -718,6 +719,68 @@ case("issue41", "closed_polyline_zero_closing", ["check", fluid, "--set",
 case("issue41", "structure_failure_named", ["run", base, "--out", path("out", "newton1"), "--set",
                                             "structures[0].newton.max_iterations=1"], "stop",
      ["structure 'beam': Newton", "structure step 1, t = 0.001"])
+
+# Any structure by one override (item 12): every shipped scene with a structure passes `check`
+# as FE and as TL-SPH; the cantilever run as TL-SPH swings as the FE one (tip_y at 0.2 s within
+# 1.5 %: measured 0.75 %); what does not translate is refused naming the key.
+SCENES = os.path.join(ROOT, "data/scenes")
+for scene in sorted(os.listdir(SCENES)):
+    text = open(os.path.join(SCENES, scene)).read() if scene.endswith(".yaml") else ""
+    if "\nstructures:" not in text:
+        continue
+    for kind in ("fem", "tlsph"):
+        case("issue41", "any_structure_%s_%s" % (scene[:-5], kind),
+             ["check", os.path.join(SCENES, scene), "--set", "structures[0].type=" + kind], "ok",
+             timeout=120)
+cantilever = os.path.join(SCENES, "cantilever.yaml")
+
+
+def last_tip_y(d):
+    rows = open(os.path.join(d, "probes.csv")).read().split("\n")
+    return float(rows[-2].split(",")[2])
+
+
+run(["run", cantilever, "--out", path("out", "cantilever_fem"), "--set", "time.end=0.2"])
+case("issue41", "cantilever_as_tlsph",
+     ["run", cantilever, "--out", path("out", "cantilever_tlsph"), "--set", "time.end=0.2",
+      "--set", "structures[0].type=tlsph"], "ok",
+     check=lambda: None if abs(last_tip_y(path("out", "cantilever_tlsph"))
+                               / last_tip_y(path("out", "cantilever_fem")) - 1) < 0.015
+     else "tip_y %g (TL-SPH) against %g (FE)" % (last_tip_y(path("out", "cantilever_tlsph")),
+                                                 last_tip_y(path("out", "cantilever_fem"))))
+case("issue41", "tlsph_from_fem_loads",
+     ["check", cantilever, "--set", "structures[0].type=tlsph", "--set",
+      "structures[0].loads=[{boundary: right, force: [0, -1]}]"], "error",
+     ["structures[0].loads", "no constant loads"])
+case("issue41", "tlsph_from_fem_slanted_clamp",
+     ["check", base, "--set", "structures[0].type=tlsph", "--set",
+      "structures[0].mesh={kind: gmsh, file: %s}" % os.path.join(DATA, "tlsph_mesh/trapezoid.msh"),
+      "--set", "structures[0].clamped=[slope]", "--set", "output.probes=[]"], "error",
+     ["structures[0].clamped", "not parallel to an axis"])
+case("issue41", "fem_from_tlsph_polygon",
+     ["check", base, "--set", "structures[0]={name: beam, type: fem, material: {youngs_modulus: "
+      "1.0e6, poisson_ratio: 0.3, density: 1000.0}, dp: 0.02, region: {polygon: [[0, 0], [1, 0], "
+      "[1, 0.1]]}}", "--set", "output.probes=[]"], "error",
+     ["structures[0].region", "does not translate to an FE mesh"])
+
+# A full disk while fields.xmf is rewritten (a restart; fields.xmf.tmp a link to /dev/full):
+# stopped with the disk-full message, the index as before. Another process holding fields.h5
+# (a reader's flock, as HDF5 takes it): the restart names the lock.
+restart_scene = write("scenes/restart41.yaml", FLUID)
+run(["run", restart_scene, "--out", path("out", "xmf_full"), "--set", "time.end=0.004"])
+os.symlink("/dev/full", path("out", "xmf_full", "fields.xmf.tmp"))
+case("issue41", "xmf_disk_full",
+     ["run", restart_scene, "--out", path("out", "xmf_full"), "--set", "time.end=0.008",
+      "--restart", path("out", "xmf_full", "checkpoint_000000050.h5")], "stop",
+     ["fields.xmf: cannot write: No space left on device (disk full; fields.xmf is left as it "
+      "was before this write)"])
+run(["run", restart_scene, "--out", path("out", "h5_locked"), "--set", "time.end=0.004"])
+with open(path("out", "h5_locked", "fields.h5"), "rb") as held:
+    fcntl.flock(held, fcntl.LOCK_SH)
+    case("issue41", "fields_h5_locked",
+         ["run", restart_scene, "--out", path("out", "h5_locked"), "--set", "time.end=0.008",
+          "--restart", path("out", "h5_locked", "checkpoint_000000050.h5")], "error",
+         ["fields.h5: cannot open: it is locked by another process"])
 
 # ---------------------------------------------------------------- the table
 shutil.rmtree(WORK, ignore_errors=True)

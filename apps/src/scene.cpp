@@ -15,6 +15,7 @@
 #include <iterator>
 #include <set>
 #include <sstream>
+#include <type_traits>
 #include <yaml-cpp/depthguard.h>
 
 namespace fsi::app {
@@ -104,7 +105,8 @@ ProbeSpec read_probe(Section s) {
   p.interpolate = s.boolean("interpolate", false,
                             "(type tlsph) displacement at point by the kernel interpolation of "
                             "the particles' displacements (linear correction, reference "
-                            "configuration); false: the particle nearest to point");
+                            "configuration); false: the particle nearest to point (type fem: "
+                            "the node at point either way, the FE interpolation there)");
   if (!s.context().documenting()) {
     const bool ok_name = !p.name.empty() && std::all_of(p.name.begin(), p.name.end(), [](char c) {
       return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
@@ -373,6 +375,9 @@ void read_solver_block(Section& s, const std::vector<Plugin>& plugins, Block& bl
   block.line = s.line();
   block.type = s.choice("type", types, types.front(), what + " solver (apps/solvers/<type>/)");
   if (!s.context().documenting()) {
+    if constexpr (std::is_same_v<Plugin, StructurePlugin>)
+      for (const auto& p : plugins)
+        if (p.name == block.type && p.adopt) p.adopt(s);
     for (const auto& p : plugins)
       if (p.name != block.type && s.has(p.name)) check_set_aside(s, p);
     s.lift(block.type);
@@ -487,6 +492,15 @@ std::string scene_reference() {
       << "the chosen type's is read as keys of the solver block, the others are checked and set\n"
       << "aside, so one scene runs with any fluid and any structure by `--set fluid.type=sph\n"
       << "--set structures[0].type=tlsph` (tests/apps/data/tiny_any_pair.yaml).\n\n"
+      << "A structure given for one type only takes the other type's geometry from it, so\n"
+      << "`--set structures[N].type=tlsph` or `=fem` alone switches it: without a `region`, the\n"
+      << "TL-SPH solid fills the FE mesh's outline (a rectangle, or a Gmsh mesh's boundary) at\n"
+      << "`dp` = the mesh's node spacing unless `dp` is given, each FE `clamped` side (straight,\n"
+      << "along an axis) continued 4 rows outwards into a clamped box; without a `mesh`, the FE\n"
+      << "type meshes a TL-SPH rectangle `{min, max}` with nodes about dp apart, a clamped box\n"
+      << "holding a side's strip becoming that clamped side, or reads a Gmsh `region.file`.\n"
+      << "What does not translate (FE `loads`, a slanted clamped side, a TL-SPH polygon) is an\n"
+      << "error naming the key (apps/solvers/structure_geometry.hpp).\n\n"
       << "| key | type | default | allowed | meaning |\n|---|---|---|---|---|\n";
   for (const auto& k : *ctx.collector)
     out << "| `" << k.path << "` | " << k.type << " | " << k.fallback << " | " << k.range << " | "

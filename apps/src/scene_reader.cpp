@@ -258,6 +258,10 @@ void Section::set_aside(const std::string& key) {
   read_.push_back(key);
 }
 
+void Section::rebind(YAML::Node view) {
+  node_.reset(view);
+}
+
 bool Section::has(const std::string& key) const {
   return node_.IsMap() && node_[key].IsDefined() && !node_[key].IsNull();
 }

@@ -19,12 +19,14 @@
 #include <limits>
 #include <regex>
 #include <sstream>
+#include <sys/file.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 namespace fs = std::filesystem;
 using Catch::Contains;
+using Catch::StartsWith;
 using fsi_test::slurp;
 using fsi_test::wait_status;
 
@@ -235,6 +237,60 @@ TEST_CASE("apps: output: a restart from a damaged checkpoint stops with exit 2 b
   CHECK(std::count(err.begin(), err.end(), '\n') == 1);
   CHECK(slurp(out / "probes.csv") == probes); // nothing cut back or computed
   CHECK(slurp(out / "fields.xmf") == xmf);
+}
+
+TEST_CASE("apps: output: a full disk while rewriting fields.xmf says so and keeps the pair whole",
+          "[apps][output][disk]") {
+  // The restart rewrites fields.xmf (to fields.xmf.tmp, renamed); fields.xmf.tmp a link to
+  // /dev/full makes that write fail with ENOSPC, as on a full disk.
+  const fs::path dir = checkpointed_run("full_xmf"), out = dir / "run";
+  const std::string xmf = slurp(out / "fields.xmf");
+  const std::size_t frames = fsi_test::frames_in(out / "fields.xmf");
+  fs::create_symlink("/dev/full", out / "fields.xmf.tmp");
+  std::string err;
+  const int status = run_fsi({"run", fluid, "--out", out.string(), "--set", "time.end=0.008",
+                              "--restart", (out / "checkpoint_000000050.h5").string()},
+                             dir, 0, err);
+  INFO(err);
+  CHECK(status == 3);
+  CHECK_THAT(last_line(err), StartsWith("run stopped: output: " + (out / "fields.xmf").string() +
+                                        ": cannot write: No space left on device (disk full; "
+                                        "fields.xmf is left as it was before this write)"));
+  CHECK(temporary_files(out).empty());
+  check_run_json(out);
+  // The index as before, and every frame it names still in fields.h5 (the frames after the
+  // checkpoint are deleted only once the new index is written).
+  CHECK(slurp(out / "fields.xmf") == xmf);
+  CHECK(frames >= 3);
+  CHECK(check_index_readable(out) == frames);
+}
+
+TEST_CASE("apps: output: a restart while another process holds fields.h5 names the lock",
+          "[apps][output][checkpoint]") {
+  // A reader's lock, as HDF5 (h5py, ParaView) takes it on a file it has open; flock locks of two
+  // open files conflict, so this process's lock is in the way of the child's HDF5.
+  const fs::path dir = checkpointed_run("locked_fields"), out = dir / "run";
+  const std::vector<std::string> restart = {
+      "run",       fluid,
+      "--out",     out.string(),
+      "--set",     "time.end=0.008",
+      "--restart", (out / "checkpoint_000000050.h5").string()};
+  const std::string probes = slurp(out / "probes.csv");
+  const int reader = ::open((out / "fields.h5").c_str(), O_RDONLY | O_CLOEXEC);
+  REQUIRE(reader >= 0);
+  REQUIRE(::flock(reader, LOCK_SH) == 0);
+  std::string err;
+  const int status = run_fsi(restart, dir, 0, err);
+  ::close(reader);
+  INFO(err);
+  CHECK(status == 2);
+  CHECK(err == (out / "fields.h5").string() +
+                   ": cannot open: it is locked by another process (HDF5 file locking: a "
+                   "program holds it open, e.g. a viewer, h5py or another fsi run); close it "
+                   "there and try again\n");
+  CHECK(slurp(out / "probes.csv") == probes); // nothing cut back
+  // The lock released, the same restart runs.
+  CHECK(run_fsi(restart, dir, 0, err) == 0);
 }
 
 TEST_CASE("apps: output: a checkpoint of a Courant-stepped run says so when refused",

@@ -96,6 +96,9 @@ public:
   void lift(const std::string& key);
   /// Marks `key` as read without reading it (a sub-block another reader has checked).
   void set_aside(const std::string& key);
+  /// Reads `view` as this block from now on (a plug-in's translation of another type's keys,
+  /// StructurePlugin::adopt): the keys read so far stay read; the scene's tree is untouched.
+  void rebind(YAML::Node view);
   /// The block's keys and values, for a reader that checks a view of them.
   const YAML::Node& node() const { return node_; }
   /// Every key present must have been read: anything else is an unknown key.

@@ -102,6 +102,10 @@ struct StructurePlugin {
   std::function<Footprint(const Scene&, std::size_t index)> footprint;
   std::vector<std::string> fields;
   std::vector<std::string> probe_quantities; ///< probes naming a structure of this type
+  /// Before `read`, when the entry gives another type's geometry and not this type's: rewrites
+  /// the entry (Section::rebind) into this type's keys (apps/solvers/structure_geometry.hpp);
+  /// empty: none.
+  std::function<void(Section&)> adopt;
 };
 
 /// `build` of a part whose constructor takes what build is given.

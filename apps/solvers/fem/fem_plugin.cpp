@@ -5,6 +5,7 @@
 #include "fem/fem_model.hpp"
 #include "fsi/core/format.hpp"
 #include "fsi_app/wall_motion.hpp"
+#include "structure_geometry.hpp"
 
 #include <algorithm>
 #include <limits>
@@ -63,7 +64,6 @@ void check(const Scene& scene, std::size_t index, Section& s, std::vector<Sectio
     const auto& p = scene.output.probes[i];
     if (p.structure != block.name) continue;
     if (!p.node && !p.point) probes[i].fail("", "give node or point");
-    if (p.interpolate) probes[i].fail("interpolate", "an FE probe samples its node");
     if (st.mesh.kind == "rectangle") check_rectangle_probe(st.mesh, p, probes[i]);
     check_frame_probe(p, st.clamped_motion, probes[i]);
   }
@@ -115,7 +115,8 @@ StructurePlugin plugin() {
           validate,
           footprint,
           {"displacement", "velocity", "von_mises"},
-          {"displacement_x", "displacement_y", "displacement_x_tank", "displacement_y_tank"}};
+          {"displacement_x", "displacement_y", "displacement_x_tank", "displacement_y_tank"},
+          fem_from_tlsph};
 }
 
 } // namespace fsi::app::fem_plugin

@@ -5,6 +5,7 @@
 #include "fsi/core/format.hpp"
 #include "fsi_app/fluid_regions.hpp"
 #include "fsi_app/wall_motion.hpp"
+#include "structure_geometry.hpp"
 #include "tlsph/tlsph_model.hpp"
 
 #include <algorithm>
@@ -62,7 +63,8 @@ StructurePlugin plugin() {
           validate,
           footprint,
           {"displacement", "velocity", "von_mises", "det_F"},
-          {"displacement_x", "displacement_y", "displacement_x_tank", "displacement_y_tank"}};
+          {"displacement_x", "displacement_y", "displacement_x_tank", "displacement_y_tank"},
+          tlsph_from_fem};
 }
 
 } // namespace fsi::app::tlsph_plugin

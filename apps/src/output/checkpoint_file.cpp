@@ -1,5 +1,6 @@
 #include "fsi_app/output/checkpoint_file.hpp"
 
+#include "fsi_app/output/file_lock.hpp"
 #include "fsi_app/output/text_file.hpp"
 
 #include <bit>
@@ -198,7 +199,9 @@ void write_checkpoint(const std::filesystem::path& file, const StateArchive& arc
 StateArchive read_checkpoint(const std::filesystem::path& file) {
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
   Id h5(H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
-  if (!h5.valid()) throw InputError(file.string() + ": cannot open as an HDF5 checkpoint");
+  if (!h5.valid())
+    throw InputError(file.string() + ": cannot open as an HDF5 checkpoint" +
+                     lock_note(file, false));
   Reader r{file, {}};
   r.read_group(h5.get(), "");
   // A NaN is refused, naming its dataset. Not checked: the wall-hit cache (`*/hits/*`), whose

@@ -1,6 +1,7 @@
 #include "fsi_app/output/fields_file.hpp"
 
 #include "fsi/core/error.hpp"
+#include "fsi_app/output/file_lock.hpp"
 #include "fsi_app/output/text_file.hpp"
 
 #include <algorithm>
@@ -164,8 +165,11 @@ FieldsFile::FieldsFile(const std::filesystem::path& h5, const std::filesystem::p
     : h5_path_(h5), xmf_path_(xmf) {
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
   file_ = H5Fopen(h5.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
-  if (file_ < 0)
-    throw InputError(h5.string() + ": cannot open (a restart continues the files of its run)");
+  if (file_ < 0) {
+    const std::string locked = lock_note(h5, true);
+    throw InputError(h5.string() + ": cannot open" +
+                     (locked.empty() ? " (a restart continues the files of its run)" : locked));
+  }
   opened([&] {
     for (const auto& grid : children(file_, "meshes", h5))
       if (grid != "vertices")
@@ -176,9 +180,6 @@ FieldsFile::FieldsFile(const std::filesystem::path& h5, const std::filesystem::p
     if (count < keep_frames)
       throw InputError(h5.string() + ": has " + std::to_string(count) +
                        " frames, the checkpoint needs " + std::to_string(keep_frames));
-    for (int k = keep_frames; k < count; ++k) // frames after the checkpoint
-      check(H5Ldelete(file_, ("frames/" + std::to_string(k)).c_str(), H5P_DEFAULT), h5,
-            "cannot delete frame " + std::to_string(k));
     for (int k = 0; k < keep_frames; ++k) {
       const std::string frame = "frames/" + std::to_string(k);
       FrameRecord record{read_frame_time(h5, file_, k), {}};
@@ -193,8 +194,13 @@ FieldsFile::FieldsFile(const std::filesystem::path& h5, const std::filesystem::p
       }
       frames_.push_back(std::move(record));
     }
-    check(H5Fflush(file_, H5F_SCOPE_GLOBAL), h5, "flush failed");
+    // The index first, then the frames after the checkpoint deleted: an index that cannot be
+    // written (a full disk) leaves the pair as it was, every frame it names present.
     write_xdmf();
+    for (int k = keep_frames; k < count; ++k)
+      check(H5Ldelete(file_, ("frames/" + std::to_string(k)).c_str(), H5P_DEFAULT), h5,
+            "cannot delete frame " + std::to_string(k));
+    check(H5Fflush(file_, H5F_SCOPE_GLOBAL), h5, "flush failed");
     restarted_ = true;
   });
 }
@@ -400,7 +406,7 @@ void FieldsFile::write_xdmf() const {
 Dataset read_dataset(const std::filesystem::path& h5, const std::string& name) {
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
   const hid_t file = H5Fopen(h5.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-  if (file < 0) throw InputError(h5.string() + ": cannot open HDF5 file");
+  if (file < 0) throw InputError(h5.string() + ": cannot open HDF5 file" + lock_note(h5, false));
   const hid_t set = H5Dopen2(file, name.c_str(), H5P_DEFAULT);
   if (set < 0) {
     H5Fclose(file);
@@ -424,7 +430,7 @@ Dataset read_dataset(const std::filesystem::path& h5, const std::string& name) {
 double read_frame_time(const std::filesystem::path& h5, int frame) {
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
   const hid_t file = H5Fopen(h5.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-  if (file < 0) throw InputError(h5.string() + ": cannot open HDF5 file");
+  if (file < 0) throw InputError(h5.string() + ": cannot open HDF5 file" + lock_note(h5, false));
   try {
     const double time = read_frame_time(h5, file, frame);
     H5Fclose(file);

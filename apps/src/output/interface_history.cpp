@@ -1,6 +1,7 @@
 #include "fsi_app/output/interface_history.hpp"
 
 #include "fsi/core/error.hpp"
+#include "fsi_app/output/file_lock.hpp"
 
 #include <algorithm>
 #include <array>
@@ -129,7 +130,7 @@ InterfaceHistory::InterfaceHistory(const std::filesystem::path& h5) : path_(h5) 
   const std::string where = h5.string() + ": ";
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
   file_ = H5Fopen(h5.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-  if (file_ < 0) throw InputError(where + "cannot open as HDF5");
+  if (file_ < 0) throw InputError(where + "cannot open as HDF5" + lock_note(h5, false));
   const hid_t time = H5Dopen2(file_, "time", H5P_DEFAULT);
   if (time < 0) throw InputError(where + "no dataset /time (not an interface.h5?)");
   const auto time_dims = dims_of(time);

@@ -29,7 +29,13 @@ void write_file_atomically(const std::filesystem::path& file, const void* data, 
   auto fail = [&](const std::string& what, int error) {
     std::error_code ignored;
     std::filesystem::remove(tmp, ignored);
-    throw RunError(prefix + file.string() + ": " + what + ": " + std::strerror(error));
+    const std::string kept = file.filename().string() + " is left as it was before this write";
+    std::string why;
+    if (error == ENOSPC || error == EDQUOT)
+      why = " (disk full; " + kept + ")";
+    else if (error == EFBIG)
+      why = " (the file size limit, ulimit -f; " + kept + ")";
+    throw RunError(prefix + file.string() + ": " + what + ": " + std::strerror(error) + why);
   };
   const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd < 0) fail("cannot create " + tmp.filename().string(), errno);
