@@ -9,7 +9,7 @@
 
 namespace fsi::materials {
 
-void validate(const MaterialOptions& o) {
+void validate_constants(const MaterialOptions& o) {
   auto fail = [](const char* key, double value, const char* range) {
     throw InputError(std::string("material: ") + key + " = " + std::to_string(value) +
                      ": must be " + range);
@@ -19,6 +19,10 @@ void validate(const MaterialOptions& o) {
   if (!(o.poisson_ratio > -1.0 && o.poisson_ratio < 0.5))
     fail("poisson_ratio", o.poisson_ratio, "in (-1, 0.5)");
   if (!(o.density > 0.0) || !std::isfinite(o.density)) fail("density", o.density, "> 0");
+}
+
+void validate(const MaterialOptions& o) {
+  validate_constants(o);
   if (o.model == MaterialModel::neo_hookean && o.plane != PlaneModel::plane_strain)
     throw InputError("material: neo_hookean is implemented in plane strain only");
 }
@@ -26,6 +30,11 @@ void validate(const MaterialOptions& o) {
 std::unique_ptr<Material> make_material(const MaterialOptions& o) {
   if (o.model == MaterialModel::neo_hookean) return std::make_unique<NeoHookean>(o);
   return std::make_unique<StVenantKirchhoff>(o);
+}
+
+std::unique_ptr<Material3> make_material_3d(const MaterialOptions& o) {
+  if (o.model == MaterialModel::neo_hookean) return std::make_unique<NeoHookean3>(o);
+  return std::make_unique<StVenantKirchhoff3>(o);
 }
 
 double von_mises(const Material& law, const Mat2& F, const Mat2& E) {

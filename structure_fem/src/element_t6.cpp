@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "reference_map.hpp"
 #include "structure_fem/shape_t6.hpp"
 
 namespace fsi::fem {
@@ -11,17 +12,6 @@ namespace fsi::fem {
 namespace {
 
 using Mat26 = Eigen::Matrix<double, 2, 6>;
-
-Eigen::Matrix<double, 6, 2> coordinates(const ElementNodes& X) {
-  Eigen::Matrix<double, 6, 2> C;
-  for (int k = 0; k < 6; ++k) C.row(k) = X[static_cast<std::size_t>(k)].transpose();
-  return C;
-}
-
-/// J(i, j) = dX_j / dxi_i.
-Mat2 jacobian(const Mat26& dN, const Eigen::Matrix<double, 6, 2>& C) {
-  return dN * C;
-}
 
 /// H = grad_X u; u as 2 x 6 (column K = u_K). F = I + H (eq. 30 with eq. 28).
 Mat2 displacement_gradient(const Mat26& dNdX, const Vec12& u) {
@@ -38,7 +28,7 @@ Mat2 green_lagrange(const Mat2& H) {
 } // namespace
 
 double t6_min_jacobian(const ElementNodes& X) {
-  const auto C = coordinates(X);
+  const auto C = node_coordinates(X);
   double detmin = std::numeric_limits<double>::infinity();
   auto at = [&](double xi, double eta) {
     detmin = std::min(detmin, jacobian(t6_shape_derivatives(xi, eta), C).determinant());
@@ -50,7 +40,7 @@ double t6_min_jacobian(const ElementNodes& X) {
 }
 
 double t6_area(const ElementNodes& X) {
-  const auto C = coordinates(X);
+  const auto C = node_coordinates(X);
   double area = 0.0;
   for (const auto& q : rule_degree2)
     area += q.weight * jacobian(t6_shape_derivatives(q.xi, q.eta), C).determinant();
@@ -58,7 +48,7 @@ double t6_area(const ElementNodes& X) {
 }
 
 ElementT6::ElementT6(const ElementNodes& X) {
-  const auto C = coordinates(X);
+  const auto C = node_coordinates(X);
   for (std::size_t q = 0; q < rule_degree2.size(); ++q) {
     const Mat26 dN = t6_shape_derivatives(rule_degree2[q].xi, rule_degree2[q].eta);
     const Mat2 J = jacobian(dN, C);
@@ -113,7 +103,7 @@ double ElementT6::strain_energy(const Vec12& u, const Material& material) const 
 }
 
 Mat12 t6_mass(const ElementNodes& X, double rho) {
-  const auto C = coordinates(X);
+  const auto C = node_coordinates(X);
   Eigen::Matrix<double, 6, 6> m = Eigen::Matrix<double, 6, 6>::Zero();
   for (const auto& q : rule_degree4) {
     const auto N = t6_shape(q.xi, q.eta);
@@ -128,7 +118,7 @@ Mat12 t6_mass(const ElementNodes& X, double rho) {
 
 std::array<double, 6> t6_nodal_von_mises(const ElementNodes& X, const Vec12& u,
                                          const Material& material) {
-  const auto C = coordinates(X);
+  const auto C = node_coordinates(X);
   std::array<double, 6> vm{};
   for (std::size_t k = 0; k < 6; ++k) {
     const Mat26 dN = t6_shape_derivatives(t6_node_parent[k][0], t6_node_parent[k][1]);
