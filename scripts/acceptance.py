@@ -179,6 +179,16 @@ def m_gradient(run, q, _others, _spec):
     return {"value": (mean_b - mean_a) / (q["x"][1] - q["x"][0])}
 
 
+def m_ratio(run, q, _others, _spec):
+    """Mean of probe a over the window over the mean of probe b over the same window."""
+    a = inside(run, dict(q, probe=q["probes"][0]))
+    b = inside(run, dict(q, probe=q["probes"][1]))
+    mean_b = sum(v for _, v in b) / len(b)
+    if mean_b == 0:
+        raise AcceptanceError(f"{run.path}: {q['probes'][1]}: mean over the window is 0")
+    return {"value": (sum(v for _, v in a) / len(a)) / mean_b}
+
+
 def m_front(run, q, _others, _spec):
     """Martin & Moyce: dam_break_front.measure (fitted release offset, errors, front speed)."""
     m = dam_break_front.measure(run.path, q.get("probe", "front"), q.get("release", 0.0),
@@ -278,6 +288,7 @@ def m_regression(run, q, _others, spec):
 
 
 MEASURES = {"peak": m_peak, "mean": m_mean, "final": m_final, "gradient": m_gradient,
+            "ratio": m_ratio,
             "front": m_front, "front_agreement": m_front_agreement,
             "still_water": m_still_water, "growth": m_growth, "decay": m_decay, "oscillation": m_oscillation,
             "regression": m_regression}

@@ -113,9 +113,10 @@ TEST_CASE("apps: a fluid run writes its particles, the surge front and its count
   text << json.rdbuf();
   CHECK(text.str().find("\"particles_initial\": 200") != std::string::npos);
   CHECK(text.str().find("\"removed_particles\": 0") != std::string::npos);
-  // The wall model as resolved: its preset, the scene's key and a preset's term.
-  CHECK(text.str().find("\"wall_model\": \"paper\"") != std::string::npos);
+  // The wall model as resolved: the scene's preset and its terms, set and left alone.
+  CHECK(text.str().find("\"wall_model\": \"default\"") != std::string::npos);
   CHECK(text.str().find("\"wall_approach_viscosity\": 0.5") != std::string::npos);
+  CHECK(text.str().find("\"mirror_same_side\": true") != std::string::npos);
   CHECK(text.str().find("\"wall_contact\": \"paper\"") != std::string::npos);
   // The fluid's list builds (at least the first, at most two a step) and its time split, whose
   // parts add up to no more than the run's wall time.

@@ -293,10 +293,12 @@ TEST_CASE("apps: the wall model's preset is read before its term keys, which ove
   CHECK(b.wall.mirror.approach_viscosity == 0.2);
   CHECK(b.artificial_viscosity == 0.05);
   CHECK(b.wall.pnd.density == fsi::emps::WallDensity::scaled);
-  // paper: the library's terms as printed, with the scene's own keys on top.
-  const auto c = fluid({"fluid.wall_model=paper"});
+  // The scene's preset is default; paper overrides it: the library's terms as printed, with a
+  // term key on top.
+  CHECK(fluid({}).wall.model == WallModel::standard);
+  const auto c = fluid({"fluid.wall_model=paper", "fluid.wall_approach_viscosity=0.5"});
   CHECK(c.wall.model == WallModel::paper);
-  CHECK(c.wall.mirror.approach_viscosity == 0.5); // dam_break_rigid.yaml's key
+  CHECK(c.wall.mirror.approach_viscosity == 0.5);
   CHECK_FALSE(c.wall.mirror.same_side);
   CHECK(c.wall.pnd.density == fsi::emps::WallDensity::added);
   CHECK(c.wall.gap_courant == 0.0);

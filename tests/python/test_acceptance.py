@@ -42,6 +42,15 @@ def tank(name, pressure):
                                                     "kinetic_energy"], rows)
 
 
+def block(name, corner_over_bulk):
+    """Still water around the block to 4 s: p_corner = corner_over_bulk x p_bulk, both 2.5 %
+    below rho g h (the ratio is judged, rho g h only reported)."""
+    bulk = 2394.0 * 0.975
+    rows = [(0.05 * k, corner_over_bulk * bulk, bulk, 1e-4, 0.01 / (1 + k)) for k in range(81)]
+    return write_run(name, "hydrostatic_block", [], ["time", "p_corner", "p_bulk", "mean_speed",
+                                                     "kinetic_energy"], rows)
+
+
 def plate(name, scale):
     """The committed quick-tier plate series, multiplied by scale."""
     ref = acceptance.read_reference_csv(os.path.join(SOURCE, "data", "ref", "hydrostatic_plate",
@@ -58,6 +67,15 @@ class AcceptanceTest(unittest.TestCase):
         status, out = check(tank("tank_off", 4905.0 * 0.98), "--tier", "standard")
         self.assertEqual(status, 1, out)
         self.assertRegex(out, r"FAIL +p_bottom .*: 4807 Pa against 4905 Pa, error -2.00 %")
+
+    def test_the_block_judges_the_corner_against_the_bulk_at_its_depth(self):
+        status, out = check(block("block_ok", 1.005), "--tier", "standard")
+        self.assertEqual(status, 0, out)
+        self.assertRegex(out, r"PASS +p_corner over p_bulk .*: 1.005 against 1, error \+0.50 %")
+        self.assertRegex(out, r"reported +p_corner, mean over the last 1 s: .* error -2.01 %")
+        status, out = check(block("block_off", 1.02), "--tier", "standard")
+        self.assertEqual(status, 1, out)
+        self.assertRegex(out, r"FAIL +p_corner over p_bulk .*: 1.02 against 1, error \+2.00 %")
 
     def test_the_regression_catches_what_the_published_band_lets_through(self):
         status, out = check(plate("plate_same", 1.0), "--tier", "quick")
