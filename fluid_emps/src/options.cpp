@@ -88,9 +88,9 @@ void visit_options(FluidOptions& o, OptionVisitor& v) {
   v.choice("wall_model", o.wall.model,
            {{"paper", WallModel::paper}, {"default", WallModel::standard}},
            "the wall model's preset: paper, Mitsume 2023 as printed (eqs. 18-27, with the corner "
-           "faces and convex corners below); default, one set for every scene (being validated, "
-           "docs/fluid_emps.md): the paper's plus "
-           "wall_density scaled, mirror_same_side, wall_approach_viscosity 0.5, wall_gap_courant "
+           "faces and convex corners below); default, the wall of every shipped EMPS scene "
+           "(docs/fluid_emps.md, \"The wall model\"): the paper's plus wall_density scaled, "
+           "mirror_same_side, wall_approach_viscosity 0.5, wall_gap_courant "
            "0.5 and artificial_viscosity 0.2. The wall keys below and "
            "artificial_viscosity are expert overrides of one term each, applied after the preset");
   if (o.wall.model != before) apply_wall_preset(o, o.wall.model);
