@@ -8,37 +8,6 @@
 
 namespace fsi::fem {
 
-DofMap::DofMap(const Mesh& mesh, const std::vector<DirichletCondition>& conditions)
-    : free_of_dof_(2 * mesh.num_nodes(), 0), condition_of_dof_(2 * mesh.num_nodes(), -1) {
-  for (std::size_t i = 0; i < conditions.size(); ++i) {
-    const auto& c = conditions[i];
-    for (int node : c.tag.empty() ? c.nodes : mesh.node_set(c.tag)) {
-      if (node < 0 || static_cast<std::size_t>(node) >= mesh.num_nodes())
-        throw InputError("clamped: node index " + std::to_string(node) + " out of range (" +
-                         std::to_string(mesh.num_nodes()) + " nodes)");
-      for (std::size_t comp = 0; comp < 2; ++comp)
-        if (comp == 0 ? c.fix_x : c.fix_y) {
-          free_of_dof_[2 * static_cast<std::size_t>(node) + comp] = -1;
-          condition_of_dof_[2 * static_cast<std::size_t>(node) + comp] = static_cast<int>(i);
-        }
-    }
-  }
-  for (auto& f : free_of_dof_)
-    if (f == 0) f = num_free_++;
-}
-
-Vector DofMap::restrict_to_free(const Vector& full) const {
-  Vector free(num_free_);
-  for (int d = 0; d < num_dofs(); ++d)
-    if (free_index(d) >= 0) free[free_index(d)] = full[d];
-  return free;
-}
-
-void DofMap::add_free(const Vector& free, Vector& full) const {
-  for (int d = 0; d < num_dofs(); ++d)
-    if (free_index(d) >= 0) full[d] += free[free_index(d)];
-}
-
 Assembler::Assembler(const Mesh& mesh, const Material& material, const DofMap& dofs)
     : mesh_(mesh), material_(material), dofs_(dofs), Ke_(mesh.num_elements()),
       fe_(mesh.num_elements()), detF_(mesh.num_elements()) {
@@ -46,32 +15,9 @@ Assembler::Assembler(const Mesh& mesh, const Material& material, const DofMap& d
   elements_.reserve(n_el);
   for (std::size_t e = 0; e < n_el; ++e) elements_.emplace_back(element_nodes(e));
 
-  auto global_free = [&](std::size_t e, int i) {
+  scatter_ = ElementScatter<12>(n_el, dofs_.num_free(), [&](std::size_t e, int i) {
     return dofs_.free_index(2 * mesh_.elements[e][static_cast<std::size_t>(i / 2)] + i % 2);
-  };
-  std::vector<Eigen::Triplet<double>> triplets;
-  triplets.reserve(n_el * 144);
-  for (std::size_t e = 0; e < n_el; ++e)
-    for (int j = 0; j < 12; ++j)
-      for (int i = 0; i < 12; ++i)
-        if (global_free(e, i) >= 0 && global_free(e, j) >= 0)
-          triplets.emplace_back(global_free(e, i), global_free(e, j), 0.0);
-  pattern_.resize(dofs_.num_free(), dofs_.num_free());
-  pattern_.setFromTriplets(triplets.begin(), triplets.end());
-  pattern_.makeCompressed();
-
-  // slot_[144 e + i + 12 j]: position of (row i, column j) of element e in the value array.
-  slot_.assign(n_el * 144, -1);
-  const int* outer = pattern_.outerIndexPtr();
-  const int* inner = pattern_.innerIndexPtr();
-  for (std::size_t e = 0; e < n_el; ++e)
-    for (int j = 0; j < 12; ++j)
-      for (int i = 0; i < 12; ++i) {
-        const int r = global_free(e, i), c = global_free(e, j);
-        if (r < 0 || c < 0) continue;
-        const int* pos = std::lower_bound(inner + outer[c], inner + outer[c + 1], r);
-        slot_[144 * e + static_cast<std::size_t>(i + 12 * j)] = static_cast<int>(pos - inner);
-      }
+  });
 }
 
 ElementNodes Assembler::element_nodes(std::size_t e) const {
@@ -86,17 +32,6 @@ Vec12 Assembler::gather(const Vector& u, std::size_t e) const {
   for (std::size_t k = 0; k < 6; ++k)
     ue.segment<2>(2 * static_cast<Eigen::Index>(k)) = u.segment<2>(2 * mesh_.elements[e][k]);
   return ue;
-}
-
-void Assembler::scatter_matrices(SparseMatrix& A) const {
-  double* values = A.valuePtr();
-  std::fill(values, values + A.nonZeros(), 0.0);
-  for (std::size_t e = 0; e < Ke_.size(); ++e) {
-    const int* slot = &slot_[144 * e];
-    const double* k = Ke_[e].data(); // column-major, k[i + 12 j]
-    for (int ij = 0; ij < 144; ++ij)
-      if (slot[ij] >= 0) values[slot[ij]] += k[ij];
-  }
 }
 
 void Assembler::assemble(const Vector& u, Vector& f_int, SparseMatrix* K) {
@@ -115,14 +50,14 @@ void Assembler::assemble(const Vector& u, Vector& f_int, SparseMatrix* K) {
     for (std::size_t k = 0; k < 6; ++k)
       f_int.segment<2>(2 * mesh_.elements[e][k]) +=
           fe_[e].segment<2>(2 * static_cast<Eigen::Index>(k));
-  if (K) scatter_matrices(*K);
+  if (K) scatter_.scatter(Ke_, *K);
 }
 
 SparseMatrix Assembler::mass() {
   parallel_for(elements_.size(),
                [&](std::size_t e) { Ke_[e] = t6_mass(element_nodes(e), material_.density()); });
-  SparseMatrix M = pattern_;
-  scatter_matrices(M);
+  SparseMatrix M = scatter_.pattern();
+  scatter_.scatter(Ke_, M);
   return M;
 }
 

@@ -75,6 +75,16 @@ double ElementT10::internal_force(const Vec30& u, const Material3& material, Vec
   return detF_min;
 }
 
+double ElementT10::strain_energy(const Vec30& u, const Material3& material) const {
+  const auto U = Eigen::Map<const Mat310>(u.data());
+  double W = 0.0;
+  for (std::size_t q = 0; q < dNdX_.size(); ++q) {
+    const Mat3 H = U * dNdX_[q].transpose();
+    W += w_detJ_[q] * material.energy(0.5 * (H + H.transpose() + H.transpose() * H));
+  }
+  return W;
+}
+
 Mat30 t10_mass(const TetNodes& X, double rho) {
   const auto C = node_coordinates(X);
   Eigen::Matrix<double, 10, 10> m = Eigen::Matrix<double, 10, 10>::Zero();
