@@ -5,7 +5,7 @@
 
 #include <array>
 
-#include "structure_fem/assembly_t10.hpp"
+#include "structure_fem/assembly.hpp"
 #include "structure_fem/box_mesher.hpp"
 #include "structure_fem/linear_solver.hpp"
 #include "structure_fem/loads.hpp"

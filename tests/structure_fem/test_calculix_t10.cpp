@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "calculix.hpp"
-#include "structure_fem/assembly_t10.hpp"
+#include "structure_fem/assembly.hpp"
 #include "structure_fem/box_mesher.hpp"
 #include "structure_fem/linear_solver.hpp"
 #include "structure_fem/loads.hpp"

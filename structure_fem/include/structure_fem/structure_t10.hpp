@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "materials/energies.hpp"
-#include "structure_fem/assembly_t10.hpp"
+#include "structure_fem/assembly.hpp"
 #include "structure_fem/linear_solver.hpp"
 #include "structure_fem/material.hpp"
 #include "structure_fem/mesh_t10.hpp"
