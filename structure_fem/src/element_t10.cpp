@@ -15,6 +15,18 @@ using Vec6 = Eigen::Matrix<double, 6, 1>;
 
 } // namespace
 
+double t10_min_jacobian(const TetNodes& X) {
+  const auto C = node_coordinates(X);
+  double m = std::numeric_limits<double>::infinity();
+  auto at = [&](double xi, double eta, double zeta) {
+    m = std::min(m, jacobian(t10_shape_derivatives(xi, eta, zeta), C).determinant());
+  };
+  for (const auto& p : t10_node_parent) at(p[0], p[1], p[2]);
+  for (const auto& q : tet_rule_degree2) at(q.xi, q.eta, q.zeta);
+  for (const auto& q : tet_rule_degree5) at(q.xi, q.eta, q.zeta);
+  return m;
+}
+
 double t10_volume(const TetNodes& X) {
   const auto C = node_coordinates(X);
   double volume = 0.0;

@@ -14,7 +14,7 @@
 #include "structure_fem/box_mesher.hpp"
 #include "structure_fem/linear_solver.hpp"
 #include "structure_fem/loads.hpp"
-#include "structure_fem/structure_t10.hpp"
+#include "structure_fem/structure.hpp"
 
 using namespace fsi::fem;
 using fem_test::ccx_available;
@@ -135,7 +135,7 @@ TEST_CASE("T10: cantilever at large deflection agrees with CalculiX C3D10 NLGEOM
   StructureT10 s(c.mesh, o);
   s.set_external_forces(c.f);
   int iterations = 0;
-  for (const auto& r : s.solve_static(10)) iterations += r.iterations;
+  for (const auto& r : s.solve_static({10})) iterations += r.iterations;
   const Vector& u = s.displacement();
   const Vector u_ccx = ccx_tip_displacements(c, true, "cantilever_t10_nlgeom");
   const double rotation = c.tip_rotation(u) * 180.0 / std::numbers::pi;

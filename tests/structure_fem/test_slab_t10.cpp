@@ -6,7 +6,7 @@
 #include "hydrostatic_plate.hpp"
 #include "structure_fem/box_mesher.hpp"
 #include "structure_fem/loads.hpp"
-#include "structure_fem/structure_t10.hpp"
+#include "structure_fem/structure.hpp"
 
 using namespace fsi::fem;
 using fem_test::Plate;

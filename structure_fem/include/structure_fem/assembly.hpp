@@ -29,6 +29,7 @@ struct T6 {
   using Element = ElementT6;
   using Material = fem::Material;
   using Nodes = ElementNodes;
+  using Condition = DirichletCondition;
   static Mat12 mass(const Nodes& X, double rho) { return t6_mass(X, rho); }
   static long label(const Mesh& mesh, std::size_t e) { return mesh.element_label[e]; }
 };
@@ -40,6 +41,7 @@ struct T10 {
   using Element = ElementT10;
   using Material = Material3;
   using Nodes = TetNodes;
+  using Condition = DirichletCondition3;
   static Mat30 mass(const Nodes& X, double rho) { return t10_mass(X, rho); }
   static long label(const Mesh&, std::size_t e) { return static_cast<long>(e) + 1; }
 };

@@ -12,14 +12,20 @@
 namespace fsi::fem {
 
 /// Displacement, velocity and acceleration prescribed on a node at one time.
-struct PrescribedKinematics {
-  Vec2 u = Vec2::Zero(), v = Vec2::Zero(), a = Vec2::Zero();
+template <int D> struct BasicPrescribedKinematics {
+  VecD<D> u = VecD<D>::Zero(), v = VecD<D>::Zero(), a = VecD<D>::Zero();
 };
+using PrescribedKinematics = BasicPrescribedKinematics<2>;
+using PrescribedKinematics3 = BasicPrescribedKinematics<3>;
 
 /// The prescribed kinematics of the node with reference position X at time t (e.g. the rigid
 /// motion of the tank a beam is clamped to). Must be a pure function of (X, t): a step may be
 /// re-run after restore().
-using PrescribedMotion = std::function<PrescribedKinematics(const Vec2& X, double t)>;
+template <int D>
+using BasicPrescribedMotion =
+    std::function<BasicPrescribedKinematics<D>(const VecD<D>& X, double t)>;
+using PrescribedMotion = BasicPrescribedMotion<2>;
+using PrescribedMotion3 = BasicPrescribedMotion<3>;
 
 /// Prescribed displacement of the chosen components on every node of the edges tagged `tag`, or,
 /// if `tag` is empty, on the listed node indices (fix_x only: a roller sliding along y). Without a
@@ -32,12 +38,14 @@ struct DirichletCondition {
   PrescribedMotion motion = {};
 };
 
-/// A clamped (u = 0) or sliding (some components fixed) T10 boundary: the chosen components of
-/// every node of the faces tagged `tag`, or, if `tag` is empty, of the listed node indices.
+/// A clamped (u = 0), sliding (some components fixed) or moving T10 boundary: the chosen
+/// components of every node of the faces tagged `tag`, or, if `tag` is empty, of the listed node
+/// indices; without a motion they are zero, with one they follow motion(X, t).
 struct DirichletCondition3 {
   std::string tag;
   std::array<bool, 3> fix{true, true, true};
   std::vector<int> nodes;
+  PrescribedMotion3 motion = {};
 };
 
 /// Numbering of the free degrees of freedom. Dof dim K + c is component c of node K.

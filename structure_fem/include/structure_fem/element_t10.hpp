@@ -13,6 +13,8 @@ using Vec30 = Eigen::Matrix<double, 30, 1>;
 using Mat30 = Eigen::Matrix<double, 30, 30>;
 using TetNodes = std::array<Vec3, 10>;
 
+/// Smallest det J of the reference map over the ten nodes and the points of both rules.
+double t10_min_jacobian(const TetNodes& X);
 /// Reference volume, integral of det J (tet_rule_degree5: exact for straight and curved edges,
 /// det J being of degree 3).
 double t10_volume(const TetNodes& X);

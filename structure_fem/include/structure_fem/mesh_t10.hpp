@@ -29,4 +29,8 @@ struct TetMesh {
   std::vector<BoundaryFace> faces_with_tag(const std::string& tag) const;
 };
 
+/// Checks the mesh before any computation and throws InputError naming the element: node index
+/// out of range, non-positive volume, or det J <= 0 at a quadrature point.
+void validate_mesh(const TetMesh& mesh);
+
 } // namespace fsi::fem
