@@ -80,8 +80,8 @@ public:
   const DofMap& dofs() const { return *dofs_; }
   const BasicStructureOptions<Family>& options() const { return options_; }
 
-  /// Nodal external forces for the next step (e.g. projected fluid forces, eq. 58) [N/m], size
-  /// dim * nodes; they act at t^{n+1}. Entries on clamped dofs are ignored (reactions).
+  /// Nodal external forces for the next step (e.g. projected fluid forces, eq. 58) [N/m; 3-D: N],
+  /// size dim * nodes; they act at t^{n+1}. Entries on clamped dofs are ignored (reactions).
   void set_external_forces(const Vector& f_ext);
   const Vector& external_forces() const { return f_ext_next_; }
 
