@@ -1,169 +1,108 @@
 #include "structure_fem/assembly.hpp"
 
-#include <algorithm>
 #include <sstream>
 
-#include "fsi/core/error.hpp"
 #include "fsi/core/parallel.hpp"
 
 namespace fsi::fem {
 
-DofMap::DofMap(const Mesh& mesh, const std::vector<DirichletCondition>& conditions)
-    : free_of_dof_(2 * mesh.num_nodes(), 0), condition_of_dof_(2 * mesh.num_nodes(), -1) {
-  for (std::size_t i = 0; i < conditions.size(); ++i) {
-    const auto& c = conditions[i];
-    for (int node : c.tag.empty() ? c.nodes : mesh.node_set(c.tag)) {
-      if (node < 0 || static_cast<std::size_t>(node) >= mesh.num_nodes())
-        throw InputError("clamped: node index " + std::to_string(node) + " out of range (" +
-                         std::to_string(mesh.num_nodes()) + " nodes)");
-      for (std::size_t comp = 0; comp < 2; ++comp)
-        if (comp == 0 ? c.fix_x : c.fix_y) {
-          free_of_dof_[2 * static_cast<std::size_t>(node) + comp] = -1;
-          condition_of_dof_[2 * static_cast<std::size_t>(node) + comp] = static_cast<int>(i);
-        }
-    }
-  }
-  for (auto& f : free_of_dof_)
-    if (f == 0) f = num_free_++;
-}
-
-Vector DofMap::restrict_to_free(const Vector& full) const {
-  Vector free(num_free_);
-  for (int d = 0; d < num_dofs(); ++d)
-    if (free_index(d) >= 0) free[free_index(d)] = full[d];
-  return free;
-}
-
-void DofMap::add_free(const Vector& free, Vector& full) const {
-  for (int d = 0; d < num_dofs(); ++d)
-    if (free_index(d) >= 0) full[d] += free[free_index(d)];
-}
-
-Assembler::Assembler(const Mesh& mesh, const Material& material, const DofMap& dofs)
+template <class Family>
+BasicAssembler<Family>::BasicAssembler(const typename Family::Mesh& mesh,
+                                       const typename Family::Material& material,
+                                       const DofMap& dofs)
     : mesh_(mesh), material_(material), dofs_(dofs), Ke_(mesh.num_elements()),
       fe_(mesh.num_elements()), detF_(mesh.num_elements()) {
-  const std::size_t n_el = mesh.num_elements();
-  elements_.reserve(n_el);
-  for (std::size_t e = 0; e < n_el; ++e) elements_.emplace_back(element_nodes(e));
-
-  auto global_free = [&](std::size_t e, int i) {
-    return dofs_.free_index(2 * mesh_.elements[e][static_cast<std::size_t>(i / 2)] + i % 2);
-  };
-  std::vector<Eigen::Triplet<double>> triplets;
-  triplets.reserve(n_el * 144);
-  for (std::size_t e = 0; e < n_el; ++e)
-    for (int j = 0; j < 12; ++j)
-      for (int i = 0; i < 12; ++i)
-        if (global_free(e, i) >= 0 && global_free(e, j) >= 0)
-          triplets.emplace_back(global_free(e, i), global_free(e, j), 0.0);
-  pattern_.resize(dofs_.num_free(), dofs_.num_free());
-  pattern_.setFromTriplets(triplets.begin(), triplets.end());
-  pattern_.makeCompressed();
-
-  // slot_[144 e + i + 12 j]: position of (row i, column j) of element e in the value array.
-  slot_.assign(n_el * 144, -1);
-  const int* outer = pattern_.outerIndexPtr();
-  const int* inner = pattern_.innerIndexPtr();
-  for (std::size_t e = 0; e < n_el; ++e)
-    for (int j = 0; j < 12; ++j)
-      for (int i = 0; i < 12; ++i) {
-        const int r = global_free(e, i), c = global_free(e, j);
-        if (r < 0 || c < 0) continue;
-        const int* pos = std::lower_bound(inner + outer[c], inner + outer[c + 1], r);
-        slot_[144 * e + static_cast<std::size_t>(i + 12 * j)] = static_cast<int>(pos - inner);
-      }
+  elements_.reserve(mesh.num_elements());
+  for (std::size_t e = 0; e < mesh.num_elements(); ++e) elements_.emplace_back(element_nodes(e));
+  scatter_ = ElementScatter<n>(mesh.num_elements(), dofs_.num_free(), [&](std::size_t e, int i) {
+    return dofs_.free_index(global_dof(e, i));
+  });
 }
 
-ElementNodes Assembler::element_nodes(std::size_t e) const {
-  ElementNodes X;
-  for (std::size_t k = 0; k < 6; ++k)
+template <class Family>
+typename Family::Nodes BasicAssembler<Family>::element_nodes(std::size_t e) const {
+  typename Family::Nodes X;
+  for (std::size_t k = 0; k < nodes; ++k)
     X[k] = mesh_.X[static_cast<std::size_t>(mesh_.elements[e][k])];
   return X;
 }
 
-Vec12 Assembler::gather(const Vector& u, std::size_t e) const {
-  Vec12 ue;
-  for (std::size_t k = 0; k < 6; ++k)
-    ue.segment<2>(2 * static_cast<Eigen::Index>(k)) = u.segment<2>(2 * mesh_.elements[e][k]);
+template <class Family>
+auto BasicAssembler<Family>::gather(const Vector& u, std::size_t e) const -> ElementVector {
+  ElementVector ue;
+  for (std::size_t k = 0; k < nodes; ++k)
+    ue.template segment<dim>(dim * static_cast<Eigen::Index>(k)) =
+        u.segment<dim>(dim * mesh_.elements[e][k]);
   return ue;
 }
 
-void Assembler::scatter_matrices(SparseMatrix& A) const {
-  double* values = A.valuePtr();
-  std::fill(values, values + A.nonZeros(), 0.0);
-  for (std::size_t e = 0; e < Ke_.size(); ++e) {
-    const int* slot = &slot_[144 * e];
-    const double* k = Ke_[e].data(); // column-major, k[i + 12 j]
-    for (int ij = 0; ij < 144; ++ij)
-      if (slot[ij] >= 0) values[slot[ij]] += k[ij];
-  }
-}
-
-void Assembler::assemble(const Vector& u, Vector& f_int, SparseMatrix* K) {
+template <class Family>
+void BasicAssembler<Family>::assemble(const Vector& u, Vector& f_int, SparseMatrix* K) {
   parallel_for(elements_.size(), [&](std::size_t e) {
     detF_[e] = elements_[e].internal_force(gather(u, e), material_, fe_[e], K ? &Ke_[e] : nullptr);
   });
   for (std::size_t e = 0; e < elements_.size(); ++e)
     if (!(detF_[e] > 0.0)) {
       std::ostringstream s;
-      s << "element " << mesh_.element_label[e] << ": det F = " << detF_[e]
+      s << "element " << Family::label(mesh_, e) << ": det F = " << detF_[e]
         << " <= 0 at a quadrature point (inverted element)";
       throw InvertedElement(s.str());
     }
-  f_int.setZero(2 * static_cast<Eigen::Index>(mesh_.num_nodes()));
+  f_int.setZero(dim * static_cast<Eigen::Index>(mesh_.num_nodes()));
   for (std::size_t e = 0; e < elements_.size(); ++e)
-    for (std::size_t k = 0; k < 6; ++k)
-      f_int.segment<2>(2 * mesh_.elements[e][k]) +=
-          fe_[e].segment<2>(2 * static_cast<Eigen::Index>(k));
-  if (K) scatter_matrices(*K);
+    for (std::size_t k = 0; k < nodes; ++k)
+      f_int.segment<dim>(dim * mesh_.elements[e][k]) +=
+          fe_[e].template segment<dim>(dim * static_cast<Eigen::Index>(k));
+  if (K) scatter_.scatter(Ke_, *K);
 }
 
-SparseMatrix Assembler::mass() {
-  parallel_for(elements_.size(),
-               [&](std::size_t e) { Ke_[e] = t6_mass(element_nodes(e), material_.density()); });
-  SparseMatrix M = pattern_;
-  scatter_matrices(M);
+template <class Family> SparseMatrix BasicAssembler<Family>::mass() {
+  parallel_for(elements_.size(), [&](std::size_t e) {
+    Ke_[e] = Family::mass(element_nodes(e), material_.density());
+  });
+  SparseMatrix M = scatter_.pattern();
+  scatter_.scatter(Ke_, M);
   return M;
 }
 
-SparseMatrix Assembler::full_mass() const {
+template <class Family> SparseMatrix BasicAssembler<Family>::full_mass() const {
   std::vector<Eigen::Triplet<double>> triplets;
-  triplets.reserve(elements_.size() * 144);
+  triplets.reserve(elements_.size() * n * n);
   for (std::size_t e = 0; e < elements_.size(); ++e) {
-    const Mat12 m = t6_mass(element_nodes(e), material_.density());
-    for (int j = 0; j < 12; ++j)
-      for (int i = 0; i < 12; ++i)
-        triplets.emplace_back(2 * mesh_.elements[e][static_cast<std::size_t>(i / 2)] + i % 2,
-                              2 * mesh_.elements[e][static_cast<std::size_t>(j / 2)] + j % 2,
-                              m(i, j));
+    const ElementMatrix m = Family::mass(element_nodes(e), material_.density());
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i)
+        triplets.emplace_back(global_dof(e, i), global_dof(e, j), m(i, j));
   }
-  const auto n = static_cast<Eigen::Index>(2 * mesh_.num_nodes());
-  SparseMatrix M(n, n);
+  const auto size = static_cast<Eigen::Index>(dim * mesh_.num_nodes());
+  SparseMatrix M(size, size);
   M.setFromTriplets(triplets.begin(), triplets.end());
   return M;
 }
 
-Vector Assembler::gravity_forces(const Vec2& g) {
-  Vec12 g_rep;
-  for (int k = 0; k < 6; ++k) g_rep.segment<2>(2 * k) = g;
-  Vector f = Vector::Zero(2 * static_cast<Eigen::Index>(mesh_.num_nodes()));
+template <class Family> Vector BasicAssembler<Family>::gravity_forces(const VecDim& g) const {
+  ElementVector g_rep;
+  for (int k = 0; k < nodes; ++k) g_rep.template segment<dim>(dim * k) = g;
+  Vector f = Vector::Zero(dim * static_cast<Eigen::Index>(mesh_.num_nodes()));
   for (std::size_t e = 0; e < elements_.size(); ++e) {
-    const Vec12 fe =
-        t6_mass(element_nodes(e), material_.density()) * g_rep; // sum_J N_J = 1 (eq. 39)
-    for (std::size_t k = 0; k < 6; ++k)
-      f.segment<2>(2 * mesh_.elements[e][k]) += fe.segment<2>(2 * static_cast<Eigen::Index>(k));
+    const ElementVector fe =
+        Family::mass(element_nodes(e), material_.density()) * g_rep; // sum_J N_J = 1 (eq. 39)
+    for (std::size_t k = 0; k < nodes; ++k)
+      f.segment<dim>(dim * mesh_.elements[e][k]) +=
+          fe.template segment<dim>(dim * static_cast<Eigen::Index>(k));
   }
   return f;
 }
 
-double Assembler::strain_energy(const Vector& u) const {
+template <class Family> double BasicAssembler<Family>::strain_energy(const Vector& u) const {
   return parallel_reduce(
       elements_.size(), 0.0,
       [&](std::size_t e) { return elements_[e].strain_energy(gather(u, e), material_); },
       [](double a, double b) { return a + b; });
 }
 
-Vector Assembler::nodal_von_mises(const Vector& u) const {
+template <class Family>
+Vector BasicAssembler<Family>::nodal_von_mises(const Vector& u) const requires(dim == 2) {
   std::vector<std::array<double, 6>> vm(elements_.size());
   parallel_for(elements_.size(), [&](std::size_t e) {
     vm[e] = t6_nodal_von_mises(element_nodes(e), gather(u, e), material_);
@@ -177,5 +116,8 @@ Vector Assembler::nodal_von_mises(const Vector& u) const {
     }
   return sum.cwiseQuotient(count);
 }
+
+template class BasicAssembler<T6>;
+template class BasicAssembler<T10>;
 
 } // namespace fsi::fem

@@ -21,6 +21,9 @@ TetMesh make_box_mesh(const BoxMeshOptions& o) {
   using Lattice = Eigen::Vector3i; // a node's indices on the half-spacing lattice
   auto id = [&n](const Lattice& p) { return p.x() + n[0] * (p.y() + n[1] * p.z()); };
   TetMesh mesh;
+  mesh.source = "box mesh";
+  constexpr std::array<const char*, 6> side_tags{"x_min", "x_max", "y_min",
+                                                 "y_max", "z_min", "z_max"};
   for (int k = 0; k < n[2]; ++k)
     for (int j = 0; j < n[1]; ++j)
       for (int i = 0; i < n[0]; ++i)
@@ -46,6 +49,19 @@ TetMesh make_box_mesh(const BoxMeshOptions& o) {
                 id((v[static_cast<std::size_t>(p)] + v[static_cast<std::size_t>(q)]) / 2);
           }
           mesh.elements.push_back(element);
+          for (const auto& face : t10_faces) // on a side: the 3 corners share its coordinate
+            for (int d = 0; d < 3; ++d)
+              for (int side = 0; side < 2; ++side) {
+                const int at = side * (n[static_cast<std::size_t>(d)] - 1);
+                bool on_side = true;
+                for (std::size_t s = 0; s < 3; ++s)
+                  on_side = on_side && v[static_cast<std::size_t>(face[s])][d] == at;
+                if (!on_side) continue;
+                BoundaryFace f{{}, side_tags[static_cast<std::size_t>(2 * d + side)]};
+                for (std::size_t s = 0; s < 6; ++s)
+                  f.nodes[s] = element[static_cast<std::size_t>(face[s])];
+                mesh.faces.push_back(f);
+              }
         }
   return mesh;
 }

@@ -15,6 +15,18 @@ using Vec6 = Eigen::Matrix<double, 6, 1>;
 
 } // namespace
 
+double t10_min_jacobian(const TetNodes& X) {
+  const auto C = node_coordinates(X);
+  double m = std::numeric_limits<double>::infinity();
+  auto at = [&](double xi, double eta, double zeta) {
+    m = std::min(m, jacobian(t10_shape_derivatives(xi, eta, zeta), C).determinant());
+  };
+  for (const auto& p : t10_node_parent) at(p[0], p[1], p[2]);
+  for (const auto& q : tet_rule_degree2) at(q.xi, q.eta, q.zeta);
+  for (const auto& q : tet_rule_degree5) at(q.xi, q.eta, q.zeta);
+  return m;
+}
+
 double t10_volume(const TetNodes& X) {
   const auto C = node_coordinates(X);
   double volume = 0.0;
@@ -73,6 +85,16 @@ double ElementT10::internal_force(const Vec30& u, const Material3& material, Vec
         for (int k = 0; k < 3; ++k) (*K)(3 * a + k, 3 * b + k) += w_detJ_[q] * G(a, b);
   }
   return detF_min;
+}
+
+double ElementT10::strain_energy(const Vec30& u, const Material3& material) const {
+  const auto U = Eigen::Map<const Mat310>(u.data());
+  double W = 0.0;
+  for (std::size_t q = 0; q < dNdX_.size(); ++q) {
+    const Mat3 H = U * dNdX_[q].transpose();
+    W += w_detJ_[q] * material.energy(0.5 * (H + H.transpose() + H.transpose() * H));
+  }
+  return W;
 }
 
 Mat30 t10_mass(const TetNodes& X, double rho) {

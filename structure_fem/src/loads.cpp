@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include <Eigen/Geometry>
+
 #include "structure_fem/shape_t6.hpp"
 
 namespace fsi::fem {
@@ -28,6 +30,45 @@ Vector edge_traction_field_forces(const Mesh& mesh, const std::string& tag,
         f.segment<2>(2 * edge.nodes[k]) += N[static_cast<Eigen::Index>(k)] * t;
     }
   return f;
+}
+
+namespace {
+
+/// f_K = integral_face N_K load(X, N dA / dxi deta) dxi deta over the faces tagged `tag`, where
+/// N dA = dX/dxi x dX/deta dxi deta is the outward area vector (BoundaryFace orientation).
+template <class Load> Vector face_forces(const TetMesh& mesh, const std::string& tag, Load&& load) {
+  Vector f = Vector::Zero(3 * static_cast<Eigen::Index>(mesh.num_nodes()));
+  for (const auto& face : mesh.faces_with_tag(tag))
+    for (const auto& q : rule_degree4) {
+      const auto N = t6_shape(q.xi, q.eta);
+      const auto dN = t6_shape_derivatives(q.xi, q.eta);
+      Vec3 X = Vec3::Zero(), dX_dxi = Vec3::Zero(), dX_deta = Vec3::Zero();
+      for (std::size_t k = 0; k < 6; ++k) {
+        const Vec3& X_k = mesh.X[static_cast<std::size_t>(face.nodes[k])];
+        const auto K = static_cast<Eigen::Index>(k);
+        X += N[K] * X_k;
+        dX_dxi += dN(0, K) * X_k;
+        dX_deta += dN(1, K) * X_k;
+      }
+      const Vec3 t = q.weight * load(X, Vec3(dX_dxi.cross(dX_deta)));
+      for (std::size_t k = 0; k < 6; ++k)
+        f.segment<3>(3 * face.nodes[k]) += N[static_cast<Eigen::Index>(k)] * t;
+    }
+  return f;
+}
+
+} // namespace
+
+Vector face_traction_forces(const TetMesh& mesh, const std::string& tag,
+                            const std::function<Vec3(const Vec3& X)>& traction) {
+  return face_forces(
+      mesh, tag, [&](const Vec3& X, const Vec3& n_dA) { return Vec3(traction(X) * n_dA.norm()); });
+}
+
+Vector face_pressure_forces(const TetMesh& mesh, const std::string& tag,
+                            const std::function<double(const Vec3& X)>& pressure) {
+  return face_forces(mesh, tag,
+                     [&](const Vec3& X, const Vec3& n_dA) { return Vec3(-pressure(X) * n_dA); });
 }
 
 } // namespace fsi::fem

@@ -9,6 +9,7 @@
 
 #include "fsi/core/error.hpp"
 #include "structure_fem/element_t6.hpp"
+#include "structure_fem/tagged_boundary.hpp"
 
 namespace fsi::fem {
 
@@ -17,20 +18,11 @@ bool Mesh::has_tag(const std::string& tag) const {
 }
 
 std::vector<BoundaryEdge> Mesh::edges_with_tag(const std::string& tag) const {
-  std::vector<BoundaryEdge> out;
-  for (const auto& e : edges)
-    if (e.tag == tag) out.push_back(e);
-  if (out.empty()) throw InputError(source + ": no boundary edge is tagged \"" + tag + "\"");
-  return out;
+  return facets_with_tag(edges, tag, source, "edge");
 }
 
 std::vector<int> Mesh::node_set(const std::string& tag) const {
-  std::vector<int> nodes;
-  for (const auto& e : edges_with_tag(tag))
-    nodes.insert(nodes.end(), e.nodes.begin(), e.nodes.end());
-  std::sort(nodes.begin(), nodes.end());
-  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
-  return nodes;
+  return facet_node_set(edges, tag, source, "edge");
 }
 
 namespace {

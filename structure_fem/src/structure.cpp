@@ -10,39 +10,29 @@
 
 namespace fsi::fem {
 
-void validate(const StructureOptions& o) {
-  validate(o.material);
+template <class Family> void validate(const BasicStructureOptions<Family>& o) {
+  if constexpr (Family::dim == 2)
+    validate(o.material); // with the 2-D rule across keys
+  else
+    materials::validate_constants(o.material);
   validate(o.newmark);
   validate(o.linear_solver);
-  const auto& n = o.newton;
-  auto non_negative = [](const char* key, double v) {
-    if (!(v >= 0.0) || !std::isfinite(v))
-      throw InputError(std::string("newton: ") + key + " = " + std::to_string(v) +
-                       ": must be >= 0");
-  };
-  if (n.max_iterations < 1)
-    throw InputError("newton: max_iterations = " + std::to_string(n.max_iterations) +
-                     ": must be >= 1");
-  non_negative("residual_rtol", n.residual_rtol);
-  non_negative("residual_atol", n.residual_atol);
-  non_negative("increment_rtol", n.increment_rtol);
-  non_negative("increment_atol", n.increment_atol);
-  non_negative("roundoff_rtol", n.roundoff_rtol);
-  if (n.max_substep_levels < 0 || n.max_substep_levels > 10)
-    throw InputError("newton: max_substep_levels = " + std::to_string(n.max_substep_levels) +
-                     ": must be in [0, 10]");
-  if (n.max_halvings < 0)
-    throw InputError("newton: max_halvings = " + std::to_string(n.max_halvings) + ": must be >= 0");
+  validate(o.newton);
   if (!o.gravity.allFinite()) throw InputError("structure: gravity must be finite");
 }
 
-Structure::Structure(Mesh mesh, StructureOptions options)
+template <class Family>
+BasicStructure<Family>::BasicStructure(typename Family::Mesh mesh,
+                                       BasicStructureOptions<Family> options)
     : mesh_(std::move(mesh)), options_(std::move(options)) {
   validate(options_);
   validate_mesh(mesh_);
-  material_ = make_material(options_.material);
+  if constexpr (dim == 2)
+    material_ = make_material(options_.material);
+  else
+    material_ = make_material_3d(options_.material);
   dofs_ = std::make_unique<DofMap>(mesh_, options_.clamped);
-  assembler_ = std::make_unique<Assembler>(mesh_, *material_, *dofs_);
+  assembler_ = std::make_unique<BasicAssembler<Family>>(mesh_, *material_, *dofs_);
   solver_ = make_linear_solver(options_.linear_solver);
   M_ = assembler_->mass();
   M_all_ = assembler_->full_mass();
@@ -51,7 +41,7 @@ Structure::Structure(Mesh mesh, StructureOptions options)
   K_ = assembler_->pattern();
   K_eff_ = assembler_->pattern();
   f_g_ = assembler_->gravity_forces(options_.gravity);
-  const auto n = static_cast<Eigen::Index>(2 * mesh_.num_nodes());
+  const auto n = static_cast<Eigen::Index>(dim * mesh_.num_nodes());
   state_.u = state_.v = state_.a = state_.f_ext = Vector::Zero(n);
   f_ext_next_ = Vector::Zero(n);
   f_int_ = Vector::Zero(n);
@@ -62,15 +52,16 @@ Structure::Structure(Mesh mesh, StructureOptions options)
   }
 }
 
-Structure::~Structure() = default;
+template <class Family> BasicStructure<Family>::~BasicStructure() = default;
 
-void Structure::set_external_forces(const Vector& f_ext) {
-  if (f_ext.size() != static_cast<Eigen::Index>(2 * mesh_.num_nodes()))
+template <class Family> void BasicStructure<Family>::set_external_forces(const Vector& f_ext) {
+  if (f_ext.size() != static_cast<Eigen::Index>(dim * mesh_.num_nodes()))
     throw InputError("structure: external forces have size " + std::to_string(f_ext.size()) +
-                     ", need 2 * nodes = " + std::to_string(2 * mesh_.num_nodes()));
+                     ", need " + std::to_string(dim) +
+                     " * nodes = " + std::to_string(dim * mesh_.num_nodes()));
   for (Eigen::Index d = 0; d < f_ext.size(); ++d)
     if (!std::isfinite(f_ext[d]))
-      throw RunError("structure: the external force on node " + std::to_string(d / 2) +
+      throw RunError("structure: the external force on node " + std::to_string(d / dim) +
                      " is not finite (before structure step " + std::to_string(state_.step + 1) +
                      ", t = " + std::to_string(state_.time) + " s)");
   f_ext_next_ = f_ext;
@@ -78,34 +69,36 @@ void Structure::set_external_forces(const Vector& f_ext) {
     if (dofs_->free_index(d) < 0) f_ext_next_[d] = 0.0;
 }
 
-void Structure::factor_and_solve(const SparseMatrix& K, const Vector& rhs, Vector& x,
-                                 int& iterations) {
+template <class Family>
+void BasicStructure<Family>::factor_and_solve(const SparseMatrix& K, const Vector& rhs, Vector& x,
+                                              int& iterations) {
   solver_->factorize(K);
   x = solver_->solve(rhs);
   iterations = solver_->iterations();
 }
 
-void Structure::prescribe(double t, Vector& u, Vector& v, Vector& a) const {
+template <class Family>
+void BasicStructure<Family>::prescribe(double t, Vector& u, Vector& v, Vector& a) const {
   for (const auto& [dof, condition] : constrained_) {
-    const PrescribedMotion& motion = options_.clamped[static_cast<std::size_t>(condition)].motion;
+    const auto& motion = options_.clamped[static_cast<std::size_t>(condition)].motion;
     if (!motion) {
       u[dof] = v[dof] = a[dof] = 0.0;
       continue;
     }
-    const PrescribedKinematics k = motion(mesh_.X[static_cast<std::size_t>(dof / 2)], t);
-    u[dof] = k.u[dof % 2];
-    v[dof] = k.v[dof % 2];
-    a[dof] = k.a[dof % 2];
+    const auto k = motion(mesh_.X[static_cast<std::size_t>(dof / dim)], t);
+    u[dof] = k.u[dof % dim];
+    v[dof] = k.v[dof % dim];
+    a[dof] = k.a[dof % dim];
   }
 }
 
-Vector Structure::constrained_inertia(const Vector& a) const {
+template <class Family> Vector BasicStructure<Family>::constrained_inertia(const Vector& a) const {
   Vector a_c = Vector::Zero(a.size());
   for (const auto& entry : constrained_) a_c[entry.first] = a[entry.first];
   return dofs_->restrict_to_free(M_all_ * a_c);
 }
 
-void Structure::update_acceleration() {
+template <class Family> void BasicStructure<Family>::update_acceleration() {
   Vector u = state_.u, v = state_.v;
   prescribe(state_.time, u, v, state_.a);
   assembler_->assemble(state_.u, f_int_, nullptr);
@@ -120,87 +113,19 @@ void Structure::update_acceleration() {
   state_.f_ext = f_ext_next_; // the forces a^n balances
 }
 
-namespace {
-/// The node of the free dof with the largest |R| (the first non-finite one if any).
-int worst_node(const DofMap& dofs, const Vector& R) {
-  Eigen::Index worst = 0;
-  for (Eigen::Index i = 0; i < R.size(); ++i) {
-    if (!std::isfinite(R[i])) {
-      worst = i;
-      break;
-    }
-    if (std::abs(R[i]) > std::abs(R[worst])) worst = i;
-  }
-  for (int d = 0; d < dofs.num_dofs(); ++d)
-    if (dofs.free_index(d) == worst) return d / 2;
-  return -1;
-}
-} // namespace
-
-template <class Residual>
-void Structure::newton(Vector& u, Residual&& residual, StepReport& report) {
-  const NewtonOptions& o = options_.newton;
-  const double force_scale = dofs_->restrict_to_free(f_ext_next_ + f_g_).norm();
-  report.history.clear();
-  report.halvings = 0;
-  report.roundoff_stops = 0;
-  Vector R, du;
-  double R_ref = 0.0;
-  residual(u, R);
-  for (int k = 0;; ++k) {
-    const double r = R.norm();
-    report.final_residual = r;
-    if (!std::isfinite(r))
-      throw RunError("Newton: the residual is not finite at node " +
-                     std::to_string(worst_node(*dofs_, R)));
-    if (k == 0) R_ref = std::max(r, force_scale);
-    const bool residual_ok = r <= o.residual_atol + o.residual_rtol * R_ref;
-    const bool increment_ok = k == 0 ? r <= o.residual_atol
-                                     : report.history.back().increment_norm <=
-                                           o.increment_atol + o.increment_rtol * u.norm();
-    const auto& h = report.history;
-    const bool at_roundoff =
-        (k > 0 && h.back().increment_norm <= o.roundoff_rtol * u.norm()) ||
-        (residual_ok && k >= 2 &&
-         h[h.size() - 1].increment_norm > 0.5 * h[h.size() - 2].increment_norm);
-    if ((residual_ok && increment_ok) || at_roundoff) {
-      report.iterations = k;
-      if (!(residual_ok && increment_ok)) report.roundoff_stops = 1;
-      return;
-    }
-    if (k == o.max_iterations) {
-      std::ostringstream s;
-      s << "Newton did not converge in " << o.max_iterations << " iterations (residual " << r
-        << ", tolerance " << o.residual_atol + o.residual_rtol * R_ref << "; last increment "
-        << report.history.back().increment_norm << ", tolerance "
-        << o.increment_atol + o.increment_rtol * u.norm() << "; largest residual at node "
-        << worst_node(*dofs_, R) << ")";
-      throw RunError(s.str());
-    }
-    int its = 0;
-    factor_and_solve(K_eff_, -R, du, its);
-    report.history.push_back({r, du.norm(), its});
-    for (int halving = 0;; ++halving) { // u + du, or u + du / 2^m if u + du is inverted
-      Vector u_trial = u;
-      dofs_->add_free(du, u_trial);
-      try {
-        residual(u_trial, R);
-      } catch (const InvertedElement& e) {
-        if (halving == o.max_halvings)
-          throw InvertedElement(std::string(e.what()) + " in Newton iteration " +
-                                std::to_string(k + 1) + " after " + std::to_string(halving) +
-                                " halvings of the increment");
-        du *= 0.5;
-        ++report.halvings;
-        continue;
-      }
-      u = std::move(u_trial);
-      break;
-    }
-  }
+template <class Family>
+void BasicStructure<Family>::newton(Vector& u, const NewtonResidual& residual, StepReport& report) {
+  newton_raphson(
+      options_.newton, *dofs_, dofs_->restrict_to_free(f_ext_next_ + f_g_).norm(), residual,
+      [&](const Vector& rhs, int& iterations) {
+        Vector x;
+        factor_and_solve(K_eff_, rhs, x, iterations);
+        return x;
+      },
+      u, report);
 }
 
-const StepReport& Structure::advance(double dt) {
+template <class Family> const StepReport& BasicStructure<Family>::advance(double dt) {
   if (!(dt > 0.0) || !std::isfinite(dt))
     throw InputError("structure: time step dt = " + std::to_string(dt) + ": must be > 0");
   const StructureState start = state_;
@@ -245,7 +170,7 @@ const StepReport& Structure::advance(double dt) {
   throw RunError(msg.str());
 }
 
-StepReport Structure::step(double dt) {
+template <class Family> StepReport BasicStructure<Family>::step(double dt) {
   const Newmark nm{options_.newmark.beta, options_.newmark.gamma, dt};
   const StructureState& s = state_;
   StepReport report;
@@ -282,7 +207,8 @@ StepReport Structure::step(double dt) {
   return report;
 }
 
-std::vector<StepReport> Structure::solve_static(const StaticOptions& options) {
+template <class Family>
+std::vector<StepReport> BasicStructure<Family>::solve_static(const StaticOptions& options) {
   if (options.load_steps < 1)
     throw InputError("static: load_steps = " + std::to_string(options.load_steps) +
                      ": must be >= 1");
@@ -328,14 +254,15 @@ std::vector<StepReport> Structure::solve_static(const StaticOptions& options) {
   return reports;
 }
 
-std::vector<Vec2> Structure::positions() const {
-  std::vector<Vec2> x(mesh_.num_nodes());
+template <class Family> auto BasicStructure<Family>::positions() const -> std::vector<VecD<dim>> {
+  std::vector<VecD<dim>> x(mesh_.num_nodes());
   for (std::size_t k = 0; k < x.size(); ++k)
-    x[k] = mesh_.X[k] + state_.u.segment<2>(2 * static_cast<Eigen::Index>(k)); // eq. 60
+    x[k] =
+        mesh_.X[k] + state_.u.template segment<dim>(dim * static_cast<Eigen::Index>(k)); // eq. 60
   return x;
 }
 
-Prediction Structure::predict(double dt) const {
+template <class Family> Prediction BasicStructure<Family>::predict(double dt) const {
   const StructureState& s = state_;
   Prediction p{s.u + dt * s.v + 0.5 * dt * dt * s.a, // eq. 64
                s.v + dt * s.a,                       // eq. 65
@@ -344,17 +271,17 @@ Prediction Structure::predict(double dt) const {
   return p;
 }
 
-void Structure::restore(const StructureState& state) {
+template <class Family> void BasicStructure<Family>::restore(const StructureState& state) {
   assert(state.u.size() == state_.u.size());
   state_ = state;
   f_ext_next_ = state.f_ext;
 }
 
-Vector Structure::von_mises() const {
+template <class Family> Vector BasicStructure<Family>::von_mises() const requires(dim == 2) {
   return assembler_->nodal_von_mises(state_.u);
 }
 
-Energies Structure::energies() const {
+template <class Family> Energies BasicStructure<Family>::energies() const {
   Energies e;
   e.kinetic = 0.5 * state_.v.dot(M_all_ * state_.v);
   e.strain = assembler_->strain_energy(state_.u);
@@ -369,7 +296,8 @@ std::vector<double> to_std(const Vector& v) {
 }
 } // namespace
 
-void Structure::write_state(StateArchive& a, const std::string& prefix) const {
+template <class Family>
+void BasicStructure<Family>::write_state(StateArchive& a, const std::string& prefix) const {
   a.put(prefix + "u", to_std(state_.u));
   a.put(prefix + "v", to_std(state_.v));
   a.put(prefix + "a", to_std(state_.a));
@@ -380,8 +308,9 @@ void Structure::write_state(StateArchive& a, const std::string& prefix) const {
   a.put_real(prefix + "external_work", state_.external_work);
 }
 
-void Structure::read_state(const StateArchive& a, const std::string& prefix) {
-  const std::size_t n = 2 * mesh_.num_nodes();
+template <class Family>
+void BasicStructure<Family>::read_state(const StateArchive& a, const std::string& prefix) {
+  const std::size_t n = dim * mesh_.num_nodes();
   auto vector = [&](const char* name) {
     const auto& v = a.reals(prefix + name, n);
     return Vector(Eigen::Map<const Vector>(v.data(), static_cast<Eigen::Index>(n)));
@@ -395,5 +324,10 @@ void Structure::read_state(const StateArchive& a, const std::string& prefix) {
   state_.step = a.integer(prefix + "step");
   state_.external_work = a.real(prefix + "external_work");
 }
+
+template void validate(const BasicStructureOptions<T6>&);
+template void validate(const BasicStructureOptions<T10>&);
+template class BasicStructure<T6>;
+template class BasicStructure<T10>;
 
 } // namespace fsi::fem

@@ -56,3 +56,17 @@ TEST_CASE("T10 box mesher: volumes, nodes and a conforming triangulation",
   CHECK_THROWS_AS(make_box_mesh({{0, 0, 0}, {1, 0, 1}, {1, 1, 1}}), fsi::InputError);
   CHECK_THROWS_AS(make_box_mesh({{0, 0, 0}, {1, 1, 1}, {1, 0, 1}}), fsi::InputError);
 }
+
+TEST_CASE("T10 mesh validation refuses inverted elements and bad node indices",
+          "[structure_fem][t10][mesh]") {
+  const TetMesh good = make_box_mesh({{0.0, 0.0, 0.0}, {1.0, 0.5, 0.5}, {2, 1, 1}});
+  CHECK_NOTHROW(validate_mesh(good));
+  TetMesh inverted = good;
+  std::swap(inverted.elements[3][1], inverted.elements[3][2]); // vertices 1, 2 and their edges
+  std::swap(inverted.elements[3][4], inverted.elements[3][6]);
+  std::swap(inverted.elements[3][8], inverted.elements[3][9]);
+  CHECK_THROWS_WITH(validate_mesh(inverted), Catch::Contains("element 4: det J <= 0"));
+  TetMesh out_of_range = good;
+  out_of_range.elements[0][7] = static_cast<int>(good.num_nodes());
+  CHECK_THROWS_WITH(validate_mesh(out_of_range), Catch::Contains("element 1: node index"));
+}

@@ -9,18 +9,13 @@
 #include "cantilever.hpp"
 #include "fsi/core/error.hpp"
 #include "fsi/core/parallel.hpp"
+#include "sequential.hpp"
 
 using namespace fem_test;
 using Catch::Matchers::WithinAbs;
 using Catch::Matchers::WithinRel;
 
 namespace {
-
-/// These meshes are tiny: thread start-up would dominate (and spin on a loaded machine).
-struct Sequential {
-  Sequential() { fsi::set_sequential(true); }
-  ~Sequential() { fsi::set_sequential(false); }
-};
 
 /// First bending frequency of a clamped-free Euler–Bernoulli beam [rad/s].
 double euler_bernoulli_omega1(const Beam& b) {
@@ -54,7 +49,7 @@ std::vector<double> upward_crossings(Structure& s, int tip, double dt, int steps
 
 TEST_CASE("fem: first natural frequency from a free-vibration time history",
           "[structure_fem][dynamics]") {
-  const Sequential sequential;
+  const fem_test::Sequential sequential;
   Beam b;
   b.h = 0.05, b.E = 1.0e7, b.rho = 1000.0, b.ex = 40, b.ey = 2; // L / h = 20
   auto o = beam_options(b);
@@ -71,7 +66,7 @@ TEST_CASE("fem: first natural frequency from a free-vibration time history",
 
 TEST_CASE("fem: Newmark energy: conserved with beta = 1/4, decaying with the paper's default",
           "[structure_fem][dynamics][energy]") {
-  const Sequential sequential;
+  const fem_test::Sequential sequential;
   Beam b;
   b.h = 0.1, b.E = 1.0e7, b.rho = 1000.0, b.ex = 8, b.ey = 1; // coarse: runs in seconds
   const double omega = euler_bernoulli_omega1(b), T = 2.0 * std::numbers::pi / omega;

@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "fsi/core/parallel.hpp"
+#include "sequential.hpp"
 #include "structure_fem/rectangle_mesher.hpp"
 #include "structure_fem/structure.hpp"
 
@@ -14,11 +15,6 @@ using namespace fsi;
 using namespace fsi::fem;
 
 namespace {
-
-struct Sequential {
-  Sequential() { fsi::set_sequential(true); }
-  ~Sequential() { fsi::set_sequential(false); }
-};
 
 Mesh block() {
   RectangleMeshOptions r;
@@ -47,7 +43,7 @@ TEST_CASE("fem: a body whose clamped edge falls freely falls with it, stress-fre
   // with u = g t^2 / 2 and no strain (equivalence principle). The free nodes reach it only if
   // the clamped nodes' inertia enters their equations through the consistent mass (M_fc a_c),
   // and Newmark integrates a constant acceleration exactly for any beta, gamma.
-  const Sequential sequential;
+  const fem_test::Sequential sequential;
   const Vec2 g(0.3, -9.81);
   StructureOptions o = rubber();
   o.gravity = g;
@@ -75,7 +71,7 @@ TEST_CASE("fem: without the clamped inertia a falling body would strain (the tes
           "[structure_fem][prescribed]") {
   // Same fall, but the edge is held in place: the body hangs and strains. Guards the test above
   // against passing trivially.
-  const Sequential sequential;
+  const fem_test::Sequential sequential;
   StructureOptions o = rubber();
   o.gravity = {0.3, -9.81};
   o.clamped = {{"left", true, true, {}}};
@@ -88,7 +84,7 @@ TEST_CASE("fem: a large rigid rotation prescribed on the clamped edge turns the 
           "[structure_fem][prescribed]") {
   // Static, 60 degrees about c: every node ends at c + R (X - c) and St. Venant–Kirchhoff gives
   // zero stress (E = 0 for F = R). The edge's displacement is applied in load steps.
-  const Sequential sequential;
+  const fem_test::Sequential sequential;
   const Vec2 c(0.1, 0.05);
   const double theta_end = std::numbers::pi / 3.0;
   auto rotation = [](double theta) {
@@ -119,7 +115,7 @@ TEST_CASE("fem: a large rigid rotation prescribed on the clamped edge turns the 
 TEST_CASE("fem: clamped dofs carry the prescribed u, v, a after each step and in the predictor",
           "[structure_fem][prescribed]") {
   // A roller (x only) on the left edge oscillating in x; y stays free there.
-  const Sequential sequential;
+  const fem_test::Sequential sequential;
   const double A = 0.01, w = 2.0 * std::numbers::pi / 0.4;
   StructureOptions o = rubber();
   o.gravity = {0.0, -9.81};

@@ -13,6 +13,8 @@ using Vec30 = Eigen::Matrix<double, 30, 1>;
 using Mat30 = Eigen::Matrix<double, 30, 30>;
 using TetNodes = std::array<Vec3, 10>;
 
+/// Smallest det J of the reference map over the ten nodes and the points of both rules.
+double t10_min_jacobian(const TetNodes& X);
 /// Reference volume, integral of det J (tet_rule_degree5: exact for straight and curved edges,
 /// det J being of degree 3).
 double t10_volume(const TetNodes& X);
@@ -25,6 +27,8 @@ public:
   /// f_int = sum_q w det J0 B^T S and, if K is given, K = sum_q w det J0 (B^T C B + G).
   /// Returns the smallest det F over the quadrature points; if it is <= 0, f and K are not valid.
   double internal_force(const Vec30& u, const Material3& material, Vec30& f, Mat30* K) const;
+  /// integral of W(E) over the element (same quadrature as the internal force).
+  double strain_energy(const Vec30& u, const Material3& material) const;
 
 private:
   std::array<Eigen::Matrix<double, 3, 10>, 4> dNdX_; ///< dN_K/dX_j at each stiffness point

@@ -56,6 +56,12 @@ inline constexpr std::array<TetQuadraturePoint, 14> tet_rule_degree5 = [] {
 inline constexpr std::array<std::array<int, 2>, 6> t10_edges{
     {{0, 1}, {1, 2}, {2, 0}, {3, 0}, {3, 2}, {3, 1}}};
 
+/// The four faces as 6-node triangles (corners, then mid-nodes 0-1, 1-2, 2-0), each
+/// counter-clockwise seen from outside a positively oriented element: the faces opposite
+/// vertices 3, 2, 0 and 1.
+inline constexpr std::array<std::array<int, 6>, 4> t10_faces{
+    {{0, 2, 1, 6, 5, 4}, {0, 1, 3, 4, 9, 7}, {1, 2, 3, 5, 8, 9}, {0, 3, 2, 7, 8, 6}}};
+
 /// Parent coordinates of the ten nodes.
 inline constexpr std::array<std::array<double, 3>, 10> t10_node_parent{{{0.0, 0.0, 0.0},
                                                                         {1.0, 0.0, 0.0},

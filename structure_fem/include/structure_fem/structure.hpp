@@ -1,8 +1,9 @@
 #pragma once
-// The T6 solid as the coupler sees it: node arrays in (external forces), node arrays out
-// (displacement, velocity, acceleration, predictor, stress), one Newmark step at a time, and a
-// value-type state for save/restore in iterative coupling. Units SI, per unit thickness (forces
-// in N/m). Node arrays have size 2 * nodes, entry 2K + c for component c of node K.
+// The solid as the coupler sees it, one template over the element family (T6: `Structure`,
+// per unit thickness, forces in N/m; T10: `StructureT10`): node arrays in (external forces),
+// node arrays out (displacement, velocity, acceleration, predictor, stress), one Newmark step at
+// a time, and a value-type state for save/restore in iterative coupling. Units SI. Node arrays
+// have size dim * nodes, entry dim K + c for component c of node K.
 #include <memory>
 #include <optional>
 #include <string>
@@ -15,6 +16,7 @@
 #include "structure_fem/material.hpp"
 #include "structure_fem/mesh.hpp"
 #include "structure_fem/newmark.hpp"
+#include "structure_fem/newton_raphson.hpp"
 
 namespace fsi {
 class StateArchive;
@@ -22,61 +24,21 @@ class StateArchive;
 
 namespace fsi::fem {
 
-/// Newton–Raphson convergence: iteration k has converged when
-///   ||R_k|| <= residual_atol + residual_rtol * R_ref   (R_ref = max(||R_0||, ||f_ext + f_g||))
-/// and, for k >= 1, ||du_k|| <= increment_atol + increment_rtol * ||u||,
-/// with R on the free dofs. A step with ||R_0|| <= residual_atol needs no iteration. It has also
-/// converged when ||du_k|| <= roundoff_rtol * ||u||: the residual is then at its round-off floor
-/// (which grows with the condition number) and no further progress is possible in double; and
-/// when the residual test holds and, for k >= 2, ||du_k|| > ||du_{k-1}|| / 2: Newton's increments
-/// shrink quadratically until they reach the round-off of the linear solve, so one that no longer
-/// halves is that floor. Both are counted (StepReport::roundoff_stops).
-struct NewtonOptions {
-  int max_iterations = 20;       ///< >= 1
-  double residual_rtol = 1e-8;   ///< >= 0
-  double residual_atol = 1e-10;  ///< [N/m], >= 0
-  double increment_rtol = 1e-10; ///< >= 0
-  double increment_atol = 1e-14; ///< [m], >= 0
-  double roundoff_rtol = 1e-13;  ///< >= 0
-  /// An iterate u + du with an inverted element (det F <= 0) is not a configuration of the body:
-  /// du is halved, at most this many times, before the step fails with the inversion. The
-  /// convergence test uses the full ||du||, and the converged u has det F > 0 everywhere.
-  int max_halvings = 10; ///< >= 0
-  /// A dynamic step that fails (Newton does not converge, or an element inverts) is taken again
-  /// from the same state as 2, 4, ... 2^max_substep_levels sub-steps, the external forces linear
-  /// in time between those of t^n and t^{n+1}; each sub-step meets the same tolerances. 0: off.
-  int max_substep_levels = 0; ///< in [0, 10]
-};
-
-struct StructureOptions {
-  MaterialOptions material;
-  Vec2 gravity{0.0, 0.0};                  ///< body acceleration g [m/s^2]
-  std::vector<DirichletCondition> clamped; ///< fixed or prescribed-motion conditions
+template <class Family> struct BasicStructureOptions {
+  MaterialOptions material; ///< E, nu, rho, the law; the plane model is 2-D only
+  VecD<Family::dim> gravity = VecD<Family::dim>::Zero(); ///< body acceleration g [m/s^2]
+  std::vector<typename Family::Condition> clamped;       ///< fixed or prescribed-motion conditions
   NewmarkOptions newmark;
   NewtonOptions newton;
-  LinearSolverOptions linear_solver;
+  /// 2-D: LDL^T with LU fallback; 3-D: CHOLMOD (issue 44).
+  LinearSolverOptions linear_solver{Family::dim == 3 ? LinearSolverKind::cholmod
+                                                     : LinearSolverKind::ldlt_or_lu};
 };
+using StructureOptions = BasicStructureOptions<T6>;
+using StructureT10Options = BasicStructureOptions<T10>;
 
 /// Throws InputError naming the field, its value and the allowed range.
-void validate(const StructureOptions& options);
-
-struct NewtonIterationLog {
-  double residual_norm;  ///< ||R|| on the free dofs before the solve [N/m]
-  double increment_norm; ///< ||du|| of the solve [m]
-  int linear_iterations; ///< CG iterations (1 for direct solvers)
-};
-
-/// What one Newton solve did; the caller logs it.
-struct StepReport {
-  long step = 0;          ///< dynamic: index of the step just taken; static: load step
-  double time = 0.0;      ///< dynamic: t^{n+1}; static: load factor
-  int iterations = 0;     ///< Newton iterations (linear solves)
-  int halvings = 0;       ///< increments halved because the iterate had an inverted element
-  int roundoff_stops = 0; ///< Newton solves ended at the round-off floor (NewtonOptions)
-  int substeps = 1;       ///< dynamic: sub-steps the step needed (1: none; NewtonOptions)
-  double final_residual = 0.0;
-  std::vector<NewtonIterationLog> history;
-};
+template <class Family> void validate(const BasicStructureOptions<Family>& options);
 
 struct StaticOptions {
   int load_steps = 1; ///< the load (f_ext + gravity) is applied in equal increments, >= 1
@@ -101,23 +63,25 @@ struct Prediction {
 
 using Energies = materials::SolidEnergies;
 
-class Structure {
+template <class Family> class BasicStructure {
 public:
+  static constexpr int dim = Family::dim;
+
   /// Validates options and mesh, builds the assembly pattern, mass and gravity forces, analyses
   /// the pattern once, and starts at rest with u = 0 and a^0 from M a^0 = f_g (constrained dofs
   /// start at their prescribed u, v, a at t = 0).
-  Structure(Mesh mesh, StructureOptions options);
-  ~Structure();
-  Structure(const Structure&) = delete;
-  Structure& operator=(const Structure&) = delete;
+  BasicStructure(typename Family::Mesh mesh, BasicStructureOptions<Family> options);
+  ~BasicStructure();
+  BasicStructure(const BasicStructure&) = delete;
+  BasicStructure& operator=(const BasicStructure&) = delete;
 
-  const Mesh& mesh() const { return mesh_; }
+  const typename Family::Mesh& mesh() const { return mesh_; }
   std::size_t num_nodes() const { return mesh_.num_nodes(); }
   const DofMap& dofs() const { return *dofs_; }
-  const StructureOptions& options() const { return options_; }
+  const BasicStructureOptions<Family>& options() const { return options_; }
 
-  /// Nodal external forces for the next step (e.g. projected fluid forces, eq. 58) [N/m], size
-  /// 2 * nodes; they act at t^{n+1}. Entries on clamped dofs are ignored (reactions).
+  /// Nodal external forces for the next step (e.g. projected fluid forces, eq. 58) [N/m; 3-D: N],
+  /// size dim * nodes; they act at t^{n+1}. Entries on clamped dofs are ignored (reactions).
   void set_external_forces(const Vector& f_ext);
   const Vector& external_forces() const { return f_ext_next_; }
 
@@ -142,7 +106,7 @@ public:
   const Vector& velocity() const { return state_.v; }
   const Vector& acceleration() const { return state_.a; }
   /// Current node positions x = X + u (eq. 28 / 60).
-  std::vector<Vec2> positions() const;
+  std::vector<VecD<dim>> positions() const;
   double time() const { return state_.time; }
   long step() const { return state_.step; }
 
@@ -162,7 +126,7 @@ public:
   void read_state(const StateArchive& archive, const std::string& prefix);
 
   /// Von Mises Cauchy stress per node (element nodal values averaged) [Pa].
-  Vector von_mises() const;
+  Vector von_mises() const requires(dim == 2);
   /// Energies of the free motion; the work of prescribed motions is not counted.
   Energies energies() const;
 
@@ -173,8 +137,8 @@ public:
   const StepReport& last_report() const { return report_; }
 
 private:
-  /// Newton on the free dofs; residual(u, R, K) fills R (free) and K (effective tangent).
-  template <class Residual> void newton(Vector& u, Residual&& residual, StepReport& report);
+  /// newton_raphson on the free dofs; residual(u, R) fills R (free) and K_eff_.
+  void newton(Vector& u, const NewtonResidual& residual, StepReport& report);
   /// One Newmark step from state_ with f_ext_next_; throws RunError without step and time.
   StepReport step(double dt);
   void factor_and_solve(const SparseMatrix& K, const Vector& rhs, Vector& x, int& iterations);
@@ -183,11 +147,11 @@ private:
   /// M_fc a_c on the free dofs: the inertia of the constrained accelerations in a.
   Vector constrained_inertia(const Vector& a) const;
 
-  Mesh mesh_;
-  StructureOptions options_;
-  std::unique_ptr<Material> material_;
+  typename Family::Mesh mesh_;
+  BasicStructureOptions<Family> options_;
+  std::unique_ptr<typename Family::Material> material_;
   std::unique_ptr<DofMap> dofs_;
-  std::unique_ptr<Assembler> assembler_;
+  std::unique_ptr<BasicAssembler<Family>> assembler_;
   std::unique_ptr<LinearSolver> solver_;
   SparseMatrix M_, K_, K_eff_;
   SparseMatrix M_all_;                           ///< consistent mass on all dofs
@@ -196,5 +160,10 @@ private:
   StructureState state_;
   StepReport report_;
 };
+
+using Structure = BasicStructure<T6>;
+using StructureT10 = BasicStructure<T10>;
+extern template class BasicStructure<T6>;
+extern template class BasicStructure<T10>;
 
 } // namespace fsi::fem
