@@ -73,8 +73,9 @@ public:
   Vector gravity_forces(const VecDim& g) const;
   /// Total strain energy integral W(E) [J] (T6: per unit thickness, J/m).
   double strain_energy(const Vector& u) const;
-  /// Von Mises Cauchy stress per node, averaged over the elements sharing the node [Pa].
-  Vector nodal_von_mises(const Vector& u) const requires(dim == 2);
+  /// Von Mises Cauchy stress per node, averaged over the elements sharing the node [Pa]; T6
+  /// only (T10: std::logic_error).
+  Vector nodal_von_mises(const Vector& u) const;
 
 private:
   ElementVector gather(const Vector& u, std::size_t e) const;
