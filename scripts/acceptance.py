@@ -208,6 +208,23 @@ def m_front_agreement(run, q, others, spec):
     return {"value": dam_break_front.agreement(a, b)}
 
 
+def m_agreement(run, q, others, spec):
+    """Relative difference of one figure (`of`: a quantity, its figure `of_field`, default value)
+    between this run and the run `with` (a case id, or ID+PAIR for another pair's run), relative
+    to that run's: |ours / theirs - 1|."""
+    other = others.get(q["with"])
+    if other is None:
+        return None
+    of, field = q["of"], q.get("of_field", "value")
+    if of["measure"] not in MEASURES or of["measure"] == "agreement":
+        raise AcceptanceError(f"{spec['_path']}: agreement of {of['measure']!r}: not a measure")
+    ours = MEASURES[of["measure"]](run, of, others, spec)[field]
+    theirs = MEASURES[of["measure"]](other, of, others, spec)[field]
+    if theirs == 0:
+        raise AcceptanceError(f"{other.path}: {of.get('probe')}: {field} is 0")
+    return {"value": abs(ours / theirs - 1.0), "ours": ours, "theirs": theirs}
+
+
 def m_still_water(run, q, _others, _spec):
     """hydrostatic_check.measure: bottom-row pressure (last 1 s), end speed, energy growth."""
     m = hydrostatic_check.measure(run.rows, q.get("depth", 0.5), q.get("l0", 0.0125),
@@ -289,7 +306,7 @@ def m_regression(run, q, _others, spec):
 
 MEASURES = {"peak": m_peak, "mean": m_mean, "final": m_final, "gradient": m_gradient,
             "ratio": m_ratio,
-            "front": m_front, "front_agreement": m_front_agreement,
+            "front": m_front, "front_agreement": m_front_agreement, "agreement": m_agreement,
             "still_water": m_still_water, "growth": m_growth, "decay": m_decay, "oscillation": m_oscillation,
             "regression": m_regression}
 
@@ -360,6 +377,9 @@ def judge(c, run, others, spec):
                        "passes although marked expected: fail; update the acceptance file")
     else:
         row["status"] = "PASS" if ok else "FAIL"
+    if "theirs" in figures:
+        mine = f"{fmt(figures['ours'], q.get('of_unit', ''))} against {fmt(figures['theirs'], q.get('of_unit', ''))}"
+        row["note"] = f"{mine}; {row['note']}" if row.get("note") else mine
     row.setdefault("note", c.get("note", ""))
     return row
 
@@ -385,15 +405,26 @@ def pair_of(spec, case, run):
     return max(matching)[1] if matching else default_pair(spec, case)
 
 
-def evaluate(spec, tier, case, pair, run, others):
-    rows = []
-    status = run.info.get("status", "completed")
-    if status != "completed":
+def completion(run):
+    """The row every run gets: did it reach its end time (run.json), in how many steps and how long."""
+    info = run.info
+    status = info.get("status", "completed")
+    steps, wall = info.get("steps"), info.get("wall_seconds")
+    done = f"{steps} steps, {wall:.0f} s wall" if steps is not None and wall is not None else ""
+    row = {"name": "run to its end time", "value": float(info.get("simulated_time", run.end)),
+           "unit": "s", "reference": "-", "error": None, "band": "-", "against": "",
+           "reference_file": ""}
+    if status == "completed":
+        row.update(status="PASS", note=f"completed, {done}" if done else "completed")
+    else:
         # A run that stopped early is judged as far as it went, and fails.
-        rows.append({"name": "run completed", "value": None, "unit": "", "reference": "-",
-                     "error": None, "band": "-", "status": "FAIL",
-                     "note": f"run.json: {status} at t = {run.info.get('simulated_time')} s: "
-                             f"{run.info.get('message', '')}"})
+        row.update(status="FAIL", note=f"run.json: {status} at t = {info.get('simulated_time')} s: "
+                                       f"{info.get('message', '')}")
+    return row
+
+
+def evaluate(spec, tier, case, pair, run, others):
+    rows = [completion(run)]
     for c in spec.get("criteria", []):
         if applies(c, tier, case["id"], pair):
             rows.append(judge(c, run, others, spec))

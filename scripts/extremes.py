@@ -24,7 +24,7 @@ E, RHO_S = 1.0e6, 2500.0  # the scene's obstacle
 
 def conditions(l0, dt, fine_l0, fine_dt):
     """(name, overrides, schemes) of each extreme; the base case is the scene at l0, dt."""
-    base = [f"fluid.l0={l0}"]
+    base = [f"fluid.l0={l0}", "time.courant=null"]  # the scene is Courant-stepped
     at = [f"time.dt={dt}"]
     few = ["css", "bgs_aitken", "bgs_iqn"]
     out = [
@@ -43,7 +43,7 @@ def conditions(l0, dt, fine_l0, fine_dt):
     for ratio in (0.1, 0.01):
         out.append((f"rho_ratio_{ratio}_courant_0.5", base + [
             f"time.dt={dt_c:.3g}", f"structures[0].material.density={1000 * ratio:g}"], few))
-    out.append(("fine", [f"fluid.l0={fine_l0}", f"time.dt={fine_dt}"], few))
+    out.append(("fine", [f"fluid.l0={fine_l0}", "time.courant=null", f"time.dt={fine_dt}"], few))
     return out
 
 

@@ -138,7 +138,8 @@ def cases(args):
         def add(name, l0, dt, scheme):
             keys = [f"{spec['l0']}={l0}"] + ([f"{spec['dp']}={l0 / 2:g}"] if "dp" in spec else [])
             out.append((prefix + name,
-                        common + spec["set"] + keys + [f"time.dt={dt}"] + SCHEMES[scheme]))
+                        common + spec["set"] + keys + ["time.courant=null", f"time.dt={dt}"]
+                        + SCHEMES[scheme]))
 
         for l0, dt in zip(levels, dts):
             add(f"l0_{l0:g}_dt_{dt:g}_css", l0, dt, "css")

@@ -3,14 +3,15 @@
 (data/ref/<scene>/acceptance.yaml, scripts/check_acceptance).
 
 usage: scripts/validate [--tier quick|standard|full] [--scene NAME]... [--pair FLUID+STRUCTURE|all]...
-                        [--fsi build/apps/fsi] [--out out/validate-TIER] [--threads 1]
+                        [--fsi build/apps/fsi] [--out out/validate-TIER] [--threads 1] [--jobs 1]
                         [--report FILE.md] [--update-regression] [--dry-run]
 
 Tiers: quick (coarse versions and short windows of the cheap cases, with the regression
 comparison against our committed runs; about 5 minutes on one thread), standard (the shipped
 scenes exactly as shipped, to their end time), full (the paper resolutions and the convergence
 pairs). --pair asks for another fluid x structure pair where the scene's acceptance offers it
-(`all`: every pair offered). Each case's run directory (probes.csv, run.json, coupling.csv,
+(`all`: every pair offered; a criterion may compare two pairs' runs of a case). --jobs N runs N
+cases at once, the longest first by the acceptance file's `minutes` estimates. Each case's run directory (probes.csv, run.json, coupling.csv,
 probes.png, probe_<name>.png) is kept under --out/<scene>/<case>[+<pair>]/. Prints a progress line
 per case and a summary table at the end; --report writes it as Markdown with a section per case
 (its plot, copied beside the report, and its command). --update-regression rewrites the
@@ -19,6 +20,7 @@ them: only after a change of results that is understood and meant.
 Exit status 1 if a case fails to run or a judged criterion fails, 2 on bad arguments.
 """
 import argparse
+import concurrent.futures
 import csv
 import datetime
 import os
@@ -42,13 +44,14 @@ def plan(tier, scenes, pairs):
     jobs = []
     for name in scenes:
         spec = acceptance.load(name)
-        offered = list(spec.get("pairs") or {}) or [acceptance.default_pair(spec)]
+        offered = [acceptance.default_pair(spec)] + list(spec.get("pairs") or {})
         for case in spec.get("cases", []):
             if tier not in case["tiers"]:
                 continue
             wanted = pairs or [acceptance.default_pair(spec, case)]
             if "all" in wanted:
-                wanted = offered
+                wanted = [acceptance.default_pair(spec, case)] + [
+                    p for p in offered if p != acceptance.default_pair(spec, case)]
             for pair in wanted:
                 if pair != acceptance.default_pair(spec, case) and pair not in offered:
                     if pairs and "all" not in pairs:
@@ -112,6 +115,36 @@ def plots(spec, directory):
     probe = (spec.get("plot") or {}).get("probe")
     main = os.path.join(directory, f"probe_{probe}.png" if probe else "probes.png")
     return main if os.path.isfile(main) else os.path.join(directory, "probes.png")
+
+
+def run_case(args, out, k, jobs):
+    """Runs case k of the plan; its result record (judged later)."""
+    spec, case, pair = jobs[k]
+    directory = run_dir(out, spec, case, pair)
+    cmd = command(args.fsi, spec, case, pair, directory, args.threads)
+    label = f"[{k + 1}/{len(jobs)}] {spec['scene']} {case['id']} {pair}"
+    print(f"{label}: running", flush=True)
+    os.makedirs(directory, exist_ok=True)
+    t0 = time.monotonic()
+    with open(os.path.join(directory, "fsi.log"), "w") as log:
+        code = subprocess.run(cmd, stdout=log, stderr=subprocess.STDOUT).returncode
+    wall = time.monotonic() - t0
+    res = {"index": k, "scene": spec["scene"], "case": case["id"], "pair": pair, "spec": spec,
+           "case_spec": case, "dir": os.path.relpath(directory, ROOT), "wall": wall,
+           "command": shown([os.path.relpath(c, ROOT) if c in (args.fsi, directory) else c
+                             for c in cmd]),
+           "rows": [], "error": None, "commit": "?", "date": "?", "plot": None, "run": None}
+    if os.path.isfile(os.path.join(directory, "probes.csv")):
+        # A run that stopped early is judged as far as it went (its completion row fails).
+        run = acceptance.Run(directory)
+        res["run"] = run
+        res["commit"] = run.info.get("git_revision", "?")
+        res["date"] = run.info.get("start", "?")[:10]
+        res["plot"] = plots(spec, directory)
+    if code != 0 and res["run"] is None:
+        res["error"] = f"fsi exited {code} (see {res['dir']}/fsi.log)"
+    print(f"{label}: {'ran' if code == 0 else f'exit {code}'} in {wall:.0f} s", flush=True)
+    return res
 
 
 def fmt_value(r):
@@ -204,6 +237,7 @@ def main(argv=None):
     p.add_argument("--fsi", default=os.environ.get("FSI", os.path.join(ROOT, "build", "apps", "fsi")))
     p.add_argument("--out")
     p.add_argument("--threads", type=int, default=1)
+    p.add_argument("--jobs", type=int, default=1, help="cases run at once (the longest first)")
     p.add_argument("--report")
     p.add_argument("--update-regression", action="store_true")
     p.add_argument("--dry-run", action="store_true", help="print the commands only")
@@ -223,48 +257,39 @@ def main(argv=None):
         print(f"validate: {args.fsi}: not an executable (build it, or give --fsi)", file=sys.stderr)
         return 2
     start = time.monotonic()
-    results, done = [], {}
-    print(f"validate: {args.tier} tier, {len(jobs)} case(s), fsi {args.fsi}, runs in {out}")
-    for k, (spec, case, pair) in enumerate(jobs, 1):
-        directory = run_dir(out, spec, case, pair)
-        cmd = command(args.fsi, spec, case, pair, directory, args.threads)
-        label = f"{spec['scene']} {case['id']} {pair}"
-        if args.dry_run:
-            print(shown(cmd))
-            continue
-        print(f"[{k}/{len(jobs)}] {label}: running", flush=True)
-        os.makedirs(directory, exist_ok=True)
-        t0 = time.monotonic()
-        with open(os.path.join(directory, "fsi.log"), "w") as log:
-            code = subprocess.run(cmd, stdout=log, stderr=subprocess.STDOUT).returncode
-        wall = time.monotonic() - t0
-        res = {"scene": spec["scene"], "case": case["id"], "pair": pair, "spec": spec,
-               "case_spec": case, "dir": os.path.relpath(directory, ROOT), "wall": wall,
-               "command": shown([os.path.relpath(c, ROOT) if c in (args.fsi, directory) else c
-                                 for c in cmd]),
-               "rows": [], "error": None, "commit": "?", "date": "?", "plot": None}
-        if code != 0:
-            res["error"] = f"fsi exited {code} (see {res['dir']}/fsi.log)"
-        else:
-            run = acceptance.Run(directory)
-            res["run"] = run
-            res["commit"] = run.info.get("git_revision", "?")
-            res["date"] = run.info.get("start", "?")[:10]
-            res["plot"] = plots(spec, directory)
-            done[(spec["scene"], pair, case["id"])] = run
-        results.append(res)
-        print(f"[{k}/{len(jobs)}] {label}: {'ran' if code == 0 else res['error']} in {wall:.0f} s",
-              flush=True)
     if args.dry_run:
+        for spec, case, pair in jobs:
+            print(shown(command(args.fsi, spec, case, pair, run_dir(out, spec, case, pair),
+                                args.threads)))
+        known = [case["minutes"] for _, case, _ in jobs if "minutes" in case]
+        print(f"validate: {len(jobs)} case(s); the {len(known)} with an estimate take about "
+              f"{sum(known):.0f} min on one thread each")
         return 0
+    print(f"validate: {args.tier} tier, {len(jobs)} case(s), fsi {args.fsi}, runs in {out}"
+          + (f", {args.jobs} at a time" if args.jobs > 1 else ""))
+    # With several at a time, the longest (by the acceptance file's estimate) go first.
+    order = sorted(range(len(jobs)), key=lambda k: -jobs[k][1].get("minutes", 0)) \
+        if args.jobs > 1 else range(len(jobs))
+    with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
+        futures = [pool.submit(run_case, args, out, k, jobs) for k in order]
+        results = [f.result() for f in futures]
+    results.sort(key=lambda res: res["index"])
+    done = {(res["scene"], res["pair"], res["case"]): res["run"] for res in results
+            if not res["error"]}
     # Judge after every case has run: a criterion may compare two cases of the same scene.
     for res in results:
         if res["error"]:
             continue
         spec, case = res["spec"], res["case_spec"]
-        others = {cid: run for (s, pr, cid), run in done.items()
-                  if s == spec["scene"] and pr == res["pair"]}
-        if args.update_regression and case.get("regression"):
+        # The same pair's other cases by id, every pair's as ID+PAIR.
+        others = {}
+        for (scene, pair, cid), run in done.items():
+            if scene == spec["scene"]:
+                others[f"{cid}+{pair}"] = run
+                if pair == res["pair"]:
+                    others[cid] = run
+        completed = res["run"].info.get("status", "completed") == "completed"
+        if args.update_regression and case.get("regression") and completed:
             path = write_regression(spec, case, res["run"], res["dir"])
             print(f"validate: wrote {os.path.relpath(path, ROOT)}")
         try:

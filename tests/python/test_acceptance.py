@@ -5,6 +5,7 @@ loads with its scenes and regression files present."""
 import contextlib
 import io
 import json
+import math
 import os
 import sys
 import unittest
@@ -94,7 +95,41 @@ class AcceptanceTest(unittest.TestCase):
                        "simulated_time": 1.5, "message": "stopped by signal 15"}, f)
         status, out = check(d, "--tier", "quick")
         self.assertEqual(status, 1, out)
-        self.assertIn("FAIL             run completed", out)
+        self.assertIn("FAIL             run to its end time: 1.5 s", out)
+        self.assertIn("stopped by signal 15", out)
+
+    def test_a_completed_run_says_so_with_its_steps_and_wall_time(self):
+        d = plate("plate_completed", 1.0)
+        with open(os.path.join(d, "run.json"), "w") as f:
+            json.dump({"name": "hydrostatic_plate", "scene": "data/scenes/hydrostatic_plate.yaml",
+                       "overrides": ["time.end=1.5"], "status": "completed", "steps": 1234,
+                       "wall_seconds": 56.7, "simulated_time": 1.5}, f)
+        status, out = check(d, "--tier", "quick")
+        self.assertEqual(status, 0, out)
+        self.assertIn("PASS             run to its end time: 1.5 s, band -  (completed, 1234 steps, "
+                      "57 s wall)", out)
+
+    def test_two_pairs_agree_within_the_band_or_fail(self):
+        """The rolling baffle's EMPS + FEM run against its SPH + TL-SPH run: a tip history 4 %
+        larger agrees within 10 %, one 12 % larger does not; without the other run, not run."""
+        tip = [(0.01 * k, 0.08 * math.sin(2 * math.pi * 0.01 * k / 1.17)) for k in range(301)]
+        sets = ["fluid.type=emps", "structures[0].type=fem"]
+        theirs = write_run("baffle_sph", "rolling_tank_elastic_baffle", [],
+                           ["time", "baffle_tip_x"], tip)
+        close = write_run("baffle_emps", "rolling_tank_elastic_baffle", sets,
+                          ["time", "baffle_tip_x"], [(t, 1.04 * v) for t, v in tip])
+        far = write_run("baffle_emps_far", "rolling_tank_elastic_baffle", sets,
+                        ["time", "baffle_tip_x"], [(t, 1.12 * v) for t, v in tip])
+        status, out = check(close, "--tier", "full", "--with", f"shipped+sph+tlsph={theirs}")
+        self.assertEqual(status, 0, out)
+        self.assertIn("pair emps+fem", out)
+        self.assertRegex(out, r"PASS +baffle_tip_x, first rightward extreme .*: 4.00 %, .*\(0.05348 m against 0.05142 m\)")
+        status, out = check(far, "--tier", "full", "--with", f"shipped+sph+tlsph={theirs}")
+        self.assertEqual(status, 1, out)
+        self.assertRegex(out, r"FAIL +baffle_tip_x, first rightward extreme .*: 12.00 %")
+        status, out = check(far, "--tier", "full")
+        self.assertEqual(status, 0, out)
+        self.assertRegex(out, r"not run +baffle_tip_x, first rightward extreme")
 
     def test_a_run_of_no_case_and_a_missing_column_are_errors(self):
         d = plate("plate_other", 1.0)
@@ -112,13 +147,15 @@ class AcceptanceTest(unittest.TestCase):
     def test_every_acceptance_file_loads_with_its_scenes_and_regression_files(self):
         scenes = acceptance.scenes_with_acceptance()
         self.assertGreaterEqual(len(scenes), 10)
+        shipped = set()
         for name in scenes:
             spec = acceptance.load(name)
             self.assertEqual(spec["scene"], name)
             for case in spec["cases"]:
                 self.assertTrue(os.path.isfile(os.path.join(SOURCE, case["file"])), case["file"])
-                if "standard" in case["tiers"]:
+                if "standard" in case["tiers"] and not case.get("sensitivity"):
                     self.assertFalse(case.get("set"), f"{name} {case['id']}: standard is as shipped")
+                    shipped.add(os.path.basename(case["file"]))
                 if case.get("regression"):
                     self.assertTrue(os.path.isfile(os.path.join(SOURCE, "data", "ref", name,
                                                                 case["regression"])))
@@ -126,6 +163,8 @@ class AcceptanceTest(unittest.TestCase):
                 self.assertIn(c["quantity"]["measure"], acceptance.MEASURES, c["name"])
                 if c.get("expected") == "fail":
                     self.assertTrue(c.get("reason"), c["name"])
+        # The standard tier runs every shipped scene as shipped.
+        self.assertEqual(shipped, set(os.listdir(os.path.join(SOURCE, "data", "scenes"))))
 
 
 if __name__ == "__main__":
