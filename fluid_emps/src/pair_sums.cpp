@@ -53,6 +53,27 @@ VecSum laplacian_scalar(const PairRow& r, const double* x, const double* y, cons
   return out;
 }
 
+ViscousSum viscous_scalar(const PairRow& r, const double* x, const double* y, const double* vx,
+                          const double* vy, double vxi, double vyi) {
+  ViscousSum out;
+  for (std::uint32_t k = 0; k < r.count; ++k) {
+    const std::uint32_t j = r.j[k];
+    const double dx = x[j] - r.xi, dy = y[j] - r.yi, r2 = dx * dx + dy * dy;
+    if (r2 >= r.re2) continue;
+    const double s = 1.0 - std::sqrt(r2) * r.inv_re, w = s * s;
+    const double dvx = vx[j] - vxi, dvy = vy[j] - vyi;
+    out.laplacian.x += dvx * w;
+    out.laplacian.y += dvy * w;
+    const double closing = dvx * dx + dvy * dy;
+    if (closing < 0 && r2 > 0) {
+      const double f = closing * w / r2;
+      out.closing.x += f * dx;
+      out.closing.y += f * dy;
+    }
+  }
+  return out;
+}
+
 #ifdef FSI_HAVE_AVX512
 
 // Eight pairs of a row from k: the lanes that exist (live), their indices, the gathered
@@ -135,6 +156,31 @@ FSI_TARGET_AVX512 VecSum laplacian_avx512(const PairRow& r, const double* x, con
   }
   return {lane_sum(sx), lane_sum(sy)};
 }
+
+FSI_TARGET_AVX512 ViscousSum viscous_avx512(const PairRow& r, const double* x, const double* y,
+                                            const double* vx, const double* vy, double vxi,
+                                            double vyi) {
+  __m512d sx = _mm512_setzero_pd(), sy = _mm512_setzero_pd();
+  __m512d ax = _mm512_setzero_pd(), ay = _mm512_setzero_pd();
+  const __m512d zero = _mm512_setzero_pd();
+  for (std::uint32_t k = 0; k < r.count; k += 8) {
+    const Lanes l = lanes(r, k, x, y);
+    const __m512d w = weight(l, r);
+    const __m512d dvx =
+        _mm512_sub_pd(_mm512_mask_i32gather_pd(zero, l.inside, l.j, vx, 8), _mm512_set1_pd(vxi));
+    const __m512d dvy =
+        _mm512_sub_pd(_mm512_mask_i32gather_pd(zero, l.inside, l.j, vy, 8), _mm512_set1_pd(vyi));
+    sx = _mm512_mask3_fmadd_pd(dvx, w, sx, l.inside);
+    sy = _mm512_mask3_fmadd_pd(dvy, w, sy, l.inside);
+    const __m512d closing = _mm512_fmadd_pd(dvx, l.dx, _mm512_mul_pd(dvy, l.dy));
+    const __mmask8 closes = _mm512_mask_cmp_pd_mask(
+        _mm512_mask_cmp_pd_mask(l.inside, l.r2, zero, _CMP_NEQ_OQ), closing, zero, _CMP_LT_OQ);
+    const __m512d f = _mm512_maskz_div_pd(closes, _mm512_mul_pd(closing, w), l.r2);
+    ax = _mm512_mask3_fmadd_pd(f, l.dx, ax, closes);
+    ay = _mm512_mask3_fmadd_pd(f, l.dy, ay, closes);
+  }
+  return {{lane_sum(sx), lane_sum(sy)}, {lane_sum(ax), lane_sum(ay)}};
+}
 #endif
 
 } // namespace
@@ -163,6 +209,15 @@ VecSum laplacian_sum(const PairRow& row, const double* x, const double* y, const
 #endif
   (void)vector;
   return laplacian_scalar(row, x, y, vx, vy, vxi, vyi);
+}
+
+ViscousSum viscous_sum(const PairRow& row, const double* x, const double* y, const double* vx,
+                       const double* vy, double vxi, double vyi, bool vector) {
+#ifdef FSI_HAVE_AVX512
+  if (vector && particles::avx512_available()) return viscous_avx512(row, x, y, vx, vy, vxi, vyi);
+#endif
+  (void)vector;
+  return viscous_scalar(row, x, y, vx, vy, vxi, vyi);
 }
 
 } // namespace fsi::emps

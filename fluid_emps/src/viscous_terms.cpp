@@ -33,7 +33,7 @@ void EmpsFluid::viscosity() {
   const double rho_V = options_.density * options_.volume();
   const std::vector<int>& nearest = hits_.face[0].segment;
   scratch_.resize(2 * n);
-  // The closing-pair sum only when alpha > 0: it costs as much as the rest of the loop.
+  // The closing-pair sum only when alpha > 0.
   // near_wall: its part on pairs with a particle within r_e of a wall (WallContact::viscous).
   const auto sweep = [&](auto artificial, auto near_wall) {
     parallel_for_balanced(n, [&](std::size_t i) {
@@ -43,7 +43,11 @@ void EmpsFluid::viscosity() {
         const VecSum lap = laplacian_sum(pair_row(i), p.x.data(), p.y.data(), p.vx.data(),
                                          p.vy.data(), vxi, vyi, options_.vector_kernels);
         sx = lap.x, sy = lap.y;
-      } else {
+      } else if constexpr (!decltype(near_wall)::value) { // and the closing pairs' (pair_sums)
+        const ViscousSum v = viscous_sum(pair_row(i), p.x.data(), p.y.data(), p.vx.data(),
+                                         p.vy.data(), vxi, vyi, options_.vector_kernels);
+        sx = v.laplacian.x, sy = v.laplacian.y, ax = v.closing.x, ay = v.closing.y;
+      } else { // and the closing pairs' part near a wall apart (WallContact::viscous)
         const bool wall_i = nearest[i] >= 0;
         const std::uint32_t* row = neighbours_.row(i);
         for (std::uint32_t k = 0, c = neighbours_.count(i); k < c; ++k) {
@@ -56,12 +60,10 @@ void EmpsFluid::viscosity() {
           sy += dvy * w;
           const double closing = dvx * dx + dvy * dy; // < 0: the pair closes in
           if (closing < 0 && r2 > 0) {
-            const double s = closing * w / r2; // ((v_j - v_i) . e) e w / r
+            const double s = closing * w / r2; // ((v_j - v_i) . e) e w
             ax += s * dx;
             ay += s * dy;
-            if constexpr (decltype(near_wall)::value) {
-              if (wall_i || nearest[j] >= 0) bx += s * dx, by += s * dy;
-            }
+            if (wall_i || nearest[j] >= 0) bx += s * dx, by += s * dy;
           }
         }
       }

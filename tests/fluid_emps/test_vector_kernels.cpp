@@ -1,7 +1,8 @@
 // The AVX-512 kernels against their scalar forms and against the sums written out: the EMPS pair
-// sums (pair_sums.hpp) on a random cloud whose rows have every length modulo 8, a coincident pair
-// (r = 0, left out of the gradient) and pairs beyond r_e (left out of all three); the
-// neighbour-list build (particles/neighbor_list.hpp).
+// sums (pair_sums.hpp, the artificial viscosity's closing pairs with them) on a random cloud whose
+// rows have every length modulo 8, a coincident pair (r = 0, left out of the gradient and the
+// closing pairs) and pairs beyond r_e (left out of all three); the neighbour-list build
+// (particles/neighbor_list.hpp).
 #include "fluid_emps/pair_sums.hpp"
 #include "particles/cell_grid.hpp"
 #include "particles/neighbor_list.hpp"
@@ -30,7 +31,7 @@ TEST_CASE("emps pair sums: the AVX-512 and scalar forms equal the sums written o
   INFO("AVX-512 on this CPU: " << particles::avx512_available());
   std::vector<std::uint32_t> row(n + 8);
   std::vector<bool> tail_lengths(8, false);
-  double worst = 0.0;
+  double worst = 0.0, closing_sums = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
     std::uint32_t c = 0;
     for (std::size_t j = 0; j < n; ++j)
@@ -39,7 +40,7 @@ TEST_CASE("emps pair sums: the AVX-512 and scalar forms equal the sums written o
     for (std::size_t k = c; k < row.size(); ++k) row[k] = 0x7ffffff0u; // beyond the row: unread
     tail_lengths[c % 8] = true;
     // The sums written out (eqs. 9-11 without their constant factors).
-    double pnd = 0, gx = 0, gy = 0, lx = 0, ly = 0;
+    double pnd = 0, gx = 0, gy = 0, lx = 0, ly = 0, ax = 0, ay = 0;
     std::uint32_t within = 0;
     for (std::uint32_t k = 0; k < c; ++k) {
       const std::uint32_t j = row[k];
@@ -49,21 +50,29 @@ TEST_CASE("emps pair sums: the AVX-512 and scalar forms equal the sums written o
       pnd += w, ++within;
       lx += (vx[j] - vx[i]) * w, ly += (vy[j] - vy[i]) * w;
       if (r > 0) gx += (p[j] + p[i]) * w * dx / (r * r), gy += (p[j] + p[i]) * w * dy / (r * r);
+      // the closing pairs' sum ((v_j - v_i) . e) e w, e the unit vector from i to j
+      const double closing = r > 0 ? ((vx[j] - vx[i]) * dx + (vy[j] - vy[i]) * dy) / r : 0.0;
+      if (closing < 0) ax += closing * w * dx / r, ay += closing * w * dy / r;
     }
+    closing_sums += std::hypot(ax, ay);
     const emps::PairRow pr{row.data(), c, x[i], y[i], r_e * r_e, 1.0 / r_e};
     for (const bool vector : {false, true}) {
       const emps::PndSum d = emps::pnd_sum(pr, x.data(), y.data(), vector);
       const emps::VecSum g = emps::gradient_sum(pr, x.data(), y.data(), p.data(), p[i], vector);
       const emps::VecSum l =
           emps::laplacian_sum(pr, x.data(), y.data(), vx.data(), vy.data(), vx[i], vy[i], vector);
+      const emps::ViscousSum a =
+          emps::viscous_sum(pr, x.data(), y.data(), vx.data(), vy.data(), vx[i], vy[i], vector);
       REQUIRE(d.within == within);
       // errors relative to the sums' scales: n0 ~ 4, |p| w / r ~ 1e4 / l0, |v| w ~ 1
-      worst =
-          std::max({worst, std::abs(d.pnd - pnd) / 4.0, std::hypot(g.x - gx, g.y - gy) / (1e4 / l0),
-                    std::hypot(l.x - lx, l.y - ly)});
+      worst = std::max({worst, std::abs(d.pnd - pnd) / 4.0,
+                        std::hypot(g.x - gx, g.y - gy) / (1e4 / l0), std::hypot(l.x - lx, l.y - ly),
+                        std::hypot(a.laplacian.x - lx, a.laplacian.y - ly),
+                        std::hypot(a.closing.x - ax, a.closing.y - ay)});
     }
   }
   for (int k = 0; k < 8; ++k) CHECK(tail_lengths[k]); // every row length modulo 8 occurred
+  CHECK(closing_sums > static_cast<double>(n));       // the closing pairs' sums are not empty
   INFO("largest scaled difference " << worst);
   CHECK(worst < 1e-13);
 }

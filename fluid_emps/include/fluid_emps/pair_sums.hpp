@@ -33,4 +33,13 @@ VecSum gradient_sum(const PairRow& row, const double* x, const double* y, const 
 VecSum laplacian_sum(const PairRow& row, const double* x, const double* y, const double* vx,
                      const double* vy, double vxi, double vyi, bool vector);
 
+/// laplacian_sum's sum, and over the closing pairs ((v_j - v_i) . (x_j - x_i) < 0, 0 < r_ij < r_e)
+/// sum_j ((v_j - v_i) . e_ij) e_ij w_ij, e_ij the unit vector from i to j (the artificial
+/// viscosity's pair sum, EmpsFluid::viscosity).
+struct ViscousSum {
+  VecSum laplacian, closing;
+};
+ViscousSum viscous_sum(const PairRow& row, const double* x, const double* y, const double* vx,
+                       const double* vy, double vxi, double vyi, bool vector);
+
 } // namespace fsi::emps
