@@ -112,6 +112,12 @@ FSI_TARGET_AVX512 inline __m512d weight(const Lanes& l, const PairRow& r) {
   return _mm512_mul_pd(s, s);
 }
 
+// v_j - v_i in the inside lanes (0 - v_i elsewhere).
+FSI_TARGET_AVX512 inline __m512d difference(const Lanes& l, const double* v, double v_i) {
+  return _mm512_sub_pd(_mm512_mask_i32gather_pd(_mm512_setzero_pd(), l.inside, l.j, v, 8),
+                       _mm512_set1_pd(v_i));
+}
+
 FSI_TARGET_AVX512 PndSum pnd_avx512(const PairRow& r, const double* x, const double* y) {
   __m512d pnd = _mm512_setzero_pd();
   std::uint32_t within = 0;
@@ -143,14 +149,10 @@ FSI_TARGET_AVX512 VecSum laplacian_avx512(const PairRow& r, const double* x, con
                                           const double* vx, const double* vy, double vxi,
                                           double vyi) {
   __m512d sx = _mm512_setzero_pd(), sy = _mm512_setzero_pd();
-  const __m512d zero = _mm512_setzero_pd();
   for (std::uint32_t k = 0; k < r.count; k += 8) {
     const Lanes l = lanes(r, k, x, y);
     const __m512d w = weight(l, r);
-    const __m512d dvx =
-        _mm512_sub_pd(_mm512_mask_i32gather_pd(zero, l.inside, l.j, vx, 8), _mm512_set1_pd(vxi));
-    const __m512d dvy =
-        _mm512_sub_pd(_mm512_mask_i32gather_pd(zero, l.inside, l.j, vy, 8), _mm512_set1_pd(vyi));
+    const __m512d dvx = difference(l, vx, vxi), dvy = difference(l, vy, vyi);
     sx = _mm512_mask3_fmadd_pd(dvx, w, sx, l.inside);
     sy = _mm512_mask3_fmadd_pd(dvy, w, sy, l.inside);
   }
@@ -166,10 +168,7 @@ FSI_TARGET_AVX512 ViscousSum viscous_avx512(const PairRow& r, const double* x, c
   for (std::uint32_t k = 0; k < r.count; k += 8) {
     const Lanes l = lanes(r, k, x, y);
     const __m512d w = weight(l, r);
-    const __m512d dvx =
-        _mm512_sub_pd(_mm512_mask_i32gather_pd(zero, l.inside, l.j, vx, 8), _mm512_set1_pd(vxi));
-    const __m512d dvy =
-        _mm512_sub_pd(_mm512_mask_i32gather_pd(zero, l.inside, l.j, vy, 8), _mm512_set1_pd(vyi));
+    const __m512d dvx = difference(l, vx, vxi), dvy = difference(l, vy, vyi);
     sx = _mm512_mask3_fmadd_pd(dvx, w, sx, l.inside);
     sy = _mm512_mask3_fmadd_pd(dvy, w, sy, l.inside);
     const __m512d closing = _mm512_fmadd_pd(dvx, l.dx, _mm512_mul_pd(dvy, l.dy));
