@@ -378,7 +378,8 @@ def judge(c, run, others, spec):
     else:
         row["status"] = "PASS" if ok else "FAIL"
     if "theirs" in figures:
-        mine = f"{fmt(figures['ours'], q.get('of_unit', ''))} against {fmt(figures['theirs'], q.get('of_unit', ''))}"
+        of_unit = q.get("of_unit", "")
+        mine = f"{fmt(figures['ours'], of_unit)} against {fmt(figures['theirs'], of_unit)}"
         row["note"] = f"{mine}; {row['note']}" if row.get("note") else mine
     row.setdefault("note", c.get("note", ""))
     return row
@@ -406,7 +407,7 @@ def pair_of(spec, case, run):
 
 
 def completion(run):
-    """The row every run gets: did it reach its end time (run.json), in how many steps and how long."""
+    """The row every run gets: did it reach its end time (run.json), in how many steps, how long."""
     info = run.info
     status = info.get("status", "completed")
     steps, wall = info.get("steps"), info.get("wall_seconds")

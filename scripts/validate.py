@@ -11,8 +11,9 @@ comparison against our committed runs; about 5 minutes on one thread), standard 
 scenes exactly as shipped, to their end time), full (the paper resolutions and the convergence
 pairs). --pair asks for another fluid x structure pair where the scene's acceptance offers it
 (`all`: every pair offered; a criterion may compare two pairs' runs of a case). --jobs N runs N
-cases at once, the longest first by the acceptance file's `minutes` estimates. Each case's run directory (probes.csv, run.json, coupling.csv,
-probes.png, probe_<name>.png) is kept under --out/<scene>/<case>[+<pair>]/. Prints a progress line
+cases at once, the longest first by the acceptance file's `minutes` estimates. Each case's run
+directory (probes.csv, run.json, coupling.csv, probes.png, probe_<name>.png) is kept under
+--out/<scene>/<case>[+<pair>]/. Prints a progress line
 per case and a summary table at the end; --report writes it as Markdown with a section per case
 (its plot, copied beside the report, and its command). --update-regression rewrites the
 regression files (data/ref/<scene>/regression_quick.csv) from these runs instead of judging
