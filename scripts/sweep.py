@@ -50,8 +50,9 @@ SCENES = {
 # its resolution. A level is the fluid's spacing l0 (key "l0") and the coupling step; a TL-SPH
 # structure gets dp_S = l0 / 2 (key "dp"; the RKGC paper's dp_F = 2 dp_S). The first pair of
 # --pairs also runs the coupling variants and time-step factors at the middle level.
-# The Walhorn scene keeps the EMPS keys at its top level (scripts and tests set fluid.l0 on it), so
-# its SPH pairs replace the fluid block (the SPH run of docs/validation.md: RKGC, c0 34.2 m/s).
+# The Walhorn scene keeps the EMPS keys at its top level (scripts and tests set fluid.l0 on it),
+# so its SPH pairs replace the fluid block (the SPH run of docs/validation-history.md: RKGC,
+# c0 34.2 m/s).
 WALHORN_SPH = ("fluid={type: sph, density: 1000.0, viscosity: 1.0e-6, l0: 1.46e-3, "
                "sound_speed: 34.2, regions: [{min: [0.0, 0.0], max: [0.146, 0.292]}], "
                "domain: {min: [-0.02, -0.02], max: [0.604, 0.65]}}")

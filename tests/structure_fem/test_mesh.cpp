@@ -41,8 +41,8 @@ TEST_CASE("fem: rectangle mesher, mirrored diagonals: both top corners in two el
           "mirror-symmetric",
           "[structure_fem][mesh]") {
   // The rising split leaves the upper-left corner in one triangle (the Liao plate's failing tip
-  // node, docs/validation.md); the mirrored one puts each top corner in two and is symmetric
-  // about the vertical mid-line.
+  // node, docs/validation-history.md); the mirrored one puts each top corner in two and is
+  // symmetric about the vertical mid-line.
   const auto elements_at = [](const Mesh& mesh, fsi::Vec2 X) {
     int count = 0;
     for (const auto& el : mesh.elements)
