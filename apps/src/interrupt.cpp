@@ -1,5 +1,6 @@
 #include "fsi_app/interrupt.hpp"
 
+#include <atomic>
 #include <csignal>
 #include <fcntl.h>
 #include <mutex>
@@ -9,7 +10,10 @@ namespace fsi::app {
 
 namespace {
 
-volatile std::sig_atomic_t received_signal = 0;
+// The first signal received; one atomic exchange decides which signal is the first when two
+// threads take two signals at the same instant (lock-free, so safe in a handler).
+std::atomic<int> received_signal = 0;
+static_assert(std::atomic<int>::is_always_lock_free);
 // The guards alive (nested runs, e.g. a progress callback that runs another scene, or runs in two
 // threads): the first installs the handlers and saves the previous ones, the last restores them
 // (issue 41: a single saved pair let an inner guard's restore re-install fsi's own handler).
@@ -34,10 +38,8 @@ void write_all(int fd, const char* data, std::size_t size) {
 }
 
 void record(int signal) {
-  if (received_signal == 0) {
-    received_signal = signal;
-    return;
-  }
+  int none = 0;
+  if (received_signal.compare_exchange_strong(none, signal)) return;
   // Second signal: end now, but leave run.json saying "interrupted" (only async-signal-safe
   // calls: open, write, close, rename, _exit).
   const int a = active;
