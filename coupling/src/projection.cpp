@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cassert>
+#include <type_traits>
 #include <vector>
 
 #include "fsi/core/parallel.hpp"
@@ -15,23 +16,28 @@ namespace {
 constexpr std::size_t loads_per_chunk = 4096;
 constexpr std::size_t max_chunks = 16;
 
-void accumulate(const InterfaceMesh& mesh, std::span<const PointLoad> loads, std::vector<Vec2>& f) {
-  for (const PointLoad& p : loads) {
-    assert(p.edge < mesh.edges.size());
-    assert(p.xi >= -1.0 && p.xi <= 1.0);
-    const auto& nodes = mesh.edges[p.edge];
-    const auto n = edge_shape_functions(mesh.order, p.xi); // eq. 58: f_L += N_L(x_wall) (-f_wall)
-    for (int k = 0; k < 3; ++k) {
-      assert(nodes[static_cast<std::size_t>(k)] < f.size());
-      f[nodes[static_cast<std::size_t>(k)]] += n[static_cast<std::size_t>(k)] * p.f;
+template <int D>
+void accumulate(const BasicInterfaceMesh<D>& mesh, std::span<const BasicPointLoad<D>> loads,
+                std::vector<VecD<D>>& f) {
+  for (const BasicPointLoad<D>& p : loads) {
+    assert(p.element() < mesh.elements().size());
+    assert(in_parent_element(p.parent()));
+    const auto& nodes = mesh.elements()[p.element()];
+    // eq. 58: f_L += N_L(x_wall) (-f_wall)
+    const auto n = element_shape_functions(mesh, p.parent());
+    for (std::size_t k = 0; k < n.size(); ++k) {
+      assert(nodes[k] < f.size());
+      f[nodes[k]] += n[k] * p.f;
     }
   }
 }
 
 } // namespace
 
-void project_point_loads(const InterfaceMesh& mesh, std::span<const PointLoad> loads,
-                         InterfaceLoads& out) {
+template <int D>
+void project_point_loads(const BasicInterfaceMesh<D>& mesh,
+                         std::type_identity_t<std::span<const BasicPointLoad<D>>> loads,
+                         BasicInterfaceLoads<D>& out) {
   const std::size_t chunks = std::clamp<std::size_t>(
       (loads.size() + loads_per_chunk - 1) / loads_per_chunk, 1, max_chunks);
   if (chunks == 1) {
@@ -39,7 +45,8 @@ void project_point_loads(const InterfaceMesh& mesh, std::span<const PointLoad> l
     return;
   }
   const std::size_t per = (loads.size() + chunks - 1) / chunks;
-  std::vector<std::vector<Vec2>> buffers(chunks, std::vector<Vec2>(out.size(), Vec2::Zero()));
+  std::vector<std::vector<VecD<D>>> buffers(chunks,
+                                            std::vector<VecD<D>>(out.size(), VecD<D>::Zero()));
   parallel_for(chunks, [&](std::size_t c) {
     const std::size_t begin = std::min(loads.size(), c * per);
     const std::size_t end = std::min(loads.size(), begin + per);
@@ -48,5 +55,10 @@ void project_point_loads(const InterfaceMesh& mesh, std::span<const PointLoad> l
   for (const auto& b : buffers)
     for (std::size_t i = 0; i < out.size(); ++i) out.f[i] += b[i];
 }
+
+template void project_point_loads(const InterfaceMesh&, std::span<const PointLoad>,
+                                  InterfaceLoads&);
+template void project_point_loads(const InterfaceMesh3&, std::span<const PointLoad3>,
+                                  InterfaceLoads3&);
 
 } // namespace fsi::coupling

@@ -22,16 +22,24 @@ namespace fsi::coupling {
 
 /// State of the interface nodes at one instant (eqs. 60-62): current positions x = x0 + u [m],
 /// velocities v [m/s] and accelerations a [m/s^2].
-using InterfaceMotion = NodeMotion;
+template <int D> using BasicInterfaceMotion = BasicNodeMotion<D>;
+using InterfaceMotion = BasicInterfaceMotion<2>;
+using InterfaceMotion3 = BasicInterfaceMotion<3>;
 
 /// Nodal forces on the structure at the interface nodes (f^{F->S}, eqs. 58-59) [N per unit
-/// thickness]. Sign: the force the fluid exerts ON the structure (= -f_wall summed, eq. 58).
-struct InterfaceLoads {
-  std::vector<Vec2> f;
+/// thickness in 2-D, N in 3-D]. Sign: the force the fluid exerts ON the structure (= -f_wall
+/// summed, eq. 58). BasicInterfaceLoads<D> for D = 2 (InterfaceLoads) and 3 (InterfaceLoads3).
+template <int D> struct BasicInterfaceLoads {
+  std::vector<VecD<D>> f;
 
   std::size_t size() const { return f.size(); }
-  static InterfaceLoads zeros(std::size_t n);
+  static BasicInterfaceLoads zeros(std::size_t n);
 };
+
+extern template struct BasicInterfaceLoads<2>;
+extern template struct BasicInterfaceLoads<3>;
+using InterfaceLoads = BasicInterfaceLoads<2>;
+using InterfaceLoads3 = BasicInterfaceLoads<3>;
 
 /// Prescribed interface motion at time t (one-way fluid runs).
 using MotionFunction = std::function<InterfaceMotion(double t)>;
@@ -39,7 +47,13 @@ using MotionFunction = std::function<InterfaceMotion(double t)>;
 using LoadFunction = std::function<InterfaceLoads(double t)>;
 
 /// (1 - s) a + s b, node by node, for x, v and a. Exact at the ends: s = 0 gives a, s = 1 gives b.
-InterfaceMotion interpolate(const InterfaceMotion& a, const InterfaceMotion& b, double s);
+template <int D>
+BasicInterfaceMotion<D> interpolate(const BasicInterfaceMotion<D>& a,
+                                    const BasicInterfaceMotion<D>& b, double s);
+
+extern template InterfaceMotion interpolate(const InterfaceMotion&, const InterfaceMotion&, double);
+extern template InterfaceMotion3 interpolate(const InterfaceMotion3&, const InterfaceMotion3&,
+                                             double);
 
 /// What the coupler drives in either solver.
 ///
