@@ -5,6 +5,7 @@
 #include "fsi_app/output/text_file.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cerrno>
 #include <cstring>
 #include <fcntl.h>
@@ -78,6 +79,18 @@ std::vector<hsize_t> dims_of(hid_t file, const std::string& path, const std::fil
   H5Sclose(space);
   H5Dclose(set);
   return dims;
+}
+
+/// Tetrahedron_10 node k (XDMF/VTK: edge nodes 0-1, 1-2, 2-0, 0-3, 1-3, 2-3) is Gmsh's node
+/// kT10ToXdmf[k] (edge nodes 0-1, 1-2, 2-0, 3-0, 3-2, 3-1; structure_fem's t10_edges).
+constexpr std::array<int, 10> kT10ToXdmf{0, 1, 2, 3, 4, 5, 6, 7, 9, 8};
+
+/// The XDMF topology and the /meshes/<grid> dataset of a mesh of 6- or 10-node elements.
+const char* topology_name(int nodes) {
+  return nodes == 6 ? "Triangle_6" : "Tetrahedron_10";
+}
+const char* connectivity_name(int nodes) {
+  return nodes == 6 ? "t6" : "t10";
 }
 
 } // namespace
@@ -172,8 +185,12 @@ FieldsFile::FieldsFile(const std::filesystem::path& h5, const std::filesystem::p
   }
   opened([&] {
     for (const auto& grid : children(file_, "meshes", h5))
-      if (grid != "vertices")
-        meshes_.push_back({grid, dims_of(file_, "meshes/" + grid + "/t6", h5).front()});
+      if (grid != "vertices") {
+        const bool t6 = H5Lexists(file_, ("meshes/" + grid + "/t6").c_str(), H5P_DEFAULT) > 0;
+        const int nodes = t6 ? 6 : 10;
+        const std::string set = "meshes/" + grid + "/" + connectivity_name(nodes);
+        meshes_.push_back({grid, dims_of(file_, set, h5).front(), nodes});
+      }
     if (H5Lexists(file_, "meshes/vertices", H5P_DEFAULT) > 0)
       vertices_ = dims_of(file_, "meshes/vertices", h5).front();
     const auto count = static_cast<int>(children(file_, "frames", h5).size());
@@ -184,7 +201,8 @@ FieldsFile::FieldsFile(const std::filesystem::path& h5, const std::filesystem::p
       const std::string frame = "frames/" + std::to_string(k);
       FrameRecord record{read_frame_time(h5, file_, k), {}};
       for (const auto& grid : children(file_, frame, h5)) {
-        GridRecord g{grid, dims_of(file_, frame + "/" + grid + "/position", h5).front(), {}};
+        const auto position = dims_of(file_, frame + "/" + grid + "/position", h5);
+        GridRecord g{grid, position.front(), {}, static_cast<int>(position.at(1))};
         for (const auto& field : children(file_, frame + "/" + grid, h5)) {
           if (field == "position") continue;
           const auto dims = dims_of(file_, frame + "/" + grid + "/" + field, h5);
@@ -233,16 +251,31 @@ void FieldsFile::close() noexcept {
 }
 
 void FieldsFile::add_mesh(const std::string& grid, const std::vector<std::int64_t>& t6) {
+  declare_mesh(grid, t6, 6);
+}
+
+void FieldsFile::add_mesh_t10(const std::string& grid, const std::vector<std::int64_t>& t10) {
+  std::vector<std::int64_t> xdmf(t10.size());
+  for (std::size_t e = 0; e + 10 <= t10.size(); e += 10)
+    for (std::size_t k = 0; k < 10; ++k)
+      xdmf[e + k] = t10[e + static_cast<std::size_t>(kT10ToXdmf[k])];
+  declare_mesh(grid, xdmf, 10);
+}
+
+void FieldsFile::declare_mesh(const std::string& grid,
+                              const std::vector<std::int64_t>& connectivity, int nodes) {
   guarded([&] {
     const hid_t g = make_group(file_, "meshes/" + grid, h5_path_);
+    const auto n = static_cast<std::size_t>(nodes);
     try {
-      write_array(g, "t6", H5T_NATIVE_INT64, t6.data(), {t6.size() / 6, 6}, h5_path_);
+      write_array(g, connectivity_name(nodes), H5T_NATIVE_INT64, connectivity.data(),
+                  {connectivity.size() / n, n}, h5_path_);
     } catch (...) {
       H5Gclose(g);
       throw;
     }
     check(H5Gclose(g), h5_path_, "cannot close group " + grid);
-    meshes_.push_back({grid, t6.size() / 6});
+    meshes_.push_back({grid, connectivity.size() / n, nodes});
   });
 }
 
@@ -310,17 +343,18 @@ void FieldsFile::ensure_vertices(std::size_t n) {
   vertices_ = n;
 }
 
-void FieldsFile::write_grid(const std::string& grid, const std::vector<double>& xy,
-                            const std::vector<GridField>& fields) {
+void FieldsFile::write_grid(const std::string& grid, const std::vector<double>& points,
+                            const std::vector<GridField>& fields, int dim) {
   guarded([&] {
     const bool mesh = std::any_of(meshes_.begin(), meshes_.end(),
                                   [&](const MeshRecord& m) { return m.grid == grid; });
-    const hsize_t n = xy.size() / 2;
+    const auto d = static_cast<hsize_t>(dim);
+    const hsize_t n = points.size() / d;
     if (!mesh) ensure_vertices(n);
     const hid_t g = make_group(frame_group_, grid, h5_path_);
-    GridRecord record{grid, n, {}};
+    GridRecord record{grid, n, {}, dim};
     try {
-      write_array(g, "position", H5T_NATIVE_DOUBLE, xy.data(), {n, 2}, h5_path_);
+      write_array(g, "position", H5T_NATIVE_DOUBLE, points.data(), {n, d}, h5_path_);
       for (const auto& f : fields) {
         std::vector<hsize_t> dims = {n};
         if (f.components > 1) dims.push_back(static_cast<hsize_t>(f.components));
@@ -365,10 +399,11 @@ void FieldsFile::write_xdmf() const {
                                      [&](const MeshRecord& m) { return m.grid == g.grid; });
       x << "  <Grid Name=\"" << g.grid << "\" GridType=\"Uniform\">\n";
       if (mesh != meshes_.end()) {
-        x << "   <Topology TopologyType=\"Triangle_6\" NumberOfElements=\"" << mesh->elements
-          << "\">\n    <DataItem Dimensions=\"" << mesh->elements
-          << " 6\" NumberType=\"Int\" Precision=\"8\" Format=\"HDF\">" << h5 << ":/meshes/"
-          << g.grid << "/t6</DataItem>\n   </Topology>\n";
+        x << "   <Topology TopologyType=\"" << topology_name(mesh->nodes)
+          << "\" NumberOfElements=\"" << mesh->elements << "\">\n    <DataItem Dimensions=\""
+          << mesh->elements << " " << mesh->nodes
+          << "\" NumberType=\"Int\" Precision=\"8\" Format=\"HDF\">" << h5 << ":/meshes/" << g.grid
+          << "/" << connectivity_name(mesh->nodes) << "</DataItem>\n   </Topology>\n";
       } else if (g.points == 0) {
         x << "   <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"0\" "
              "NodesPerElement=\"1\"/>\n";
@@ -383,8 +418,9 @@ void FieldsFile::write_xdmf() const {
           << vertices_ << "\" NumberType=\"Int\" Precision=\"8\" Format=\"HDF\">" << h5
           << ":/meshes/vertices</DataItem>\n    </DataItem>\n   </Topology>\n";
       }
-      x << "   <Geometry GeometryType=\"XY\">\n    <DataItem Dimensions=\"" << g.points
-        << " 2\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << base << g.grid
+      x << "   <Geometry GeometryType=\"" << (g.dim == 2 ? "XY" : "XYZ")
+        << "\">\n    <DataItem Dimensions=\"" << g.points << " " << g.dim
+        << "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << base << g.grid
         << "/position</DataItem>\n   </Geometry>\n";
       for (const auto& [name, components] : g.fields) {
         x << "   <Attribute Name=\"" << name << "\" AttributeType=\""

@@ -1,5 +1,5 @@
 #pragma once
-// fields.h5 + fields.xmf: a time series of grids (particle clouds and T6 meshes) that ParaView
+// fields.h5 + fields.xmf: a time series of grids (particle clouds, T6 and T10 meshes) that ParaView
 // opens through the XDMF file. Each finished frame is flushed to disk and the XDMF rewritten
 // (to a temporary name, then renamed), so a killed run leaves every finished frame readable and
 // the XDMF names only datasets that exist. A full disk stops the run between frames (each frame
@@ -12,12 +12,15 @@
 // others and rewrites the XDMF; groups track creation order so the index comes out the same.
 //
 // HDF5 layout:
-//   /meshes/<grid>/t6            int64 [elements x 6], written once per mesh grid
+//   /meshes/<grid>/t6            int64 [elements x 6], written once per 2-D mesh grid (Triangle_6)
+//   /meshes/<grid>/t10           int64 [elements x 10], once per 3-D mesh grid (Tetrahedron_10):
+//                                edge nodes in XDMF/VTK order 0-1, 1-2, 2-0, 0-3, 1-3, 2-3 (Gmsh's
+//                                last two, 3-2 and 3-1, swapped)
 //   /meshes/vertices             int64 [n]: 0 .. n-1, n the largest particle count so far; a
 //                                particle grid's vertex cells (XDMF Polyvertex, one node each)
 //   /frames/<k>                  attribute `time` (s)
-//   /frames/<k>/<grid>/position  float64 [points x 2]
-//   /frames/<k>/<grid>/<field>   float64 [points] or [points x 2]
+//   /frames/<k>/<grid>/position  float64 [points x D], D = 2 (XDMF XY) or 3 (XYZ)
+//   /frames/<k>/<grid>/<field>   float64 [points] or [points x components]
 #include "fsi/core/types.hpp"
 
 #include <cstdint>
@@ -29,7 +32,7 @@ namespace fsi::app {
 
 struct GridField {
   std::string name;
-  int components = 1;           ///< 1 (scalar) or 2 (vector)
+  int components = 1;           ///< 1 (scalar), 2 or 3 (vector)
   const double* data = nullptr; ///< points x components, row-major
 };
 
@@ -50,11 +53,15 @@ public:
 
   /// Declares a T6 mesh grid; connectivity is 6 node indices per element.
   void add_mesh(const std::string& grid, const std::vector<std::int64_t>& t6);
+  /// Declares a T10 mesh grid: 10 node indices per element in Gmsh's order (structure_fem's
+  /// shape_t10.hpp), stored in XDMF's Tetrahedron_10 order.
+  void add_mesh_t10(const std::string& grid, const std::vector<std::int64_t>& t10);
 
   void begin_frame(double time);
-  /// Writes one grid of the current frame: points (x, y interleaved) and its fields.
-  void write_grid(const std::string& grid, const std::vector<double>& xy,
-                  const std::vector<GridField>& fields);
+  /// Writes one grid of the current frame: points (dim = 2 or 3 coordinates interleaved) and
+  /// its fields.
+  void write_grid(const std::string& grid, const std::vector<double>& points,
+                  const std::vector<GridField>& fields, int dim = 2);
   /// Flushes the HDF5 file and rewrites the XDMF index.
   void end_frame();
 
@@ -65,6 +72,7 @@ private:
     std::string grid;
     std::size_t points = 0;
     std::vector<std::pair<std::string, int>> fields;
+    int dim = 2;
   };
   struct FrameRecord {
     double time = 0.0;
@@ -73,7 +81,10 @@ private:
   struct MeshRecord {
     std::string grid;
     std::size_t elements = 0;
+    int nodes = 6; ///< 6 (T6) or 10 (T10)
   };
+  void declare_mesh(const std::string& grid, const std::vector<std::int64_t>& connectivity,
+                    int nodes);
   void write_xdmf() const;
   /// Runs `body`; after any exception the file is broken and every later call throws.
   template <class F> void guarded(F&& body);
