@@ -8,7 +8,8 @@
 
 namespace fsi::coupling {
 
-void visit_options(CouplingOptions& o, const Registry& r, OptionVisitor& v) {
+template <int D>
+void visit_options(CouplingOptions& o, const BasicRegistry<D>& r, OptionVisitor& v) {
   v.name("scheme", o.scheme, r.scheme_names(), "coupling scheme");
   v.name("predictor", o.predictor, r.predictor_names(),
          "first guess of the interface at t^{n+1} (eqs. 63-65)");
@@ -74,14 +75,16 @@ public:
 
 } // namespace
 
-std::vector<OptionDeclaration> option_declarations(const Registry& registry) {
+template <int D>
+std::vector<OptionDeclaration> option_declarations(const BasicRegistry<D>& registry) {
   CouplingOptions defaults;
   Declarations d;
   visit_options(defaults, registry, d);
   return d.out;
 }
 
-void validate_options(const CouplingOptions& options, const Registry& registry) {
+template <int D>
+void validate_options(const CouplingOptions& options, const BasicRegistry<D>& registry) {
   CouplingOptions o = options; // the visitor takes fields by reference; nothing is changed
   RangeChecker v("coupling.");
   visit_options(o, registry, v);
@@ -89,5 +92,13 @@ void validate_options(const CouplingOptions& options, const Registry& registry) 
     throw InputError("coupling.tolerance: value " + text(o.tolerance) +
                      " is out of range: the relative measure needs a tolerance below 1");
 }
+
+#define FSI_COUPLING_OPTIONS(D)                                                                    \
+  template void visit_options(CouplingOptions&, const BasicRegistry<D>&, OptionVisitor&);          \
+  template std::vector<OptionDeclaration> option_declarations(const BasicRegistry<D>&);            \
+  template void validate_options(const CouplingOptions&, const BasicRegistry<D>&);
+FSI_COUPLING_OPTIONS(2)
+FSI_COUPLING_OPTIONS(3)
+#undef FSI_COUPLING_OPTIONS
 
 } // namespace fsi::coupling

@@ -31,7 +31,9 @@ const typename Map::mapped_type& find(const Map& map, std::string_view name, con
   throw InputError(s.str());
 }
 
-void check_participants(const std::string& scheme, const SchemeNeeds& n, const Participants& p) {
+template <int D>
+void check_participants(const std::string& scheme, const SchemeNeeds& n,
+                        const BasicParticipants<D>& p) {
   const auto missing = [&](bool needed, bool given, const char* what) {
     if (needed && !given) throw InputError("coupling.scheme: '" + scheme + "' needs " + what);
   };
@@ -45,82 +47,97 @@ void check_participants(const std::string& scheme, const SchemeNeeds& n, const P
 
 } // namespace
 
-void Registry::add_scheme(std::string name, std::string doc, SchemeNeeds needs,
-                          SchemeFactory factory) {
+template <int D>
+void BasicRegistry<D>::add_scheme(std::string name, std::string doc, SchemeNeeds needs,
+                                  SchemeFactory factory) {
   schemes_[std::move(name)] = {std::move(doc), std::move(factory), needs};
 }
 
-SchemeNeeds Registry::scheme_needs(std::string_view name) const {
+template <int D> SchemeNeeds BasicRegistry<D>::scheme_needs(std::string_view name) const {
   return find(schemes_, name, "scheme", scheme_names()).needs;
 }
-void Registry::add_acceleration(std::string name, std::string doc, AccelerationFactory factory) {
+template <int D>
+void BasicRegistry<D>::add_acceleration(std::string name, std::string doc,
+                                        AccelerationFactory factory) {
   accelerations_[std::move(name)] = {std::move(doc), std::move(factory)};
 }
-void Registry::add_predictor(std::string name, std::string doc, PredictorFactory factory) {
+template <int D>
+void BasicRegistry<D>::add_predictor(std::string name, std::string doc, PredictorFactory factory) {
   predictors_[std::move(name)] = {std::move(doc), std::move(factory)};
 }
-void Registry::add_measure(std::string name, std::string doc, MeasureFactory factory) {
+template <int D>
+void BasicRegistry<D>::add_measure(std::string name, std::string doc, MeasureFactory factory) {
   measures_[std::move(name)] = {std::move(doc), std::move(factory)};
 }
 
-std::unique_ptr<CouplingScheme> Registry::make_scheme(const CouplingOptions& options,
-                                                      const Participants& participants) const {
+template <int D>
+std::unique_ptr<BasicCouplingScheme<D>>
+BasicRegistry<D>::make_scheme(const CouplingOptions& options,
+                              const BasicParticipants<D>& participants) const {
   validate_options(options, *this);
   const auto& entry = find(schemes_, options.scheme, "scheme", scheme_names());
   check_participants(options.scheme, entry.needs, participants);
   return entry.factory(options, participants, *this);
 }
 
-std::unique_ptr<Acceleration> Registry::make_acceleration(std::string_view name,
-                                                          const CouplingOptions& options) const {
+template <int D>
+std::unique_ptr<Acceleration>
+BasicRegistry<D>::make_acceleration(std::string_view name, const CouplingOptions& options) const {
   return find(accelerations_, name, "acceleration", acceleration_names()).factory(options);
 }
 
-std::unique_ptr<Predictor> Registry::make_predictor(std::string_view name,
-                                                    const CouplingOptions& options) const {
+template <int D>
+std::unique_ptr<BasicPredictor<D>>
+BasicRegistry<D>::make_predictor(std::string_view name, const CouplingOptions& options) const {
   return find(predictors_, name, "predictor", predictor_names()).factory(options);
 }
 
-std::unique_ptr<ConvergenceMeasure> Registry::make_measure(std::string_view name,
-                                                           const CouplingOptions& options) const {
+template <int D>
+std::unique_ptr<ConvergenceMeasure>
+BasicRegistry<D>::make_measure(std::string_view name, const CouplingOptions& options) const {
   return find(measures_, name, "convergence", measure_names()).factory(options);
 }
 
-void register_builtin_components(Registry& r) {
+template class BasicRegistry<2>;
+template class BasicRegistry<3>;
+
+template <int D> void register_builtin_components(BasicRegistry<D>& r) {
+  using Options = CouplingOptions;
+  using Given = BasicParticipants<D>;
+  using Reg = BasicRegistry<D>;
   // Schemes. css and bgs are one serial scheme; an acceleration makes it implicit.
   const SchemeNeeds serial{true, true, false, false};
   r.add_scheme("css", "conventional serial staggered: predict, F, loads, S; one evaluation", serial,
-               [](const CouplingOptions& o, const Participants& p, const Registry& reg) {
-                 SchemeComponents c;
+               [](const Options& o, const Given& p, const Reg& reg) {
+                 BasicSchemeComponents<D> c;
                  c.predictor = reg.make_predictor(o.predictor, o);
-                 return std::make_unique<SerialScheme>("css", o, *p.fluid, *p.structure,
-                                                       std::move(c));
+                 return std::make_unique<BasicSerialScheme<D>>("css", o, *p.fluid, *p.structure,
+                                                               std::move(c));
                });
   r.add_scheme("bgs", "block Gauss-Seidel iterations within the step (eqs. 68-69), accelerated",
-               serial, [](const CouplingOptions& o, const Participants& p, const Registry& reg) {
-                 SchemeComponents c;
+               serial, [](const Options& o, const Given& p, const Reg& reg) {
+                 BasicSchemeComponents<D> c;
                  c.predictor = reg.make_predictor(o.predictor, o);
                  c.acceleration = reg.make_acceleration(o.acceleration, o);
                  c.measures.push_back(reg.make_measure(o.convergence, o));
                  if (o.converge_velocities)
                    c.measures.push_back(reg.make_measure(o.convergence, o));
-                 return std::make_unique<SerialScheme>("bgs", o, *p.fluid, *p.structure,
-                                                       std::move(c));
+                 return std::make_unique<BasicSerialScheme<D>>("bgs", o, *p.fluid, *p.structure,
+                                                               std::move(c));
                });
-  r.add_scheme(
-      "one_way_fluid", "fluid against a prescribed interface motion", {true, false, true, false},
-      [](const CouplingOptions& o, const Participants& p, const Registry& reg) {
-        SchemeComponents c;
-        c.predictor = reg.make_predictor("none", o);
-        return std::make_unique<OneWayFluidScheme>(o, *p.fluid, p.prescribed_motion, std::move(c));
-      });
-  r.add_scheme("one_way_structure", "structure under prescribed (recorded) interface loads",
-               {false, true, false, true},
-               [](const CouplingOptions& o, const Participants& p, const Registry& reg) {
-                 SchemeComponents c;
+  r.add_scheme("one_way_fluid", "fluid against a prescribed interface motion",
+               {true, false, true, false}, [](const Options& o, const Given& p, const Reg& reg) {
+                 BasicSchemeComponents<D> c;
                  c.predictor = reg.make_predictor("none", o);
-                 return std::make_unique<OneWayStructureScheme>(o, *p.structure, p.prescribed_loads,
-                                                                std::move(c));
+                 return std::make_unique<BasicOneWayFluidScheme<D>>(
+                     o, *p.fluid, p.prescribed_motion, std::move(c));
+               });
+  r.add_scheme("one_way_structure", "structure under prescribed (recorded) interface loads",
+               {false, true, false, true}, [](const Options& o, const Given& p, const Reg& reg) {
+                 BasicSchemeComponents<D> c;
+                 c.predictor = reg.make_predictor("none", o);
+                 return std::make_unique<BasicOneWayStructureScheme<D>>(
+                     o, *p.structure, p.prescribed_loads, std::move(c));
                });
 
   // Accelerations.
@@ -140,9 +157,10 @@ void register_builtin_components(Registry& r) {
 
   // Predictors.
   r.add_predictor("none", "keep x^n, v^n, a^n",
-                  [](const CouplingOptions&) { return std::make_unique<NoPredictor>(); });
-  r.add_predictor("second_order", "Newmark-consistent extrapolation with a^ = a^n (eqs. 63-65)",
-                  [](const CouplingOptions&) { return std::make_unique<SecondOrderPredictor>(); });
+                  [](const CouplingOptions&) { return std::make_unique<BasicNoPredictor<D>>(); });
+  r.add_predictor(
+      "second_order", "Newmark-consistent extrapolation with a^ = a^n (eqs. 63-65)",
+      [](const CouplingOptions&) { return std::make_unique<BasicSecondOrderPredictor<D>>(); });
 
   // Convergence measures.
   r.add_measure("relative", "||r^i|| / ||r^0|| < tolerance (eq. 69)", [](const CouplingOptions& o) {
@@ -153,35 +171,23 @@ void register_builtin_components(Registry& r) {
   });
 }
 
-const Registry& builtin_registry() {
-  static const Registry registry = [] {
-    Registry r;
+template <int D> const BasicRegistry<D>& builtin_registry() {
+  static const BasicRegistry<D> registry = [] {
+    BasicRegistry<D> r;
     register_builtin_components(r);
     return r;
   }();
   return registry;
 }
 
-std::unique_ptr<CouplingScheme> make_scheme(const CouplingOptions& options,
-                                            const Participants& participants) {
-  return builtin_registry().make_scheme(options, participants);
-}
-
-std::unique_ptr<CouplingScheme> make_scheme(const CouplingOptions& options, FluidSolver& fluid,
-                                            StructureSolver& structure) {
-  Participants p;
-  p.fluid = &fluid;
-  p.structure = &structure;
-  return make_scheme(options, p);
-}
+template void register_builtin_components(Registry&);
+template void register_builtin_components(Registry3&);
+template const Registry& builtin_registry<2>();
+template const Registry3& builtin_registry<3>();
 
 std::unique_ptr<Acceleration> make_acceleration(std::string_view name,
                                                 const CouplingOptions& options) {
   return builtin_registry().make_acceleration(name, options);
-}
-
-std::unique_ptr<Predictor> make_predictor(std::string_view name, const CouplingOptions& options) {
-  return builtin_registry().make_predictor(name, options);
 }
 
 } // namespace fsi::coupling

@@ -10,33 +10,38 @@
 
 namespace fsi::coupling {
 
-Eigen::VectorXd pack(const InterfaceMotion& m) {
+template <int D> Eigen::VectorXd pack(const BasicInterfaceMotion<D>& m) {
   const auto n = static_cast<Eigen::Index>(m.size());
-  Eigen::VectorXd z(6 * n);
+  Eigen::VectorXd z(3 * D * n);
   for (Eigen::Index i = 0; i < n; ++i) {
     const auto k = static_cast<std::size_t>(i);
-    z.segment<2>(2 * i) = m.x[k];
-    z.segment<2>(2 * n + 2 * i) = m.v[k];
-    z.segment<2>(4 * n + 2 * i) = m.a[k];
+    z.segment<D>(D * i) = m.x[k];
+    z.segment<D>(D * n + D * i) = m.v[k];
+    z.segment<D>(2 * D * n + D * i) = m.a[k];
   }
   return z;
 }
 
-InterfaceMotion unpack(const Eigen::VectorXd& z) {
-  assert(z.size() % 6 == 0);
-  const Eigen::Index n = z.size() / 6;
-  InterfaceMotion m = InterfaceMotion::zeros(static_cast<std::size_t>(n));
+template <int D> BasicInterfaceMotion<D> unpack(const Eigen::VectorXd& z) {
+  assert(z.size() % (3 * D) == 0);
+  const Eigen::Index n = z.size() / (3 * D);
+  auto m = BasicInterfaceMotion<D>::zeros(static_cast<std::size_t>(n));
   for (Eigen::Index i = 0; i < n; ++i) {
     const auto k = static_cast<std::size_t>(i);
-    m.x[k] = z.segment<2>(2 * i);
-    m.v[k] = z.segment<2>(2 * n + 2 * i);
-    m.a[k] = z.segment<2>(4 * n + 2 * i);
+    m.x[k] = z.segment<D>(D * i);
+    m.v[k] = z.segment<D>(D * n + D * i);
+    m.a[k] = z.segment<D>(2 * D * n + D * i);
   }
   return m;
 }
 
-Eigen::VectorXd coupling_scale(std::size_t n, double dt) {
-  const auto m = static_cast<Eigen::Index>(2 * n);
+template Eigen::VectorXd pack(const InterfaceMotion&);
+template Eigen::VectorXd pack(const InterfaceMotion3&);
+template InterfaceMotion unpack<2>(const Eigen::VectorXd&);
+template InterfaceMotion3 unpack<3>(const Eigen::VectorXd&);
+
+template <int D> Eigen::VectorXd coupling_scale(std::size_t n, double dt) {
+  const auto m = static_cast<Eigen::Index>(D * n);
   Eigen::VectorXd s(3 * m);
   s.head(m).setOnes();
   s.segment(m, m).setConstant(dt);
@@ -44,9 +49,12 @@ Eigen::VectorXd coupling_scale(std::size_t n, double dt) {
   return s;
 }
 
+template Eigen::VectorXd coupling_scale<2>(std::size_t, double);
+template Eigen::VectorXd coupling_scale<3>(std::size_t, double);
+
 namespace {
 
-bool all_finite(const InterfaceMotion& m) {
+template <int D> bool all_finite(const BasicInterfaceMotion<D>& m) {
   for (std::size_t i = 0; i < m.size(); ++i)
     if (!m.x[i].allFinite() || !m.v[i].allFinite() || !m.a[i].allFinite()) return false;
   return true;
@@ -54,33 +62,35 @@ bool all_finite(const InterfaceMotion& m) {
 
 } // namespace
 
-CouplingScheme::CouplingScheme(std::string name, const CouplingOptions& options,
-                               SchemeComponents components)
+template <int D>
+BasicCouplingScheme<D>::BasicCouplingScheme(std::string name, const CouplingOptions& options,
+                                            BasicSchemeComponents<D> components)
     : options_(options), name_(std::move(name)), components_(std::move(components)) {
   assert(components_.predictor != nullptr);
   assert(components_.acceleration == nullptr || !components_.measures.empty());
 }
 
-void CouplingScheme::initialize(double t0) {
+template <int D> void BasicCouplingScheme<D>::initialize(double t0) {
   state_ = initialize_participants(t0);
   n_nodes_ = state_.size();
   check_sizes(state_, "initial interface motion");
-  loads_ = InterfaceLoads::zeros(n_nodes_);
+  loads_ = Loads::zeros(n_nodes_);
   step_index_ = 0;
   summary_ = {};
   initialized_ = true;
 }
 
-void CouplingScheme::finalize() {
+template <int D> void BasicCouplingScheme<D>::finalize() {
   if (initialized_) finalize_participants();
   initialized_ = false;
 }
 
-InterfaceMotion CouplingScheme::first_input(double /*t*/, double dt) {
+template <int D>
+BasicInterfaceMotion<D> BasicCouplingScheme<D>::first_input(double /*t*/, double dt) {
   return components_.predictor->predict(state_, dt);
 }
 
-void CouplingScheme::check_sizes(const InterfaceMotion& m, const char* what) const {
+template <int D> void BasicCouplingScheme<D>::check_sizes(const Motion& m, const char* what) const {
   if (m.x.size() == n_nodes_ && m.v.size() == n_nodes_ && m.a.size() == n_nodes_) return;
   std::ostringstream s;
   s << "coupling (" << name_ << "): step " << step_index_ << ": " << what << " has x/v/a sizes "
@@ -89,7 +99,7 @@ void CouplingScheme::check_sizes(const InterfaceMotion& m, const char* what) con
   throw RunError(s.str());
 }
 
-void CouplingScheme::advance(double t, double dt) {
+template <int D> void BasicCouplingScheme<D>::advance(double t, double dt) {
   assert(initialized_ && "CouplingScheme::advance before initialize");
   if (!(dt > 0.0) || !std::isfinite(dt)) {
     std::ostringstream s;
@@ -105,15 +115,15 @@ void CouplingScheme::advance(double t, double dt) {
   Acceleration* acceleration = components_.acceleration.get();
   const bool iterate = acceleration != nullptr;
 
-  InterfaceMotion input = first_input(t, dt);
+  Motion input = first_input(t, dt);
   check_sizes(input, "first interface input");
   if (iterate) {
     save_checkpoint();
-    acceleration->begin_step(coupling_scale(n_nodes_, dt));
+    acceleration->begin_step(coupling_scale<D>(n_nodes_, dt));
     for (auto& m : components_.measures) m->begin_step();
   }
 
-  InterfaceMotion output;
+  Motion output;
   bool converged = true;
   std::size_t worst = 0; // interface node with the largest position residual, for messages
   for (int it = 0;; ++it) {
@@ -149,7 +159,7 @@ void CouplingScheme::advance(double t, double dt) {
     Eigen::VectorXd next;
     acceleration->update(pack(input), pack(output), next);
     step_.omega = acceleration->relaxation();
-    input = unpack(next);
+    input = unpack<D>(next);
   }
   if (iterate) acceleration->end_step(converged);
   state_ = std::move(output);
@@ -176,21 +186,22 @@ void CouplingScheme::advance(double t, double dt) {
   }
 }
 
-const InterfaceLoads&
-CouplingScheme::run_fluid(FluidSolver& fluid, double t, double dt,
-                          const std::function<InterfaceMotion(double s)>& motion_at) {
+template <int D>
+const BasicInterfaceLoads<D>&
+BasicCouplingScheme<D>::run_fluid(Fluid& fluid, double t, double dt,
+                                  const std::function<Motion(double s)>& motion_at) {
   const int m = options_.substeps;
   const double dts = dt / m;
-  InterfaceLoads sum = InterfaceLoads::zeros(n_nodes_);
+  Loads sum = Loads::zeros(n_nodes_);
   for (int k = 1; k <= m; ++k) {
     const double s = static_cast<double>(k) / static_cast<double>(m); // exactly 1 at k = m
-    const InterfaceMotion motion = motion_at(s);
+    const Motion motion = motion_at(s);
     check_sizes(motion, "fluid interface input");
     time_fluid([&] {
       fluid.set_interface_motion(motion);
       fluid.advance(t + (k - 1) * dts, dts);
     });
-    const InterfaceLoads& f = fluid.interface_loads();
+    const Loads& f = fluid.interface_loads();
     if (f.size() != n_nodes_) {
       std::ostringstream e;
       e << "coupling (" << name_ << "): step " << step_index_ << ": fluid returned " << f.size()
@@ -208,9 +219,11 @@ CouplingScheme::run_fluid(FluidSolver& fluid, double t, double dt,
   return loads_;
 }
 
-InterfaceMotion CouplingScheme::run_structure(StructureSolver& structure,
-                                              const InterfaceLoads& loads, double t, double dt) {
-  InterfaceMotion out;
+template <int D>
+BasicInterfaceMotion<D> BasicCouplingScheme<D>::run_structure(Structure& structure,
+                                                              const Loads& loads, double t,
+                                                              double dt) {
+  Motion out;
   time_structure([&] {
     structure.set_interface_loads(loads);
     structure.advance(t, dt);
@@ -219,15 +232,17 @@ InterfaceMotion CouplingScheme::run_structure(StructureSolver& structure,
   return out;
 }
 
-InterfaceMotion CouplingScheme::serial_evaluate(FluidSolver& fluid, StructureSolver& structure,
-                                                double t, double dt, const InterfaceMotion& input) {
+template <int D>
+BasicInterfaceMotion<D> BasicCouplingScheme<D>::serial_evaluate(Fluid& fluid, Structure& structure,
+                                                                double t, double dt,
+                                                                const Motion& input) {
   // Sub-step k of m sees (1 - k/m) x^n + (k/m) x^{n+1}, the same for v and a (linear in time).
-  const InterfaceLoads& loads = run_fluid(
+  const Loads& loads = run_fluid(
       fluid, t, dt, [&](double s) { return s == 1.0 ? input : interpolate(state_, input, s); });
   return run_structure(structure, loads, t, dt);
 }
 
-void CouplingScheme::write_state(StateArchive& a) const {
+template <int D> void BasicCouplingScheme<D>::write_state(StateArchive& a) const {
   a.put_integer("coupling/step", step_index_);
   a.put("coupling/state/x", flatten(state_.x));
   a.put("coupling/state/v", flatten(state_.v));
@@ -242,14 +257,14 @@ void CouplingScheme::write_state(StateArchive& a) const {
   write_participants(a);
 }
 
-void CouplingScheme::read_state(const StateArchive& a) {
+template <int D> void BasicCouplingScheme<D>::read_state(const StateArchive& a) {
   assert(initialized_ && "CouplingScheme::read_state before initialize");
-  const std::size_t n = 2 * n_nodes_;
+  const std::size_t n = D * n_nodes_;
   step_index_ = a.integer("coupling/step");
-  state_.x = unflatten(a.reals("coupling/state/x", n));
-  state_.v = unflatten(a.reals("coupling/state/v", n));
-  state_.a = unflatten(a.reals("coupling/state/a", n));
-  loads_.f = unflatten(a.reals("coupling/loads", n));
+  state_.x = unflatten<D>(a.reals("coupling/state/x", n));
+  state_.v = unflatten<D>(a.reals("coupling/state/v", n));
+  state_.a = unflatten<D>(a.reals("coupling/state/a", n));
+  loads_.f = unflatten<D>(a.reals("coupling/loads", n));
   const auto& counts = a.integers("coupling/summary/counts", 4);
   const auto& seconds = a.reals("coupling/summary/seconds", 3);
   summary_.steps = counts[0];
@@ -262,5 +277,8 @@ void CouplingScheme::read_state(const StateArchive& a) {
   if (components_.acceleration) components_.acceleration->read_state(a, "coupling/acceleration/");
   read_participants(a);
 }
+
+template class BasicCouplingScheme<2>;
+template class BasicCouplingScheme<3>;
 
 } // namespace fsi::coupling

@@ -6,31 +6,39 @@
 
 namespace fsi::coupling {
 
-OneWayStructureScheme::OneWayStructureScheme(const CouplingOptions& options,
-                                             StructureSolver& structure, LoadFunction prescribed,
-                                             SchemeComponents components)
-    : CouplingScheme("one_way_structure", options, std::move(components)), structure_(structure),
-      prescribed_(std::move(prescribed)) {}
+template <int D>
+BasicOneWayStructureScheme<D>::BasicOneWayStructureScheme(const CouplingOptions& options,
+                                                          Structure& structure,
+                                                          BasicLoadFunction<D> prescribed,
+                                                          BasicSchemeComponents<D> components)
+    : BasicCouplingScheme<D>("one_way_structure", options, std::move(components)),
+      structure_(structure), prescribed_(std::move(prescribed)) {}
 
-InterfaceMotion OneWayStructureScheme::initialize_participants(double /*t0*/) {
-  time_structure([&] { structure_.initialize(); });
+template <int D>
+BasicInterfaceMotion<D> BasicOneWayStructureScheme<D>::initialize_participants(double /*t0*/) {
+  this->time_structure([&] { structure_.initialize(); });
   return structure_.interface_motion();
 }
 
-void OneWayStructureScheme::finalize_participants() {
+template <int D> void BasicOneWayStructureScheme<D>::finalize_participants() {
   structure_.finalize();
 }
 
-InterfaceMotion OneWayStructureScheme::evaluate(double t, double dt,
-                                                const InterfaceMotion& /*input*/) {
-  loads_ = prescribed_(t + dt);
-  if (loads_.size() != n_nodes_) {
+template <int D>
+BasicInterfaceMotion<D>
+BasicOneWayStructureScheme<D>::evaluate(double t, double dt,
+                                        const BasicInterfaceMotion<D>& /*input*/) {
+  this->loads_ = prescribed_(t + dt);
+  if (this->loads_.size() != this->n_nodes_) {
     std::ostringstream e;
     e << "coupling (one_way_structure): prescribed loads at t = " << t + dt << " s have "
-      << loads_.size() << " entries, expected " << n_nodes_ << " interface nodes";
+      << this->loads_.size() << " entries, expected " << this->n_nodes_ << " interface nodes";
     throw RunError(e.str());
   }
-  return run_structure(structure_, loads_, t, dt);
+  return this->run_structure(structure_, this->loads_, t, dt);
 }
+
+template class BasicOneWayStructureScheme<2>;
+template class BasicOneWayStructureScheme<3>;
 
 } // namespace fsi::coupling

@@ -4,10 +4,11 @@
 
 namespace fsi::coupling {
 
-StructureGroup::StructureGroup(std::vector<StructureSolver*> members)
+template <int D>
+BasicStructureGroup<D>::BasicStructureGroup(std::vector<BasicStructureSolver<D>*> members)
     : members_(std::move(members)) {}
 
-void StructureGroup::initialize() {
+template <int D> void BasicStructureGroup<D>::initialize() {
   offset_ = {0};
   for (auto* m : members_) {
     m->initialize();
@@ -15,7 +16,8 @@ void StructureGroup::initialize() {
   }
 }
 
-void StructureGroup::set_interface_loads(const InterfaceLoads& loads) {
+template <int D>
+void BasicStructureGroup<D>::set_interface_loads(const BasicInterfaceLoads<D>& loads) {
   assert(!offset_.empty() && "StructureGroup::set_interface_loads before initialize");
   assert(loads.size() == offset_.back());
   for (std::size_t j = 0; j < members_.size(); ++j) {
@@ -25,14 +27,14 @@ void StructureGroup::set_interface_loads(const InterfaceLoads& loads) {
   }
 }
 
-void StructureGroup::advance(double t, double dt) {
+template <int D> void BasicStructureGroup<D>::advance(double t, double dt) {
   for (auto* m : members_) m->advance(t, dt);
 }
 
-InterfaceMotion StructureGroup::interface_motion() const {
-  InterfaceMotion all;
+template <int D> BasicInterfaceMotion<D> BasicStructureGroup<D>::interface_motion() const {
+  BasicInterfaceMotion<D> all;
   for (const auto* m : members_) {
-    const InterfaceMotion one = m->interface_motion();
+    const BasicInterfaceMotion<D> one = m->interface_motion();
     all.x.insert(all.x.end(), one.x.begin(), one.x.end());
     all.v.insert(all.v.end(), one.v.begin(), one.v.end());
     all.a.insert(all.a.end(), one.a.begin(), one.a.end());
@@ -40,24 +42,27 @@ InterfaceMotion StructureGroup::interface_motion() const {
   return all;
 }
 
-void StructureGroup::save_state() {
+template <int D> void BasicStructureGroup<D>::save_state() {
   for (auto* m : members_) m->save_state();
 }
 
-void StructureGroup::restore_state() {
+template <int D> void BasicStructureGroup<D>::restore_state() {
   for (auto* m : members_) m->restore_state();
 }
 
-void StructureGroup::write_state(StateArchive& archive) const {
+template <int D> void BasicStructureGroup<D>::write_state(StateArchive& archive) const {
   for (const auto* m : members_) m->write_state(archive);
 }
 
-void StructureGroup::read_state(const StateArchive& archive) {
+template <int D> void BasicStructureGroup<D>::read_state(const StateArchive& archive) {
   for (auto* m : members_) m->read_state(archive);
 }
 
-void StructureGroup::finalize() {
+template <int D> void BasicStructureGroup<D>::finalize() {
   for (auto* m : members_) m->finalize();
 }
+
+template class BasicStructureGroup<2>;
+template class BasicStructureGroup<3>;
 
 } // namespace fsi::coupling

@@ -42,9 +42,13 @@ using InterfaceLoads = BasicInterfaceLoads<2>;
 using InterfaceLoads3 = BasicInterfaceLoads<3>;
 
 /// Prescribed interface motion at time t (one-way fluid runs).
-using MotionFunction = std::function<InterfaceMotion(double t)>;
+template <int D> using BasicMotionFunction = std::function<BasicInterfaceMotion<D>(double t)>;
+using MotionFunction = BasicMotionFunction<2>;
+using MotionFunction3 = BasicMotionFunction<3>;
 /// Prescribed interface loads at time t (one-way structure runs, e.g. recorded loads).
-using LoadFunction = std::function<InterfaceLoads(double t)>;
+template <int D> using BasicLoadFunction = std::function<BasicInterfaceLoads<D>(double t)>;
+using LoadFunction = BasicLoadFunction<2>;
+using LoadFunction3 = BasicLoadFunction<3>;
 
 /// (1 - s) a + s b, node by node, for x, v and a. Exact at the ends: s = 0 gives a, s = 1 gives b.
 template <int D>
@@ -78,28 +82,34 @@ public:
 };
 
 /// The fluid solver F (eq. 66): given the wall motion, advance and report the wall loads.
-class FluidSolver : public Participant {
+/// BasicFluidSolver<D> for D = 2 (FluidSolver) and 3 (FluidSolver3).
+template <int D> class BasicFluidSolver : public Participant {
 public:
   /// The interface (wall) state at the END of the step that the next advance() computes.
-  virtual void set_interface_motion(const InterfaceMotion& motion) = 0;
+  virtual void set_interface_motion(const BasicInterfaceMotion<D>& motion) = 0;
   /// Loads on the structure from the last advance(), projected to the interface nodes
   /// (eqs. 52-59). Valid until the next advance() or restore_state().
-  virtual const InterfaceLoads& interface_loads() const = 0;
+  virtual const BasicInterfaceLoads<D>& interface_loads() const = 0;
   /// Largest stable time step [s] if the solver has such a limit (CFL, viscous, ...).
   virtual std::optional<double> stable_dt() const { return std::nullopt; }
 };
+using FluidSolver = BasicFluidSolver<2>;
+using FluidSolver3 = BasicFluidSolver<3>;
 
 /// The structure solver S (eq. 67): given the interface loads, advance and report the interface
 /// motion.
 ///
 /// The motion predictor (eqs. 63-65) is not a solver duty: it is computed by the coupler from
-/// interface_motion() (see predictor.hpp).
-class StructureSolver : public Participant {
+/// interface_motion() (see predictor.hpp). BasicStructureSolver<D> for D = 2 (StructureSolver)
+/// and 3 (StructureSolver3).
+template <int D> class BasicStructureSolver : public Participant {
 public:
   /// Loads acting over the step that the next advance() computes (at its end, t + dt).
-  virtual void set_interface_loads(const InterfaceLoads& loads) = 0;
+  virtual void set_interface_loads(const BasicInterfaceLoads<D>& loads) = 0;
   /// Interface state after the last advance() (after initialize(): the initial state).
-  virtual InterfaceMotion interface_motion() const = 0;
+  virtual BasicInterfaceMotion<D> interface_motion() const = 0;
 };
+using StructureSolver = BasicStructureSolver<2>;
+using StructureSolver3 = BasicStructureSolver<3>;
 
 } // namespace fsi::coupling

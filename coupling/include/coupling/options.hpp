@@ -10,7 +10,7 @@
 
 namespace fsi::coupling {
 
-class Registry;
+template <int D> class BasicRegistry;
 
 struct CouplingOptions {
   /// Scheme by registry name: "css", "bgs", "one_way_fluid", "one_way_structure".
@@ -45,7 +45,9 @@ struct CouplingOptions {
 
 /// Calls `visitor` once per CouplingOptions field, in declaration order, with the field itself:
 /// the one declaration of every coupling option (names list the registry's entries).
-void visit_options(CouplingOptions& options, const Registry& registry, OptionVisitor& visitor);
+template <int D>
+void visit_options(CouplingOptions& options, const BasicRegistry<D>& registry,
+                   OptionVisitor& visitor);
 
 /// One option as declared: scene key coupling.<key>, default, allowed range, one-line doc.
 struct OptionDeclaration {
@@ -53,10 +55,20 @@ struct OptionDeclaration {
 };
 
 /// Every CouplingOptions field in declaration order; name ranges list the registry's names.
-std::vector<OptionDeclaration> option_declarations(const Registry& registry);
+template <int D>
+std::vector<OptionDeclaration> option_declarations(const BasicRegistry<D>& registry);
 
 /// Throws fsi::InputError (`coupling.KEY: value V is out of range R` or `unknown name`) for the
 /// first invalid field. Component names are checked against `registry`.
-void validate_options(const CouplingOptions& options, const Registry& registry);
+template <int D>
+void validate_options(const CouplingOptions& options, const BasicRegistry<D>& registry);
+
+// Instantiated for D = 2 and 3 in options.cpp.
+extern template void visit_options(CouplingOptions&, const BasicRegistry<2>&, OptionVisitor&);
+extern template void visit_options(CouplingOptions&, const BasicRegistry<3>&, OptionVisitor&);
+extern template std::vector<OptionDeclaration> option_declarations(const BasicRegistry<2>&);
+extern template std::vector<OptionDeclaration> option_declarations(const BasicRegistry<3>&);
+extern template void validate_options(const CouplingOptions&, const BasicRegistry<2>&);
+extern template void validate_options(const CouplingOptions&, const BasicRegistry<3>&);
 
 } // namespace fsi::coupling

@@ -8,11 +8,15 @@
 
 namespace fsi::coupling {
 
-class Predictor : public Method {
+/// BasicPredictor<D> for D = 2 (Predictor) and 3 (Predictor3).
+template <int D> class BasicPredictor : public Method {
 public:
   using Method::Method;
   /// Predicted interface state at t^n + dt from the accepted state `current` at t^n.
-  virtual InterfaceMotion predict(const InterfaceMotion& current, double dt) const = 0;
+  virtual BasicInterfaceMotion<D> predict(const BasicInterfaceMotion<D>& current,
+                                          double dt) const = 0;
 };
+using Predictor = BasicPredictor<2>;
+using Predictor3 = BasicPredictor<3>;
 
 } // namespace fsi::coupling

@@ -4,10 +4,15 @@
 
 namespace fsi::coupling {
 
-class NoPredictor final : public Predictor {
+template <int D> class BasicNoPredictor final : public BasicPredictor<D> {
 public:
-  NoPredictor() : Predictor("none") {}
-  InterfaceMotion predict(const InterfaceMotion& current, double dt) const override;
+  BasicNoPredictor() : BasicPredictor<D>("none") {}
+  BasicInterfaceMotion<D> predict(const BasicInterfaceMotion<D>& current,
+                                  double /*dt*/) const override {
+    return current;
+  }
 };
+using NoPredictor = BasicNoPredictor<2>;
+using NoPredictor3 = BasicNoPredictor<3>;
 
 } // namespace fsi::coupling

@@ -7,15 +7,22 @@
 
 namespace fsi::coupling {
 
-/// Eqs. 63-65 applied node by node.
-InterfaceMotion predict_second_order(const InterfaceMotion& current, double dt);
+/// Eqs. 63-65 applied node by node (D = 2 and 3).
+template <int D>
+BasicInterfaceMotion<D> predict_second_order(const BasicInterfaceMotion<D>& current, double dt);
 
-class SecondOrderPredictor final : public Predictor {
+extern template InterfaceMotion predict_second_order(const InterfaceMotion&, double);
+extern template InterfaceMotion3 predict_second_order(const InterfaceMotion3&, double);
+
+template <int D> class BasicSecondOrderPredictor final : public BasicPredictor<D> {
 public:
-  SecondOrderPredictor() : Predictor("second_order") {}
-  InterfaceMotion predict(const InterfaceMotion& current, double dt) const override {
+  BasicSecondOrderPredictor() : BasicPredictor<D>("second_order") {}
+  BasicInterfaceMotion<D> predict(const BasicInterfaceMotion<D>& current,
+                                  double dt) const override {
     return predict_second_order(current, dt);
   }
 };
+using SecondOrderPredictor = BasicSecondOrderPredictor<2>;
+using SecondOrderPredictor3 = BasicSecondOrderPredictor<3>;
 
 } // namespace fsi::coupling

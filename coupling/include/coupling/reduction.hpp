@@ -29,14 +29,15 @@ Eigen::VectorXd transposed_product(const Eigen::MatrixBase<Q>& q, const Eigen::M
 }
 
 /// sqrt(sum_k |a_k|^2) over interface nodes.
-inline double norm(const std::vector<Vec2>& a) {
+template <int D> double norm(const std::vector<VecD<D>>& a) {
   double sum = 0.0;
-  for (const Vec2& x : a) sum += x.squaredNorm();
+  for (const VecD<D>& x : a) sum += x.squaredNorm();
   return std::sqrt(sum);
 }
 
 /// sqrt(sum_k |a_k - b_k|^2) over interface nodes (a and b of equal size).
-inline double norm_of_difference(const std::vector<Vec2>& a, const std::vector<Vec2>& b) {
+template <int D>
+double norm_of_difference(const std::vector<VecD<D>>& a, const std::vector<VecD<D>>& b) {
   double sum = 0.0;
   for (std::size_t i = 0; i < a.size(); ++i) sum += (a[i] - b[i]).squaredNorm();
   return std::sqrt(sum);

@@ -2,6 +2,8 @@
 // Components chosen by name. A Registry maps names to factories; register_builtin_components()
 // is the one place that lists the built-in schemes, accelerations, predictors and measures.
 // A new component plugs in by one add_*() line there (or on a registry of one's own).
+// A registry is of one dimension, BasicRegistry<D> for D = 2 (Registry) and 3 (Registry3): its
+// scheme and predictor factories make objects of that dimension (docs/architecture.md).
 #include <functional>
 #include <map>
 #include <memory>
@@ -24,12 +26,13 @@ struct SchemeNeeds {
   bool prescribed_motion = false, prescribed_loads = false;
 };
 
-class Registry {
+template <int D> class BasicRegistry {
 public:
-  using SchemeFactory = std::function<std::unique_ptr<CouplingScheme>(
-      const CouplingOptions&, const Participants&, const Registry&)>;
+  using SchemeFactory = std::function<std::unique_ptr<BasicCouplingScheme<D>>(
+      const CouplingOptions&, const BasicParticipants<D>&, const BasicRegistry&)>;
   using AccelerationFactory = std::function<std::unique_ptr<Acceleration>(const CouplingOptions&)>;
-  using PredictorFactory = std::function<std::unique_ptr<Predictor>(const CouplingOptions&)>;
+  using PredictorFactory =
+      std::function<std::unique_ptr<BasicPredictor<D>>(const CouplingOptions&)>;
   using MeasureFactory = std::function<std::unique_ptr<ConvergenceMeasure>(const CouplingOptions&)>;
 
   /// Register a factory under `name` with a one-line description. Replaces an existing entry.
@@ -40,12 +43,12 @@ public:
 
   /// Build by name; unknown names throw fsi::InputError naming the key and the allowed names.
   /// make_scheme also validates the options and checks the participants the scheme needs.
-  std::unique_ptr<CouplingScheme> make_scheme(const CouplingOptions& options,
-                                              const Participants& participants) const;
+  std::unique_ptr<BasicCouplingScheme<D>>
+  make_scheme(const CouplingOptions& options, const BasicParticipants<D>& participants) const;
   std::unique_ptr<Acceleration> make_acceleration(std::string_view name,
                                                   const CouplingOptions& options) const;
-  std::unique_ptr<Predictor> make_predictor(std::string_view name,
-                                            const CouplingOptions& options) const;
+  std::unique_ptr<BasicPredictor<D>> make_predictor(std::string_view name,
+                                                    const CouplingOptions& options) const;
   std::unique_ptr<ConvergenceMeasure> make_measure(std::string_view name,
                                                    const CouplingOptions& options) const;
 
@@ -82,22 +85,46 @@ private:
   std::map<std::string, Entry<MeasureFactory>> measures_;
 };
 
+extern template class BasicRegistry<2>;
+extern template class BasicRegistry<3>;
+using Registry = BasicRegistry<2>;
+using Registry3 = BasicRegistry<3>;
+
 /// Fill `registry` with the built-in components:
 ///   schemes: css, bgs, one_way_fluid, one_way_structure
 ///   accelerations: none, constant, aitken, iqn-ils
 ///   predictors: none, second_order;  measures: relative, absolute.
-void register_builtin_components(Registry& registry);
+template <int D> void register_builtin_components(BasicRegistry<D>& registry);
 
-/// A registry filled once by register_builtin_components().
-const Registry& builtin_registry();
+/// The registry of dimension D filled once by register_builtin_components() (one per dimension).
+template <int D = 2> const BasicRegistry<D>& builtin_registry();
 
-/// Shorthands on builtin_registry().
-std::unique_ptr<CouplingScheme> make_scheme(const CouplingOptions& options,
-                                            const Participants& participants);
-std::unique_ptr<CouplingScheme> make_scheme(const CouplingOptions& options, FluidSolver& fluid,
-                                            StructureSolver& structure);
+/// Shorthands on builtin_registry<D>(); D from the participants (make_acceleration: any D).
+template <int D>
+std::unique_ptr<BasicCouplingScheme<D>> make_scheme(const CouplingOptions& options,
+                                                    const BasicParticipants<D>& participants) {
+  return builtin_registry<D>().make_scheme(options, participants);
+}
+template <int D>
+std::unique_ptr<BasicCouplingScheme<D>> make_scheme(const CouplingOptions& options,
+                                                    BasicFluidSolver<D>& fluid,
+                                                    BasicStructureSolver<D>& structure) {
+  BasicParticipants<D> p;
+  p.fluid = &fluid;
+  p.structure = &structure;
+  return make_scheme(options, p);
+}
 std::unique_ptr<Acceleration> make_acceleration(std::string_view name,
                                                 const CouplingOptions& options);
-std::unique_ptr<Predictor> make_predictor(std::string_view name, const CouplingOptions& options);
+template <int D = 2>
+std::unique_ptr<BasicPredictor<D>> make_predictor(std::string_view name,
+                                                  const CouplingOptions& options) {
+  return builtin_registry<D>().make_predictor(name, options);
+}
+
+extern template void register_builtin_components(Registry&);
+extern template void register_builtin_components(Registry3&);
+extern template const Registry& builtin_registry<2>();
+extern template const Registry3& builtin_registry<3>();
 
 } // namespace fsi::coupling

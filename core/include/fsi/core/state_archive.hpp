@@ -70,15 +70,17 @@ private:
   std::map<std::string, std::vector<std::int64_t>> integers_;
 };
 
-/// Vec2 arrays as interleaved x, y doubles and back.
-inline std::vector<double> flatten(const std::vector<Vec2>& v) {
-  std::vector<double> out(2 * v.size());
-  for (std::size_t i = 0; i < v.size(); ++i) out[2 * i] = v[i].x(), out[2 * i + 1] = v[i].y();
+/// VecD<D> arrays as interleaved x, y (, z) doubles and back (D = 2 when not given).
+template <int D> std::vector<double> flatten(const std::vector<VecD<D>>& v) {
+  std::vector<double> out(D * v.size());
+  for (std::size_t i = 0; i < v.size(); ++i)
+    for (int d = 0; d < D; ++d) out[D * i + static_cast<std::size_t>(d)] = v[i][d];
   return out;
 }
-inline std::vector<Vec2> unflatten(const std::vector<double>& v) {
-  std::vector<Vec2> out(v.size() / 2);
-  for (std::size_t i = 0; i < out.size(); ++i) out[i] = Vec2(v[2 * i], v[2 * i + 1]);
+template <int D = 2> std::vector<VecD<D>> unflatten(const std::vector<double>& v) {
+  std::vector<VecD<D>> out(v.size() / D);
+  for (std::size_t i = 0; i < out.size(); ++i)
+    for (int d = 0; d < D; ++d) out[i][d] = v[D * i + static_cast<std::size_t>(d)];
   return out;
 }
 

@@ -1,9 +1,0 @@
-#include "coupling/predictor_none.hpp"
-
-namespace fsi::coupling {
-
-InterfaceMotion NoPredictor::predict(const InterfaceMotion& current, double /*dt*/) const {
-  return current;
-}
-
-} // namespace fsi::coupling
