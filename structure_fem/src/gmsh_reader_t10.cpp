@@ -1,7 +1,7 @@
 // Gmsh .msh import of a T10 mesh: the 10-node tetrahedra checked one by one (the volume's sign
-// and size, det J of the curved map: the checks validate_mesh makes of T6 elements), unused
-// nodes, and the 6-node triangles of physical surfaces turned into faces oriented out of the
-// tetrahedron they bound.
+// and size, det J of the curved map: the checks validate_mesh makes of T6 elements), unused and
+// duplicate nodes, and the 6-node triangles of physical surfaces turned into faces oriented out of
+// the tetrahedron they bound.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -11,6 +11,7 @@
 
 #include <Eigen/Geometry>
 
+#include "duplicate_nodes.hpp"
 #include "fsi/core/error.hpp"
 #include "gmsh_sections.hpp"
 #include "structure_fem/element_t10.hpp"
@@ -41,11 +42,15 @@ void check_tetrahedron(const Parsed& p, const RawElement& el, const TetNodes& X,
                              "edge midpoint)");
 }
 
+/// The diagonal of the nodes' bounding box (no overflow at 1e160 m).
+double diagonal(const std::vector<Vec3>& X) {
+  Vec3 lo = X.empty() ? Vec3::Zero() : X[0], hi = lo;
+  for (const auto& x : X) lo = lo.cwiseMin(x), hi = hi.cwiseMax(x);
+  return std::hypot(hi.x() - lo.x(), hi.y() - lo.y(), hi.z() - lo.z());
+}
+
 /// The tetrahedra of the file, each checked; throws if there are none.
-void read_tetrahedra(const Parsed& p, TetMesh& mesh) {
-  Vec3 lo = p.X.empty() ? Vec3::Zero() : p.X[0], hi = lo;
-  for (const auto& x : p.X) lo = lo.cwiseMin(x), hi = hi.cwiseMax(x);
-  const double diag = std::hypot(hi.x() - lo.x(), hi.y() - lo.y(), hi.z() - lo.z());
+void read_tetrahedra(const Parsed& p, TetMesh& mesh, double diag) {
   bool triangles = false;
   for (const auto& el : p.elements) {
     triangles = triangles || el.type == p.boundary_type();
@@ -66,15 +71,21 @@ void read_tetrahedra(const Parsed& p, TetMesh& mesh) {
     throw InputError(p.path + ": the mesh has no T10 elements (10-node tetrahedra, type 11)");
 }
 
-/// A node no tetrahedron uses would be a free, massless dof.
-void check_used(const Parsed& p, const TetMesh& mesh) {
+/// Refuses a node no tetrahedron uses (a free, massless dof) and two nodes at the same place
+/// (within 1e-10 of the diagonal: the solid would be cut there), as validate_mesh does for T6.
+void check_nodes(const Parsed& p, const TetMesh& mesh, double diag) {
+  auto node = [&](std::size_t k) {
+    return (k < p.node_line.size() ? p.at(p.node_line[k]) : p.path + ": ") + "node " +
+           std::to_string(p.node_label[k]);
+  };
   std::vector<char> used(mesh.num_nodes(), 0);
   for (const auto& el : mesh.elements)
     for (int k : el) used[static_cast<std::size_t>(k)] = 1;
   for (std::size_t k = 0; k < used.size(); ++k)
-    if (!used[k])
-      throw InputError((k < p.node_line.size() ? p.at(p.node_line[k]) : p.path + ": ") + "node " +
-                       std::to_string(p.node_label[k]) + ": unused node (belongs to no element)");
+    if (!used[k]) throw InputError(node(k) + ": unused node (belongs to no element)");
+  if (const auto pair = duplicate_nodes(mesh.X, 1e-10 * diag))
+    throw InputError(node(pair->second) + ": duplicate node (same coordinates as node " +
+                     std::to_string(p.node_label[pair->first]) + ")");
 }
 
 /// The triangles of physical surfaces as faces of the tetrahedra, oriented out of them.
@@ -122,8 +133,9 @@ TetMesh read_gmsh_t10(std::istream& in, const std::string& path,
   TetMesh mesh;
   mesh.source = path;
   mesh.X = p.X;
-  read_tetrahedra(p, mesh);
-  check_used(p, mesh);
+  const double diag = diagonal(p.X);
+  read_tetrahedra(p, mesh, diag);
+  check_nodes(p, mesh, diag);
   read_faces(p, mesh);
   return mesh;
 }

@@ -281,6 +281,12 @@ TEST_CASE("fem: Gmsh T10 reader: bad meshes are refused with their file and line
   unused.X.emplace_back(2.0, 2.0, 2.0);
   CHECK(message_of_text(ascii41(unused)) ==
         "t.msh:48: node 15: unused node (belongs to no element)");
+  Fixture twice = two_tets();
+  twice.X.push_back(twice.X[0]); // node 15 at A, in element 2 and face "clamped" instead of 1
+  twice.elements[0].nodes[0] = 15;
+  twice.elements[3].nodes[0] = 15;
+  CHECK(message_of_text(ascii41(twice)) ==
+        "t.msh:48: node 15: duplicate node (same coordinates as node 1)");
 
   CHECK(message_of([] { read_gmsh_t10(gmsh_fixture("plate_41.msh")); }) ==
         gmsh_fixture("plate_41.msh") +

@@ -31,7 +31,7 @@ Mesh read_gmsh(std::istream& in, const std::string& path,
 /// accepted. Throws InputError as read_gmsh does, and for 4-node tetrahedra, a 2-D mesh (triangles
 /// and no tetrahedra), an inverted (negative volume) or zero-volume element, det J <= 0 inside
 /// an element (mid-node far from its edge midpoint), a tagged triangle that is not a face of
-/// exactly one tetrahedron, and a node no element uses.
+/// exactly one tetrahedron, a node no element uses and two nodes at the same place.
 TetMesh read_gmsh_t10(const std::string& path,
                       const std::vector<std::string>& required_groups = {});
 
