@@ -46,10 +46,15 @@ std::string override_input(const std::string& text) {
 }
 
 std::string gmsh_input(const std::string& text) {
-  return message_of([&] {
+  const std::string t6 = message_of([&] {
     std::istringstream in(text);
     fem::read_gmsh(in, "fuzz.msh");
   });
+  const std::string t10 = message_of([&] {
+    std::istringstream in(text);
+    fem::read_gmsh_t10(in, "fuzz.msh");
+  });
+  return well_formed("gmsh", t10) ? t6 : t10;
 }
 
 namespace {

@@ -1,7 +1,10 @@
 // Gmsh .msh import: the format line, the sections in file order (gmsh_sections.cpp), the required
-// physical groups, and the 3-node lines turned into boundary edges of the triangles they bound.
+// physical groups (both readers); the T6 mesh with the 3-node lines turned into boundary edges of
+// the triangles they bound (the T10 mesh: gmsh_reader_t10.cpp).
 #include "structure_fem/gmsh_reader.hpp"
 
+#include <algorithm>
+#include <array>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -14,21 +17,32 @@
 
 namespace fsi::fem {
 
-using gmsh::Lexer;
 using gmsh::Parsed;
-using gmsh::shown;
 
-Mesh read_gmsh(const std::string& path, const std::vector<std::string>& required_groups) {
+namespace gmsh {
+
+std::ifstream open_mesh_file(const std::string& path) {
   std::error_code ec;
   if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
     throw InputError(path + ": not a regular file (need a Gmsh .msh file)");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path + ": cannot open the mesh file");
-  return read_gmsh(in, path, required_groups);
+  return in;
 }
 
-Mesh read_gmsh(std::istream& in, const std::string& path,
-               const std::vector<std::string>& required_groups) {
+const std::vector<long>* Parsed::physicals(const RawElement& el) const {
+  if (msh22) return &el.physicals;
+  const auto it = entity_physicals.find({dim - 1, el.entity});
+  return it == entity_physicals.end() ? nullptr : &it->second;
+}
+
+std::string Parsed::boundary_name(long tag) const {
+  const auto name = physical_name.find({dim - 1, tag});
+  return name != physical_name.end() ? name->second : std::to_string(tag);
+}
+
+Parsed parse(std::istream& in, const std::string& path, int dim,
+             const std::vector<std::string>& required_groups) {
   std::string data{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
   Lexer lex(std::move(data), path);
   if (lex.blank()) throw InputError(path + ": empty file (need a Gmsh .msh file)");
@@ -57,22 +71,25 @@ Mesh read_gmsh(std::istream& in, const std::string& path,
   lex.expect("$EndMeshFormat");
 
   Parsed p;
-  p.mesh.source = path;
+  p.dim = dim;
+  p.path = path;
+  p.binary = lex.binary();
+  p.msh22 = msh22;
   bool have_nodes = false, have_elements = false;
   while (!lex.at_end()) {
     const std::string section = lex.token("a section");
     if (section == "$PhysicalNames") {
-      gmsh::read_physical_names(lex, p);
+      read_physical_names(lex, p);
     } else if (section == "$Entities" && !msh22) {
-      gmsh::read_entities_41(lex, p);
+      read_entities_41(lex, p);
     } else if (section == "$Nodes") {
       if (have_nodes) lex.fail("a second $Nodes section");
       have_nodes = true;
-      msh22 ? gmsh::read_nodes_22(lex, p) : gmsh::read_nodes_41(lex, p);
+      msh22 ? read_nodes_22(lex, p) : read_nodes_41(lex, p);
     } else if (section == "$Elements") {
       if (have_elements) lex.fail("a second $Elements section");
       have_elements = true;
-      msh22 ? gmsh::read_elements_22(lex, p) : gmsh::read_elements_41(lex, p);
+      msh22 ? read_elements_22(lex, p) : read_elements_41(lex, p);
     } else if (section.size() > 1 && section[0] == '$' && !lex.binary()) {
       const std::string end = "$End" + section.substr(1);
       while (lex.token(end) != end) {
@@ -87,7 +104,6 @@ Mesh read_gmsh(std::istream& in, const std::string& path,
   }
   if (!have_nodes) throw InputError(path + ": no $Nodes section");
   if (!have_elements) throw InputError(path + ": no $Elements section");
-  Mesh& mesh = p.mesh;
 
   std::set<std::string> names;
   for (const auto& [key, name] : p.physical_name) names.insert(name);
@@ -98,33 +114,51 @@ Mesh read_gmsh(std::istream& in, const std::string& path,
         for (const auto& n : names) all += (all.empty() ? "" : ", ") + n;
         return all.empty() ? std::string("none") : all;
       }() + ")");
+  return p;
+}
+
+} // namespace gmsh
+
+Mesh read_gmsh(const std::string& path, const std::vector<std::string>& required_groups) {
+  auto in = gmsh::open_mesh_file(path);
+  return read_gmsh(in, path, required_groups);
+}
+
+Mesh read_gmsh(std::istream& in, const std::string& path,
+               const std::vector<std::string>& required_groups) {
+  const Parsed p = gmsh::parse(in, path, 2, required_groups);
+  Mesh mesh;
+  mesh.source = path;
+  mesh.node_label = p.node_label;
+  for (const auto& x : p.X) mesh.X.emplace_back(x.x(), x.y());
+  MeshSourceLines lines;
+  lines.node_line = p.node_line;
+  for (const auto& el : p.elements) {
+    if (el.type != p.domain_type()) continue;
+    std::array<int, 6> nodes{};
+    std::copy(el.nodes.begin(), el.nodes.end(), nodes.begin());
+    mesh.elements.push_back(nodes);
+    mesh.element_label.push_back(el.tag);
+    if (!p.binary) lines.element_line.push_back(el.line);
+  }
 
   // 3-node lines become edges (corner, mid, corner), turned so that their triangle is on the left.
   std::map<std::pair<int, int>, int> side_of; // directed corner pair of a triangle side
   for (const auto& el : mesh.elements)
     for (int s = 0; s < 3; ++s)
       side_of[{el[static_cast<std::size_t>(s)], el[static_cast<std::size_t>((s + 1) % 3)]}] = 1;
-  for (const auto& raw : p.raw_lines) {
-    const std::vector<long>* physicals = &raw.physicals;
-    if (!msh22) {
-      const auto it = p.entity_physicals.find({1, raw.entity});
-      if (it == p.entity_physicals.end()) continue;
-      physicals = &it->second;
-    }
-    int a = p.node_index.at(raw.nodes[0]), b = p.node_index.at(raw.nodes[1]);
-    const int m = p.node_index.at(raw.nodes[2]);
+  for (const auto& raw : p.elements) {
+    const std::vector<long>* physicals = p.physicals(raw);
+    if (raw.type != p.boundary_type() || !physicals) continue;
+    int a = raw.nodes[0], b = raw.nodes[1];
+    const int m = raw.nodes[2];
     if (!side_of.count({a, b})) std::swap(a, b);
     if (!side_of.count({a, b}))
-      throw InputError((lex.binary() ? path + ": " : path + ":" + std::to_string(raw.line) + ": ") +
-                       "line element " + std::to_string(raw.tag) +
+      throw InputError(p.at(raw.line) + "line element " + std::to_string(raw.tag) +
                        " is not the side of any triangle");
-    for (long phys : *physicals) {
-      const auto name = p.physical_name.find({1, phys});
-      mesh.edges.push_back(
-          {{a, m, b}, name != p.physical_name.end() ? name->second : std::to_string(phys)});
-    }
+    for (long phys : *physicals) mesh.edges.push_back({{a, m, b}, p.boundary_name(phys)});
   }
-  validate_mesh(mesh, p.lines);
+  validate_mesh(mesh, lines);
   return mesh;
 }
 

@@ -1,47 +1,65 @@
 // The sections of a .msh file read into Parsed: physical names, entities, nodes and elements of
-// formats 4.1 and 2.2, each node and element checked as it is read (element type and order, the
-// plane z = 0, repeated and unknown tags).
+// formats 4.1 and 2.2, each node and element checked as it is read (element type and order for
+// the mesh's dimension, the plane z = 0 of a 2-D mesh, repeated and unknown tags).
 #include "gmsh_sections.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 
 namespace fsi::fem::gmsh {
 
 namespace {
 
-int nodes_per_element(Lexer& lex, long type, long tag) {
+/// The number of nodes of an element of Gmsh type `type` in a mesh of dimension `dim`; refuses
+/// the element types that cannot be read, saying how to mesh the geometry instead.
+int nodes_per_element(Lexer& lex, int dim, long type, long tag) {
   const std::string element = "element " + std::to_string(tag) + ": ";
+  const std::string remedy = "mesh with gmsh -" + std::to_string(dim) + " -order 2";
   switch (type) {
+  case 11:
+    if (dim == 3) return 10; // 10-node tetrahedron
+    break;
   case 9:
     return 6; // 6-node triangle
   case 8:
     return 3; // 3-node line
   case 15:
     return 1; // point
+  case 4:
+    if (dim == 3)
+      lex.fail(element +
+               "4-node tetrahedron (type 4): wrong element order, need 10-node "
+               "tetrahedra (type 11): " +
+               remedy);
+    break;
   case 2:
-    lex.fail(element + "3-node triangle (type 2): wrong element order, need second-order 6-node "
-                       "triangles (type 9): mesh with gmsh -2 -order 2");
+    lex.fail(element +
+             "3-node triangle (type 2): wrong element order, need second-order 6-node "
+             "triangles (type 9): " +
+             remedy);
   case 1:
-    lex.fail(element + "2-node line (type 1): wrong element order, need 3-node lines (type 8): "
-                       "mesh with gmsh -2 -order 2");
+    lex.fail(element +
+             "2-node line (type 1): wrong element order, need 3-node lines (type 8): " + remedy);
   case 3:
   case 10:
   case 16:
     lex.fail(element + "quadrangle (type " + std::to_string(type) +
-             "): need 6-node triangles (type 9): remove Recombine (Mesh.RecombineAll = 0) and "
-             "mesh with gmsh -2 -order 2");
+             "): need 6-node triangles (type 9): remove Recombine (Mesh.RecombineAll = 0) and " +
+             remedy);
   case 21:
   case 23:
   case 25:
     lex.fail(element + "triangle of order 3 or more (type " + std::to_string(type) +
-             "): need 6-node triangles (type 9): mesh with gmsh -2 -order 2");
+             "): need 6-node triangles (type 9): " + remedy);
   default:
-    lex.fail(element + "unsupported element type " + std::to_string(type) +
-             " (only 9, 8 and 15: a 2D mesh from gmsh -2 -order 2)");
+    break;
   }
+  lex.fail(element + "unsupported element type " + std::to_string(type) +
+           (dim == 2 ? " (only 9, 8 and 15: a 2D mesh from gmsh -2 -order 2)"
+                     : " (only 11, 9, 8 and 15: a 3D mesh from gmsh -3 -order 2)"));
 }
 
-/// A node's z: the mesh must lie in the plane z = 0.
+/// A node's z in a 2-D mesh: it must lie in the plane z = 0.
 void check_planar(Lexer& lex, long tag, double z) {
   if (std::abs(z) > 1e-12)
     lex.fail("node " + std::to_string(tag) + ": z = " + std::to_string(z) +
@@ -49,42 +67,40 @@ void check_planar(Lexer& lex, long tag, double z) {
 }
 
 void add_node(Lexer& lex, Parsed& p, long tag, double x, double y, double z, int at) {
-  check_planar(lex, tag, z);
-  const auto [it, fresh] = p.node_index.emplace(tag, static_cast<int>(p.mesh.X.size()));
+  if (p.dim == 2) check_planar(lex, tag, z);
+  const auto [it, fresh] = p.node_index.emplace(tag, static_cast<int>(p.X.size()));
   if (!fresh)
     throw InputError(lex.binary()
                          ? lex.where() + "node " + std::to_string(tag) + ": node tag given twice"
                          : lex.path() + ":" + std::to_string(at) + ": node " + std::to_string(tag) +
                                ": node tag given twice");
-  p.mesh.X.emplace_back(x, y);
-  p.mesh.node_label.push_back(tag);
-  if (!lex.binary()) p.lines.node_line.push_back(at);
+  p.X.emplace_back(x, y, z);
+  p.node_label.push_back(tag);
+  if (!lex.binary()) p.node_line.push_back(at);
 }
 
-/// One element of type `type` with its nodes (gmsh tags) read by `node`.
+/// One element of type `type` with its nodes (gmsh tags) read by `node`: kept if it is a domain
+/// or boundary element of the mesh's dimension.
 template <class Next>
 void add_element(Lexer& lex, Parsed& p, long type, long tag, long entity, int at, Next node,
-                 std::vector<long> physicals = {}, bool msh22 = false) {
-  const int nn = nodes_per_element(lex, type, tag);
-  std::array<long, 6> tags{};
+                 std::vector<long> physicals = {}) {
+  const int nn = nodes_per_element(lex, p.dim, type, tag);
+  std::vector<int> nodes;
   for (int k = 0; k < nn; ++k) {
-    tags[static_cast<std::size_t>(k)] = node();
-    if (!p.node_index.count(tags[static_cast<std::size_t>(k)]))
-      lex.fail("element " + std::to_string(tag) + ": unknown node " +
-               std::to_string(tags[static_cast<std::size_t>(k)]));
+    const long n = node();
+    const auto it = p.node_index.find(n);
+    if (it == p.node_index.end())
+      lex.fail("element " + std::to_string(tag) + ": unknown node " + std::to_string(n));
+    nodes.push_back(it->second);
   }
-  if (type == 9) {
-    std::array<long, 3> corners{tags[0], tags[1], tags[2]};
+  if (type == p.domain_type()) {
+    std::vector<int> corners(nodes.begin(), nodes.begin() + p.dim + 1);
     std::sort(corners.begin(), corners.end());
-    if (msh22 && !p.triangles.insert(corners).second) return; // the same triangle, another group
-    std::array<int, 6> el{};
-    for (std::size_t k = 0; k < 6; ++k) el[k] = p.node_index.at(tags[k]);
-    p.mesh.elements.push_back(el);
-    p.mesh.element_label.push_back(tag);
-    if (!lex.binary()) p.lines.element_line.push_back(at);
-  } else if (type == 8) {
-    p.raw_lines.push_back({{tags[0], tags[1], tags[2]}, tag, entity, at, std::move(physicals)});
+    if (p.msh22 && !p.domain_corners.insert(corners).second) return; // the same, another group
+  } else if (type != p.boundary_type()) {
+    return; // points, and lines of a 3-D mesh
   }
+  p.elements.push_back({type, tag, entity, at, std::move(nodes), std::move(physicals)});
 }
 
 /// The header of a msh 4.1 $Nodes or $Elements section (`what`: node or element): the number of
@@ -200,7 +216,7 @@ void read_elements_22(Lexer& lex, Parsed& p) {
     if (!tags.empty() && tags[0] != 0) physicals.push_back(std::abs(tags[0]));
     add_element(
         lex, p, type, tag, tags.size() > 1 ? tags[1] : 0, at,
-        [&] { return lex.integer("an element node"); }, physicals, true);
+        [&] { return lex.integer("an element node"); }, physicals);
   });
   lex.expect("$EndElements");
 }

@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <numeric>
 #include <sstream>
 #include <utility>
 
+#include "duplicate_nodes.hpp"
 #include "fsi/core/error.hpp"
 #include "structure_fem/element_t6.hpp"
 #include "structure_fem/tagged_boundary.hpp"
@@ -70,18 +70,11 @@ void validate_mesh(const Mesh& mesh, const MeshSourceLines& lines) {
   for (const auto& x : mesh.X) lo = lo.cwiseMin(x), hi = hi.cwiseMax(x);
   const double diag = std::hypot(hi.x() - lo.x(), hi.y() - lo.y()); // no overflow at 1e160 m
   const double tol = 1e-10 * diag;
-  std::vector<std::size_t> order(n_nodes);
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  std::sort(order.begin(), order.end(),
-            [&](auto a, auto b) { return mesh.X[a].x() < mesh.X[b].x(); });
-  for (std::size_t i = 0; i < n_nodes; ++i)
-    for (std::size_t j = i + 1; j < n_nodes && mesh.X[order[j]].x() - mesh.X[order[i]].x() <= tol;
-         ++j)
-      if ((mesh.X[order[j]] - mesh.X[order[i]]).norm() <= tol) {
-        const auto [a, b] = std::minmax(order[i], order[j]);
-        throw InputError(where(mesh, lines.node_line, b) + node_name(b) +
-                         ": duplicate node (same coordinates as " + node_name(a) + ")");
-      }
+  if (const auto pair = duplicate_nodes(mesh.X, tol)) {
+    const auto [a, b] = *pair;
+    throw InputError(where(mesh, lines.node_line, b) + node_name(b) +
+                     ": duplicate node (same coordinates as " + node_name(a) + ")");
+  }
 
   for (std::size_t e = 0; e < mesh.num_elements(); ++e) {
     ElementNodes X;

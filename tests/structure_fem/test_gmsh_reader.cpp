@@ -4,12 +4,12 @@
 
 #include <algorithm>
 #include <fstream>
-#include <functional>
 #include <iterator>
 #include <sstream>
 #include <string>
 
 #include "fsi/core/error.hpp"
+#include "input_error.hpp"
 #include "structure_fem/gmsh_reader.hpp"
 
 using namespace fsi::fem;
@@ -73,15 +73,6 @@ double mesh_area(const Mesh& mesh) {
     area += 0.5 * ((b - a).x() * (c - a).y() - (b - a).y() * (c - a).x());
   }
   return area;
-}
-
-std::string message_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const fsi::InputError& e) {
-    return e.what();
-  }
-  return "(no error)";
 }
 } // namespace
 

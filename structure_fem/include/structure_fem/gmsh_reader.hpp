@@ -1,11 +1,12 @@
 #pragma once
-// Gmsh .msh import of second-order triangle meshes: format 4.1 (ASCII and binary, `-bin`) and
-// ASCII 2.2 (`-format msh22`), as Gmsh writes them.
+// Gmsh .msh import of second-order triangle (2-D) and tetrahedron (3-D) meshes: format 4.1 (ASCII
+// and binary, `-bin`) and ASCII 2.2 (`-format msh22`), as Gmsh writes them.
 #include <istream>
 #include <string>
 #include <vector>
 
 #include "structure_fem/mesh.hpp"
+#include "structure_fem/mesh_t10.hpp"
 
 namespace fsi::fem {
 
@@ -22,5 +23,20 @@ Mesh read_gmsh(const std::string& path, const std::vector<std::string>& required
 /// The same from a stream; `path` names it in messages and in Mesh::source.
 Mesh read_gmsh(std::istream& in, const std::string& path,
                const std::vector<std::string>& required_groups = {});
+
+/// Reads `path` as a 3-D mesh: 10-node tetrahedra (type 11, Gmsh's node order is shape_t10.hpp's)
+/// form the domain; 6-node triangles (type 9) in a 2D physical group (physical surface) become
+/// boundary faces tagged with the group's name, oriented out of the tetrahedron they bound (the
+/// faces of t10_faces); points (type 15) and 3-node lines (type 8) are ignored, physical volumes
+/// accepted. Throws InputError as read_gmsh does, and for 4-node tetrahedra, a 2-D mesh (triangles
+/// and no tetrahedra), an inverted (negative volume) or zero-volume element, det J <= 0 inside
+/// an element (mid-node far from its edge midpoint), a tagged triangle that is not a face of
+/// exactly one tetrahedron, a node no element uses and two nodes at the same place.
+TetMesh read_gmsh_t10(const std::string& path,
+                      const std::vector<std::string>& required_groups = {});
+
+/// The same from a stream; `path` names it in messages and in TetMesh::source.
+TetMesh read_gmsh_t10(std::istream& in, const std::string& path,
+                      const std::vector<std::string>& required_groups = {});
 
 } // namespace fsi::fem
