@@ -37,14 +37,24 @@ std::unique_ptr<Material3> make_material_3d(const MaterialOptions& o) {
   return std::make_unique<StVenantKirchhoff3>(o);
 }
 
+double von_mises(const MatD<3>& sigma) {
+  const double sxx = sigma(0, 0), syy = sigma(1, 1), szz = sigma(2, 2);
+  const double sxy = sigma(0, 1), syz = sigma(1, 2), sxz = sigma(0, 2);
+  return std::sqrt(
+      0.5 * ((sxx - syy) * (sxx - syy) + (syy - szz) * (syy - szz) + (szz - sxx) * (szz - sxx)) +
+      3.0 * sxy * sxy + 3.0 * syz * syz + 3.0 * sxz * sxz);
+}
+
 double von_mises(const Material& law, const Mat2& F, const Mat2& E) {
   const double J = F.determinant();
-  const Mat2 sigma = F * law.stress(E) * F.transpose() / J;
-  const double s33 = law.stress_33(E) / J; // F33 = 1
-  const double sxx = sigma(0, 0), syy = sigma(1, 1), sxy = sigma(0, 1);
-  return std::sqrt(
-      0.5 * ((sxx - syy) * (sxx - syy) + (syy - s33) * (syy - s33) + (s33 - sxx) * (s33 - sxx)) +
-      3.0 * sxy * sxy);
+  MatD<3> sigma = MatD<3>::Zero();
+  sigma.topLeftCorner<2, 2>() = F * law.stress(E) * F.transpose() / J;
+  sigma(2, 2) = law.stress_33(E) / J; // F33 = 1
+  return von_mises(sigma);
+}
+
+double von_mises(const Material3& law, const MatD<3>& F, const MatD<3>& E) {
+  return von_mises(MatD<3>(F * law.stress(E) * F.transpose() / F.determinant()));
 }
 
 } // namespace fsi::materials

@@ -1,7 +1,6 @@
 #include "structure_fem/assembly.hpp"
 
 #include <sstream>
-#include <stdexcept>
 
 #include "fsi/core/parallel.hpp"
 
@@ -103,22 +102,18 @@ template <class Family> double BasicAssembler<Family>::strain_energy(const Vecto
 }
 
 template <class Family> Vector BasicAssembler<Family>::nodal_von_mises(const Vector& u) const {
-  if constexpr (Family::dim != 2) {
-    throw std::logic_error("nodal_von_mises: the T10 stresses are not written yet (issue 44)");
-  } else {
-    std::vector<std::array<double, 6>> vm(elements_.size());
-    parallel_for(elements_.size(), [&](std::size_t e) {
-      vm[e] = t6_nodal_von_mises(element_nodes(e), gather(u, e), material_);
-    });
-    Vector sum = Vector::Zero(static_cast<Eigen::Index>(mesh_.num_nodes()));
-    Vector count = Vector::Zero(sum.size());
-    for (std::size_t e = 0; e < elements_.size(); ++e)
-      for (std::size_t k = 0; k < 6; ++k) {
-        sum[mesh_.elements[e][k]] += vm[e][k];
-        count[mesh_.elements[e][k]] += 1.0;
-      }
-    return sum.cwiseQuotient(count);
-  }
+  std::vector<std::array<double, nodes>> vm(elements_.size());
+  parallel_for(elements_.size(), [&](std::size_t e) {
+    vm[e] = Family::nodal_von_mises(element_nodes(e), gather(u, e), material_);
+  });
+  Vector sum = Vector::Zero(static_cast<Eigen::Index>(mesh_.num_nodes()));
+  Vector count = Vector::Zero(sum.size());
+  for (std::size_t e = 0; e < elements_.size(); ++e)
+    for (std::size_t k = 0; k < vm[e].size(); ++k) {
+      sum[mesh_.elements[e][k]] += vm[e][k];
+      count[mesh_.elements[e][k]] += 1.0;
+    }
+  return sum.cwiseQuotient(count);
 }
 
 template class BasicAssembler<T6>;

@@ -112,4 +112,19 @@ Mat30 t10_mass(const TetNodes& X, double rho) {
   return M;
 }
 
+std::array<double, 10> t10_nodal_von_mises(const TetNodes& X, const Vec30& u,
+                                           const Material3& material) {
+  const auto C = node_coordinates(X);
+  const auto U = Eigen::Map<const Mat310>(u.data());
+  std::array<double, 10> vm{};
+  for (std::size_t k = 0; k < 10; ++k) {
+    const auto& p = t10_node_parent[k];
+    const Mat310 dN = t10_shape_derivatives(p[0], p[1], p[2]);
+    const Mat3 H = U * (jacobian(dN, C).inverse() * dN).transpose();
+    vm[k] = materials::von_mises(material, Mat3::Identity() + H,
+                                 0.5 * (H + H.transpose() + H.transpose() * H));
+  }
+  return vm;
+}
+
 } // namespace fsi::fem

@@ -1,7 +1,6 @@
 #include "structure_fem/element_t6.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <limits>
 
 #include "reference_map.hpp"
@@ -123,15 +122,7 @@ std::array<double, 6> t6_nodal_von_mises(const ElementNodes& X, const Vec12& u,
   for (std::size_t k = 0; k < 6; ++k) {
     const Mat26 dN = t6_shape_derivatives(t6_node_parent[k][0], t6_node_parent[k][1]);
     const Mat2 H = displacement_gradient(jacobian(dN, C).inverse() * dN, u);
-    const Mat2 F = Mat2::Identity() + H;
-    const double J = F.determinant();
-    const Mat2 E = green_lagrange(H);
-    const Mat2 sigma = F * material.stress(E) * F.transpose() / J;
-    const double s33 = material.stress_33(E) / J; // F33 = 1
-    const double sxx = sigma(0, 0), syy = sigma(1, 1), sxy = sigma(0, 1);
-    vm[k] = std::sqrt(
-        0.5 * ((sxx - syy) * (sxx - syy) + (syy - s33) * (syy - s33) + (s33 - sxx) * (s33 - sxx)) +
-        3.0 * sxy * sxy);
+    vm[k] = materials::von_mises(material, Mat2::Identity() + H, green_lagrange(H));
   }
   return vm;
 }

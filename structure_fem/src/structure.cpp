@@ -277,8 +277,7 @@ template <class Family> void BasicStructure<Family>::restore(const StructureStat
   f_ext_next_ = state.f_ext;
 }
 
-template <class Family>
-Vector BasicStructure<Family>::von_mises() const requires(Family::dim == 2) {
+template <class Family> Vector BasicStructure<Family>::von_mises() const {
   return assembler_->nodal_von_mises(state_.u);
 }
 

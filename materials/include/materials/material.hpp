@@ -88,9 +88,14 @@ template <int D> using MaterialInterface = std::conditional_t<D == 2, Material, 
 std::unique_ptr<Material> make_material(const MaterialOptions& options);
 std::unique_ptr<Material3> make_material_3d(const MaterialOptions& options);
 
+/// Von Mises equivalent sqrt(3/2 s : s) of a Cauchy stress sigma, s its deviator:
+/// sqrt([(s11 - s22)^2 + (s22 - s33)^2 + (s33 - s11)^2] / 2 + 3 (s12^2 + s23^2 + s13^2)).
+double von_mises(const MatD<3>& sigma);
 /// Von Mises equivalent of the Cauchy stress sigma = F S(E) F^T / J, with sigma_33 = S33 / J
 /// (F33 = 1), for the deformation gradient F and its Green–Lagrange strain E (passed in: callers
 /// compute E in their own form).
 double von_mises(const Material& law, const Mat2& F, const Mat2& E);
+/// The same in 3-D: sigma = F S(E) F^T / J.
+double von_mises(const Material3& law, const MatD<3>& F, const MatD<3>& E);
 
 } // namespace fsi::materials

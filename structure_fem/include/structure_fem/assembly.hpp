@@ -31,6 +31,10 @@ struct T6 {
   using Nodes = ElementNodes;
   using Condition = DirichletCondition;
   static Mat12 mass(const Nodes& X, double rho) { return t6_mass(X, rho); }
+  static std::array<double, 6> nodal_von_mises(const Nodes& X, const Vec12& u,
+                                               const Material& law) {
+    return t6_nodal_von_mises(X, u, law);
+  }
   static long label(const Mesh& mesh, std::size_t e) { return mesh.element_label[e]; }
 };
 
@@ -43,6 +47,10 @@ struct T10 {
   using Nodes = TetNodes;
   using Condition = DirichletCondition3;
   static Mat30 mass(const Nodes& X, double rho) { return t10_mass(X, rho); }
+  static std::array<double, 10> nodal_von_mises(const Nodes& X, const Vec30& u,
+                                                const Material& law) {
+    return t10_nodal_von_mises(X, u, law);
+  }
   static long label(const Mesh&, std::size_t e) { return static_cast<long>(e) + 1; }
 };
 
@@ -73,8 +81,7 @@ public:
   Vector gravity_forces(const VecDim& g) const;
   /// Total strain energy integral W(E) [J] (T6: per unit thickness, J/m).
   double strain_energy(const Vector& u) const;
-  /// Von Mises Cauchy stress per node, averaged over the elements sharing the node [Pa]; T6
-  /// only (T10: std::logic_error).
+  /// Von Mises Cauchy stress per node, averaged over the elements sharing the node [Pa].
   Vector nodal_von_mises(const Vector& u) const;
 
 private:

@@ -1,6 +1,6 @@
 #pragma once
 // Total-Lagrangian 10-node tetrahedron (issue 44): internal force, consistent tangent (material +
-// geometric), consistent mass and volume. Element vectors are ordered
+// geometric), consistent mass, volume and nodal von Mises stress. Element vectors are ordered
 // (u_0x, u_0y, u_0z, u_1x, ..., u_9z); node order of shape_t10.hpp (Gmsh type 11).
 #include <array>
 
@@ -37,5 +37,8 @@ private:
 
 /// Consistent mass M = integral rho N^T N (tet_rule_degree5, exact for straight edges).
 Mat30 t10_mass(const TetNodes& X, double rho);
+/// Von Mises equivalent of the Cauchy stress sigma = F S F^T / det F, evaluated at the ten nodes.
+std::array<double, 10> t10_nodal_von_mises(const TetNodes& X, const Vec30& u,
+                                           const Material3& material);
 
 } // namespace fsi::fem

@@ -126,7 +126,7 @@ public:
   void read_state(const StateArchive& archive, const std::string& prefix);
 
   /// Von Mises Cauchy stress per node (element nodal values averaged) [Pa].
-  Vector von_mises() const requires(Family::dim == 2);
+  Vector von_mises() const;
   /// Energies of the free motion; the work of prescribed motions is not counted.
   Energies energies() const;
 

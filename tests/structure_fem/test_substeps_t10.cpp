@@ -1,0 +1,84 @@
+// StructureT10 through the code it shares with the T6 (issue 44): a step whose Newton fails is
+// retried as sub-steps with the loads linear in time and equals those sub-steps taken by hand;
+// save/restore and a checkpoint (write_state, read_state into a new structure) mid-run continue
+// bit for bit as the uninterrupted run.
+#include <catch2/catch.hpp>
+
+#include <memory>
+
+#include "fsi/core/state_archive.hpp"
+#include "structure_fem/box_mesher.hpp"
+#include "structure_fem/loads.hpp"
+#include "structure_fem/structure.hpp"
+#include "substeps.hpp"
+
+using namespace fsi::fem;
+
+namespace {
+
+/// A 1 x 0.2 x 0.2 m rubber cantilever (4 x 1 x 1 cells) clamped on x_min, neo-Hookean.
+std::unique_ptr<StructureT10> cantilever(int max_substep_levels) {
+  StructureT10Options o;
+  o.material = {1.0e6, 0.45, 1000.0, PlaneModel::plane_strain, MaterialModel::neo_hookean};
+  o.clamped = {{"x_min", {true, true, true}, {}, {}}};
+  o.newton.max_iterations = 4;
+  o.newton.max_substep_levels = max_substep_levels;
+  return std::make_unique<StructureT10>(
+      make_box_mesh({{0.0, 0.0, 0.0}, {1.0, 0.2, 0.2}, {4, 1, 1}}), o);
+}
+
+Vector tip_load(const StructureT10& s, double q) { // q N/m^2 downward on face x_max
+  return face_traction_forces(s.mesh(), "x_max",
+                              [&](const fsi::Vec3&) { return fsi::Vec3(0.0, 0.0, -q); });
+}
+
+} // namespace
+
+TEST_CASE("T10: a step whose Newton fails is retried as sub-steps with the loads linear in time",
+          "[structure_fem][t10][newton]") {
+  fem_test::check_substeps_by_hand(cantilever, tip_load, 0.02, 4.0e4);
+}
+
+TEST_CASE("T10: save/restore and a checkpoint mid-run continue bit for bit",
+          "[structure_fem][t10][checkpoint]") {
+  const double dt = 0.005, q = 5.0e3;
+  const int steps = 8, middle = 4;
+  auto run = [&](StructureT10& s, int count) {
+    for (int i = 0; i < count; ++i) s.advance(dt);
+  };
+  auto reference = cantilever(3);
+  reference->set_external_forces(tip_load(*reference, q));
+  run(*reference, steps);
+
+  // save, two steps, restore, and the same steps again: the re-run of iterative coupling.
+  auto rerun = cantilever(3);
+  rerun->set_external_forces(tip_load(*rerun, q));
+  run(*rerun, middle);
+  const StructureState saved = rerun->save();
+  run(*rerun, 2);
+  rerun->restore(saved);
+  rerun->set_external_forces(tip_load(*rerun, q));
+  run(*rerun, steps - middle);
+
+  // Checkpoint written mid-run and read into a new structure.
+  auto first = cantilever(3);
+  first->set_external_forces(tip_load(*first, q));
+  run(*first, middle);
+  fsi::StateArchive archive;
+  first->write_state(archive, "solid.");
+  auto resumed = cantilever(3);
+  resumed->read_state(archive, "solid.");
+  run(*resumed, steps - middle);
+
+  const double moved = reference->displacement().cwiseAbs().maxCoeff();
+  WARN("T10 checkpoint: largest |u| after " << steps << " steps " << moved << " m");
+  REQUIRE(moved > 1e-4);
+  for (const StructureT10* s : {rerun.get(), resumed.get()}) {
+    CHECK(s->step() == reference->step());
+    CHECK(s->time() == reference->time());
+    CHECK(s->displacement() == reference->displacement());
+    CHECK(s->velocity() == reference->velocity());
+    CHECK(s->acceleration() == reference->acceleration());
+    CHECK(s->energies().total() == reference->energies().total());
+  }
+}
