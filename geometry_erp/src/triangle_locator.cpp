@@ -132,7 +132,10 @@ void TriangleLocator::locate(const QueryPoints3& points, TriangleHits& hits) con
       for (int k = std::max(c[2] - 1, 0); k <= std::min(c[2] + 1, n_[2] - 1); ++k)
         for (int j = std::max(c[1] - 1, 0); j <= std::min(c[1] + 1, n_[1] - 1); ++j)
           for (int ci = std::max(c[0] - 1, 0); ci <= std::min(c[0] + 1, n_[0] - 1); ++ci) {
-            if (own && ci == c[0] && j == c[1] && k == c[2]) continue;
+            const std::size_t cell = this->cell(ci, j, k);
+            if ((own && ci == c[0] && j == c[1] && k == c[2]) ||
+                cell_begin_[cell] == cell_begin_[cell + 1])
+              continue;
             const Vec3 box_lo = lo_ + h_ * Vec3(ci, j, k) - Vec3::Constant(margin);
             const Vec3 box_hi = box_lo + Vec3::Constant(h_ + 2.0 * margin);
             const Vec3 gap = (box_lo - p).cwiseMax(p - box_hi).cwiseMax(0.0);

@@ -217,24 +217,18 @@ TEST_CASE("erp: pseudo-normals of a closed cube tank at its edges and vertices",
   CHECK((hits.n_wall[5] - Vec3(1, 0, 0)).norm() < 1e-15); // the face x = 0
 }
 
-TEST_CASE("erp: nearest triangle of a cube tank (fluid inside) matches brute force",
+TEST_CASE("erp: nearest triangle of a cube tank (fluid inside) and a box obstacle (fluid "
+          "outside) matches brute force",
           "[triangle_walls]") {
-  TriangleWallSet walls;
-  add_cube(walls, true);
-  const Counts c =
-      check_cloud(walls, 0.15, -0.2, 1.2, [](const Vec3& p, double) { return !in_unit_cube(p); });
-  CHECK(c.hits > 2000);
-  CHECK(c.crossed > 500);
-}
-
-TEST_CASE("erp: nearest triangle of a box obstacle (fluid outside) matches brute force",
-          "[triangle_walls]") {
-  TriangleWallSet walls;
-  add_cube(walls, false);
-  const Counts c =
-      check_cloud(walls, 0.15, -0.2, 1.2, [](const Vec3& p, double) { return in_unit_cube(p); });
-  CHECK(c.hits > 2000);
-  CHECK(c.crossed > 500);
+  for (const bool fluid_inside : {true, false}) {
+    TriangleWallSet walls;
+    add_cube(walls, fluid_inside);
+    const Counts c = check_cloud(walls, 0.15, -0.2, 1.2, [&](const Vec3& p, double) {
+      return in_unit_cube(p) != fluid_inside;
+    });
+    CHECK(c.hits > 2000);
+    CHECK(c.crossed > 500);
+  }
 }
 
 TEST_CASE("erp: nearest triangle of an open quarter-cylinder patch matches brute force",
