@@ -62,7 +62,13 @@ void TriangleLocator::update() {
   }
   if (!any) lo = hi = Vec3::Zero();
   const Vec3 extent = hi - lo;
-  h_ = std::max({r_e_, std::cbrt(extent.prod() / max_cells), extent.maxCoeff() / max_cells});
+  // Cells of side r_e, grown until they number at most max_cells (flat walls included).
+  const auto count = [&](double h) {
+    return (std::floor(extent.x() / h) + 1.0) * (std::floor(extent.y() / h) + 1.0) *
+           (std::floor(extent.z() / h) + 1.0);
+  };
+  h_ = r_e_;
+  while (count(h_) > max_cells) h_ *= 1.25;
   lo_ = lo;
   for (int d = 0; d < 3; ++d)
     n_[static_cast<std::size_t>(d)] = static_cast<int>(extent[d] / h_) + 1;

@@ -186,6 +186,25 @@ TEST_CASE("erp: triangle walls reject bad indices and degenerate triangles", "[t
   CHECK_FALSE(walls.open(0, TriangleFeature::face));
 }
 
+TEST_CASE("erp: a wide flat triangle wall gets cells larger than r_e, at most 2^22",
+          "[triangle_walls]") {
+  TriangleWallSet walls;
+  const std::vector<Vec3> p{Vec3(0, 0, 0), Vec3(1000, 0, 0), Vec3(1000, 1000, 0), Vec3(0, 1000, 0)};
+  walls.add_triangles(p, std::vector<Tri>{{0, 1, 2}, {0, 2, 3}}, 0);
+  const TriangleLocator locator(walls, 0.01);
+  const double h = locator.cell_size();
+  CHECK(h > 0.01);
+  CHECK((std::floor(1000.0 / h) + 1.0) * (std::floor(1000.0 / h) + 1.0) <= double(1 << 22));
+  const std::vector<Vec3> x{Vec3(500.25, 200.75, 0.004), Vec3(500.25, 200.75, 0.02),
+                            Vec3(999.5, 0.5, -0.005)};
+  TriangleHits hits;
+  locator.query(x, hits);
+  CHECK(hits.triangle[0] == 0);
+  CHECK_THAT(hits.r[0], WithinAbs(0.004, 1e-12));
+  CHECK(hits.triangle[1] == -1);
+  CHECK(hits.crossed[2]); // below the wall, under its interior
+}
+
 TEST_CASE("erp: pseudo-normals of a closed cube tank at its edges and vertices",
           "[triangle_walls]") {
   TriangleWallSet walls;
