@@ -12,12 +12,17 @@ int reach(double l0, double r_e) {
 }
 } // namespace
 
-double wall_weight_sum(double r, double l0, double r_e, const WeightFunction& w) {
+template <int D> double wall_weight_sum(double r, double l0, double r_e, const WeightFunction& w) {
   const int n = reach(l0, r_e);
   double z = 0.0;
   for (int m = 0; r + 0.5 * l0 + m * l0 < r_e; ++m) {
     const double dy = r + 0.5 * l0 + m * l0; // particle at y = r, virtual row at -l0/2 - m l0
-    for (int i = -n; i <= n; ++i) z += w(std::hypot(i * l0, dy));
+    if constexpr (D == 2) {
+      for (int i = -n; i <= n; ++i) z += w(std::hypot(i * l0, dy));
+    } else { // columns (i l0, j l0) of the virtual layer, x fastest
+      for (int j = -n; j <= n; ++j)
+        for (int i = -n; i <= n; ++i) z += w(std::hypot(i * l0, j * l0, dy));
+    }
   }
   return z;
 }
@@ -30,18 +35,32 @@ double corner_weight_sum(double a, double b, double l0, double r_e, const Weight
   return q;
 }
 
+template <int D>
 double wall_gradient_sum(double r, double l0, double r_e, const WeightFunction& w) {
   const int n = reach(l0, r_e);
   double g = 0.0;
   for (int m = 0; r + 0.5 * l0 + m * l0 < r_e; ++m) {
     const double dy = r + 0.5 * l0 + m * l0;
-    for (int i = -n; i <= n; ++i) {
-      const double rho2 = i * l0 * i * l0 + dy * dy;
-      g += dy / rho2 * w(std::sqrt(rho2));
+    if constexpr (D == 2) {
+      for (int i = -n; i <= n; ++i) {
+        const double rho2 = i * l0 * i * l0 + dy * dy;
+        g += dy / rho2 * w(std::sqrt(rho2));
+      }
+    } else {
+      for (int j = -n; j <= n; ++j)
+        for (int i = -n; i <= n; ++i) {
+          const double rho2 = i * l0 * i * l0 + j * l0 * j * l0 + dy * dy;
+          g += dy / rho2 * w(std::sqrt(rho2));
+        }
     }
   }
   return g;
 }
+
+template double wall_weight_sum<2>(double, double, double, const WeightFunction&);
+template double wall_weight_sum<3>(double, double, double, const WeightFunction&);
+template double wall_gradient_sum<2>(double, double, double, const WeightFunction&);
+template double wall_gradient_sum<3>(double, double, double, const WeightFunction&);
 
 Vec2 corner_gradient_sum(double a, double b, double l0, double r_e, const WeightFunction& w) {
   Vec2 g = Vec2::Zero();
@@ -89,7 +108,9 @@ template double lattice_n0<3>(double, double, const WeightFunction&);
 template double lattice_lambda0<2>(double, double, const WeightFunction&);
 template double lattice_lambda0<3>(double, double, const WeightFunction&);
 
-WallWeightTable::WallWeightTable(double l0, double r_e, const WeightFunction& w, int min_intervals)
+template <int D>
+BasicWallWeightTable<D>::BasicWallWeightTable(double l0, double r_e, const WeightFunction& w,
+                                              int min_intervals)
     : l0_(l0), r_e_(r_e), r_zero_(r_e - 0.5 * l0) {
   // Intervals per half spacing, so that l0/2 + k l0 fall on knots.
   const int M = std::max(1, static_cast<int>(std::ceil(min_intervals * 0.5 * l0 / r_e)));
@@ -98,9 +119,12 @@ WallWeightTable::WallWeightTable(double l0, double r_e, const WeightFunction& w,
   std::vector<double> r(static_cast<std::size_t>(knots)), z(r.size());
   for (int k = 0; k < knots; ++k) {
     r[static_cast<std::size_t>(k)] = k * dr_;
-    z[static_cast<std::size_t>(k)] = wall_weight_sum(k * dr_, l0, r_e, w);
+    z[static_cast<std::size_t>(k)] = wall_weight_sum<D>(k * dr_, l0, r_e, w);
   }
   z_ = CubicSpline(std::move(r), std::move(z));
 }
+
+template class BasicWallWeightTable<2>;
+template class BasicWallWeightTable<3>;
 
 } // namespace fsi::erp

@@ -185,3 +185,40 @@ TEST_CASE("erp: n0 and lambda0 on the 3-D cubic lattice tend to their continuum 
   CHECK_THAT(lattice_n0<3>(l0, r_e, w), WithinRel(4.0 * std::numbers::pi / 30.0 * 8000.0, 1e-3));
   CHECK_THAT(lattice_lambda0<3>(l0, r_e, w), WithinRel(2.0 / 7.0 * r_e * r_e, 1e-3));
 }
+
+TEST_CASE("erp: the 2-D z(r), its gradient sum and table are bitwise those before the D template",
+          "[wall_weight]") {
+  // {r_e / l0, r / l0, wall_weight_sum, wall_gradient_sum, table z, table dz/dr} printed as hex
+  // floats by commit 98c2c94 (before wall_weight became a template on D), l0 = 1.46e-3.
+  constexpr double before[][6] = {
+      {0x1.0cccccccccccdp+1, 0x0p+0, 0x1.23e2447849d14p+0, 0x1.e28105690e74bp+9,
+       0x1.23e2447849d14p+0, 0x0p+0},
+      {0x1.0cccccccccccdp+1, 0x1.0a3d70a3d70a4p-3, 0x1.e06e02576d73fp-1, 0x1.525e03ae1be33p+9,
+       0x1.e06e025782385p-1, -0x1.f74f5ae7a905cp+9},
+      {0x1.0cccccccccccdp+1, 0x1p-1, 0x1.f5b11697e00aep-2, 0x1.05bffac9f4875p+8,
+       0x1.f5b11697e00aep-2, -0x1.51019a0122815p+9},
+      {0x1.0cccccccccccdp+1, 0x1.5eb851eb851ecp+0, 0x1.8911409f029f4p-7, 0x1.1931175c814acp+2,
+       0x1.8911409f01f67p-7, -0x1.1dc6c2de96357p+6},
+      {0x1.0cccccccccccdp+1, 0x1.0666666666666p+1, 0x0p+0, 0x0p+0, 0x0p+0, 0x0p+0},
+      {0x1.8cccccccccccdp+1, 0x0p+0, 0x1.413b98bc4fe6dp+1, 0x1.6f32497164907p+10,
+       0x1.413b98bc4fe6dp+1, 0x0p+0},
+      {0x1.8cccccccccccdp+1, 0x1.0a3d70a3d70a4p-3, 0x1.1cca6f614b3ccp+1, 0x1.1fad0b6172d42p+10,
+       0x1.1cca6f614b42dp+1, -0x1.6ea6a268c74f4p+10},
+      {0x1.8cccccccccccdp+1, 0x1p-1, 0x1.80d8a7b0ffb6dp+0, 0x1.39576ea9d8405p+9,
+       0x1.80d8a7b0ffb6dp+0, -0x1.2adb7dd7bc577p+10},
+      {0x1.8cccccccccccdp+1, 0x1.5eb851eb851ecp+0, 0x1.8ffa49084126bp-2, 0x1.e2a24500b6588p+6,
+       0x1.8ffa4908413c2p-2, -0x1.0e96e1d5b0f06p+9},
+      {0x1.8cccccccccccdp+1, 0x1.0666666666666p+1, 0x1.dff66f57cbe31p-5, 0x1.d886d06eb2486p+3,
+       0x1.dff66f57cc2bdp-5, -0x1.5c641b2e17c21p+7},
+  };
+  for (const auto& [ratio, f, z_sum, g_sum, z_table, dz_table] : before) {
+    const double l0 = 1.46e-3, r_e = ratio * l0, r = f * l0;
+    const MpsWeight w(r_e);
+    const WallWeightTable z(l0, r_e, w);
+    INFO("r_e / l0 = " << ratio << ", r / l0 = " << f);
+    CHECK(wall_weight_sum(r, l0, r_e, w) == z_sum);
+    CHECK(wall_gradient_sum(r, l0, r_e, w) == g_sum);
+    CHECK(z(r) == z_table);
+    CHECK(z.dz_dr(r) == dz_table);
+  }
+}

@@ -25,6 +25,7 @@
 // the particle on its fluid side, and whose normal differs from each of faces 0..k-1's n_wall by
 // more than 30 degrees (so the gentle turns of a curved wall never count).
 #include "fsi/core/types.hpp"
+#include "geometry_erp/query_points.hpp"
 #include "geometry_erp/wall_set.hpp"
 
 #include <array>
@@ -71,21 +72,6 @@ enum class LocatorKind { grid, aabb_tree };
 
 /// The default back-end (docs/geometry_erp.md gives the measurements behind the choice).
 inline constexpr LocatorKind default_locator = LocatorKind::grid;
-
-/// The particle positions of a query: one array of points, or x and y as separate arrays.
-class QueryPoints {
-public:
-  explicit QueryPoints(std::span<const Vec2> p) : p_(p.data()), n_(p.size()) {}
-  QueryPoints(std::span<const double> x, std::span<const double> y)
-      : x_(x.data()), y_(y.data()), n_(x.size()) {}
-  std::size_t size() const { return n_; }
-  Vec2 operator()(std::size_t i) const { return p_ ? p_[i] : Vec2(x_[i], y_[i]); }
-
-private:
-  const Vec2* p_ = nullptr;
-  const double *x_ = nullptr, *y_ = nullptr;
-  std::size_t n_;
-};
 
 /// A spatial index over the segments of one WallSet, which must outlive it. Call update() after
 /// nodes move or segments are added, before the next query. Queries are const, run through

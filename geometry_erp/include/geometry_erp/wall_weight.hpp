@@ -1,11 +1,12 @@
 #pragma once
 // Wall weight z(r) (eq. 20) and the lattice constants n0 (eq. 9) and lambda0 (eq. 12), all on the
-// same square lattice of spacing l0 (n0 and lambda0 also on the cubic lattice in 3-D).
+// same lattice of spacing l0: square for D = 2, cubic for D = 3 (template <int D = 2>).
 //
-// Lattice of z: a flat wall at y = 0, fluid rows at y = l0/2 + k l0 (k >= 0), virtual rows behind
-// the wall at y = -l0/2 - m l0 (m >= 0), the continuation of the fluid lattice; columns at
-// x = i l0 aligned with the particle at (0, r). z(r) = sum of w over the virtual particles, so a
-// particle on a fluid row with a full fluid lattice around it has n_i + z(r) = n0 exactly.
+// Lattice of z: a flat wall at y = 0 (z = 0 in 3-D), fluid rows (layers) at l0/2 + k l0 (k >= 0)
+// from it, virtual rows behind the wall at -l0/2 - m l0 (m >= 0), the continuation of the fluid
+// lattice; columns at x = i l0 (and y = j l0 in 3-D) aligned with the particle at distance r.
+// z(r) = sum of w over the virtual particles, so a particle on a fluid row with a full fluid
+// lattice around it has n_i + z(r) = n0 exactly.
 #include "fsi/core/types.hpp"
 #include "geometry_erp/cubic_spline.hpp"
 #include "particles/kernels.hpp"
@@ -18,6 +19,7 @@ namespace fsi::erp {
 using WeightFunction = std::function<double(double)>;
 
 /// z(r) by direct summation over the virtual half-lattice.
+template <int D = 2>
 double wall_weight_sum(double r, double l0, double r_e, const WeightFunction& w);
 
 /// The virtual lattice counted by both faces of a right-angle corner: a particle at distances a
@@ -28,6 +30,7 @@ double corner_weight_sum(double a, double b, double l0, double r_e, const Weight
 /// Eq. 10's geometric sum over the same virtual half-lattice as z(r): sum of (dy / rho^2) w(rho),
 /// dy the depth of a virtual point below the particle and rho its distance. With every virtual
 /// particle at pressure p_i, the wall part of <grad p>_i is -(d / n0) 2 p_i times this along n.
+template <int D = 2>
 double wall_gradient_sum(double r, double l0, double r_e, const WeightFunction& w);
 
 /// The same for corner_weight_sum's quadrant: the components (sum da / rho^2 w, sum db / rho^2 w)
@@ -45,10 +48,11 @@ template <int D = 2> double lattice_lambda0(double l0, double r_e, const WeightF
 /// z(r) tabulated once and interpolated by a natural cubic spline. z = 0 from r = r_e - l0/2 on
 /// (the nearest virtual row is l0/2 behind the wall), so the table spans [0, r_e - l0/2]. The
 /// knots are multiples of l0 / (2 M), M chosen for at least `min_intervals` intervals over r_e, so
-/// every fluid row r = l0/2 + k l0 is a knot.
-class WallWeightTable {
+/// every fluid row r = l0/2 + k l0 is a knot. WallWeightTable on the square lattice,
+/// WallWeightTable3 on the cubic one.
+template <int D> class BasicWallWeightTable {
 public:
-  WallWeightTable(double l0, double r_e, const WeightFunction& w, int min_intervals = 1000);
+  BasicWallWeightTable(double l0, double r_e, const WeightFunction& w, int min_intervals = 1000);
   /// z(r); z(r) = z(0) for r < 0 and 0 for r >= r_e - l0/2.
   double operator()(double r) const { return r >= r_zero_ ? 0.0 : z_(r).y; }
   double dz_dr(double r) const { return r >= r_zero_ ? 0.0 : z_(r).dy; }
@@ -61,5 +65,15 @@ private:
   double l0_, r_e_, r_zero_, dr_;
   CubicSpline z_;
 };
+
+using WallWeightTable = BasicWallWeightTable<2>;
+using WallWeightTable3 = BasicWallWeightTable<3>;
+
+extern template double wall_weight_sum<2>(double, double, double, const WeightFunction&);
+extern template double wall_weight_sum<3>(double, double, double, const WeightFunction&);
+extern template double wall_gradient_sum<2>(double, double, double, const WeightFunction&);
+extern template double wall_gradient_sum<3>(double, double, double, const WeightFunction&);
+extern template class BasicWallWeightTable<2>;
+extern template class BasicWallWeightTable<3>;
 
 } // namespace fsi::erp

@@ -1,0 +1,85 @@
+#pragma once
+// Nearest triangle wall point for many particles at once (eqs. 18-19 over a TriangleWallSet), the
+// 3-D counterpart of WallLocator's grid back-end.
+//
+// For each particle within r_e of some triangle: the triangle, the nearest point x_wall on it
+// (Ericson, Real-Time Collision Detection, sec. 5.1.5) with its barycentric coordinates and the
+// feature (vertex, edge or face) it lies on, the distance r = |x - x_wall|, the unit normal
+// n_wall = (x - x_wall) / r (eq. 19), and the wall velocity and acceleration interpolated
+// barycentrically.
+// - r <= on_wall_tolerance * r_e: the particle is on the wall; n_wall is the feature's
+//   pseudo-normal (TriangleWallSet::pseudo_normal) and it is not crossed.
+// - otherwise it is crossed when (x - x_wall) . pseudo-normal < 0 (Baerentzen & Aanaes 2005) —
+//   except when x_wall is on an open edge or vertex (TriangleWallSet::open): no solid there.
+// Equally near triangles are resolved towards the lower index, so results do not depend on the
+// thread count.
+//
+// Search: triangles are binned into cubic cells of side h >= r_e (every cell their bounding box
+// overlaps, CSR arrays); a particle checks its own cell, then each of the 26 neighbours whose box
+// is not farther than the best triangle so far.
+//
+// These are new types rather than WallHits<D>: the 2-D record carries one segment coordinate t
+// and the corner faces; a triangle needs barycentric coordinates and a feature, and has no corner
+// faces yet.
+#include "fsi/core/types.hpp"
+#include "geometry_erp/query_points.hpp"
+#include "geometry_erp/triangle_wall_set.hpp"
+
+#include <array>
+#include <span>
+#include <vector>
+
+namespace fsi::erp {
+
+/// Query results, one entry per particle (struct-of-arrays). A particle with no triangle within
+/// r_e has triangle = -1, r = +inf, crossed = 0 and the other fields left unchanged.
+struct TriangleHits {
+  std::vector<int> triangle;
+  std::vector<TriangleFeature> feature;
+  std::vector<Vec3> bary; ///< x_wall = bary[0] x_a + bary[1] x_b + bary[2] x_c
+  std::vector<double> r;
+  std::vector<Vec3> x_wall, n_wall, v_wall, a_wall;
+  std::vector<unsigned char> crossed;
+  /// Grows every array to n (no allocation once warmed up to the largest n).
+  void resize(std::size_t n);
+  std::size_t size() const { return triangle.size(); }
+};
+
+/// The triangle with its node positions as of TriangleLocator::update().
+struct TriangleGeometry {
+  Vec3 a, b, c;
+  int id;
+};
+
+/// A uniform grid over the triangles of one TriangleWallSet, which must outlive it. After nodes
+/// move: TriangleWallSet::update(), then update() here, before the next query. Queries are const,
+/// run through fsi::parallel_for_balanced and do not allocate once `hits` has the particle count.
+class TriangleLocator {
+public:
+  TriangleLocator(const TriangleWallSet& walls, double r_e);
+  /// Rebuilds the grid for the current node positions.
+  void update();
+  void query(std::span<const Vec3> x, TriangleHits& hits) const { locate(QueryPoints3(x), hits); }
+  /// Same with the coordinates as separate arrays of one size.
+  void query(std::span<const double> x, std::span<const double> y, std::span<const double> z,
+             TriangleHits& hits) const {
+    locate(QueryPoints3(x, y, z), hits);
+  }
+  double r_e() const { return r_e_; }
+  double cell_size() const { return h_; }
+  const TriangleWallSet& walls() const { return *walls_; }
+
+private:
+  void locate(const QueryPoints3& points, TriangleHits& hits) const;
+  /// Index of cell (i, j, k), x fastest.
+  std::size_t cell(int i, int j, int k) const;
+
+  const TriangleWallSet* walls_;
+  double r_e_, h_ = 0.0;
+  Vec3 lo_ = Vec3::Zero();
+  std::array<int, 3> n_{0, 0, 0};
+  std::vector<int> cell_begin_;                 // CSR offsets into cell_triangle_
+  std::vector<TriangleGeometry> cell_triangle_; // triangles of each cell, with their geometry
+};
+
+} // namespace fsi::erp
