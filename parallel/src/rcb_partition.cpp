@@ -2,7 +2,7 @@
 
 #include <zoltan.h>
 
-#include <algorithm>
+#include <initializer_list>
 #include <limits>
 #include <stdexcept>
 #include <string>
