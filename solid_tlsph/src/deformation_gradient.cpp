@@ -1,5 +1,6 @@
 // Kinematics: the deformation gradient F_a (eq. 13) from the reference pairs, and det F.
 #include <Eigen/LU>
+#include <array>
 
 #include "fsi/core/parallel.hpp"
 #include "solid_tlsph/solid.hpp"
@@ -8,14 +9,19 @@ namespace fsi::tlsph {
 
 template <int D> auto BasicTlsphSolid<D>::deformation_gradient(std::size_t a) const -> Mat {
   // eq. 13: F_a = (sum_b (u_b - u_a) (x) grad0 W_ab V_b) B0_a + I
+  const auto x = x_.coords(), X0 = X0_.coords(); // raw arrays: no reloads in the pair loop
   const Vec u_a = displacement(a);
   // The quadratic correction: F_a = I + sum_b (u_b - u_a) (x) g~_ab (the gradients corrected).
   const auto& g = quadratic_ ? pair_q_ : pair_g_;
+  std::array<const double*, D> gp;
+  for (int j = 0; j < D; ++j) gp[j] = g[j].data();
   Mat G = Mat::Zero();
   for (std::uint32_t p = pair_start_[a]; p < pair_start_[a + 1]; ++p) {
-    const Vec du = displacement(pair_b_[p]) - u_a;
-    for (int i = 0; i < D; ++i)
-      for (int j = 0; j < D; ++j) G(i, j) += du(i) * g[j][p];
+    const std::uint32_t b = pair_b_[p];
+    for (int i = 0; i < D; ++i) {
+      const double du = x[i][b] - X0[i][b] - u_a(i);
+      for (int j = 0; j < D; ++j) G(i, j) += du * gp[j][p];
+    }
   }
   if (quadratic_) return G + Mat::Identity();
   Mat F;
