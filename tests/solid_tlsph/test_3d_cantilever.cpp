@@ -163,7 +163,7 @@ TEST_CASE("tlsph 3-D: the Timoshenko reference tends to Euler–Bernoulli for a 
 }
 
 TEST_CASE("tlsph 3-D cantilever: deflection and first frequency within 2 % of Timoshenko",
-          "[solid_tlsph][3d][convergence]") {
+          "[solid_tlsph][3d][slow]") {
   std::vector<Figures> runs;
   for (const int layers : {4, 6}) {
     Beam3 b;
