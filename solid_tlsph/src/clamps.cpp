@@ -11,8 +11,8 @@
 
 namespace fsi::tlsph {
 
-void TlsphSolid::clamp_face(std::size_t k, Vec2& point, Vec2& normal) const {
-  const Clamp& c = options_.clamps[k];
+template <int D> void BasicTlsphSolid<D>::clamp_face(std::size_t k, Vec& point, Vec& normal) const {
+  const BasicClamp<D>& c = options_.clamps[k];
   const double dp = options_.dp, tol = 1e-6 * dp;
   if (c.face_normal.norm() > 0.0) {
     point = c.face_point, normal = c.face_normal.normalized();
@@ -20,15 +20,16 @@ void TlsphSolid::clamp_face(std::size_t k, Vec2& point, Vec2& normal) const {
   }
   // The clamped-free pairs one lattice spacing apart: their directions give the normal, their
   // midpoints the face.
-  Vec2 sum_d = Vec2::Zero(), sum_m = Vec2::Zero();
-  std::vector<std::pair<Vec2, Vec2>> pairs; // (X_p - X_g, midpoint)
+  Vec sum_d = Vec::Zero(), sum_m = Vec::Zero();
+  std::vector<std::pair<Vec, Vec>> pairs; // (X_p - X_g, midpoint)
   for (std::size_t g = 0; g < size(); ++g) {
     if (clamped_[g] != k + 1) continue;
     for (std::uint32_t q = pair_start_[g]; q < pair_start_[g + 1]; ++q) {
       const std::uint32_t p = pair_b_[q];
-      const Vec2 d(X0_[p] - X0_[g], Y0_[p] - Y0_[g]);
+      const Vec X_p = at(X0_, p), X_g = at(X0_, g);
+      const Vec d = X_p - X_g;
       if (clamped_[p] || std::abs(d.norm() - dp) > tol) continue;
-      const Vec2 m(0.5 * (X0_[p] + X0_[g]), 0.5 * (Y0_[p] + Y0_[g]));
+      const Vec m = 0.5 * (X_p + X_g);
       pairs.emplace_back(d, m), sum_d += d, sum_m += m;
     }
   }
@@ -44,13 +45,13 @@ void TlsphSolid::clamp_face(std::size_t k, Vec2& point, Vec2& normal) const {
                                "odd_image = false");
 }
 
-void TlsphSolid::build_images() {
+template <int D> void BasicTlsphSolid<D>::build_images() {
   const std::size_t n = size(), clamps = options_.clamps.size();
   image_partner_.assign(n, none), image_of_.assign(n, none);
   imaged_.assign(clamps, 0);
-  std::vector<Vec2> face_point(clamps), face_normal(clamps);
+  std::vector<Vec> face_point(clamps), face_normal(clamps);
   for (std::size_t k = 0; k < clamps; ++k) {
-    const Clamp& c = options_.clamps[k];
+    const BasicClamp<D>& c = options_.clamps[k];
     imaged_[k] = c.odd_image && !c.position;
     if (!imaged_[k]) continue;
     bool any = false;
@@ -61,10 +62,10 @@ void TlsphSolid::build_images() {
   for (std::size_t g = 0; g < n; ++g) {
     if (!imaged(g)) continue;
     const std::size_t k = clamped_[g] - 1u;
-    const Vec2 nrm = face_normal[k], X(X0_[g], Y0_[g]);
-    const Vec2 M = X - 2.0 * (X - face_point[k]).dot(nrm) * nrm; // mirror position
+    const Vec nrm = face_normal[k], X = at(X0_, g);
+    const Vec M = X - 2.0 * (X - face_point[k]).dot(nrm) * nrm; // mirror position
     const std::size_t p = nearest_particle(M);
-    if (!clamped_[p] && (Vec2(X0_[p], Y0_[p]) - M).norm() <= tol) {
+    if (!clamped_[p] && (at(X0_, p) - M).norm() <= tol) {
       image_partner_[g] = p, image_of_[p] = g;
       images_ = true;
       continue;
@@ -78,29 +79,38 @@ void TlsphSolid::build_images() {
                          std::to_string(pair_b_[q]) +
                          " but has no free particle at its mirror position (odd_image)");
   }
-  image_ax_.assign(n, 0.0), image_ay_.assign(n, 0.0);
+  for (auto& a : image_a_) a.assign(n, 0.0);
 }
 
-void TlsphSolid::prescribe(double t) {
+template <int D> void BasicTlsphSolid<D>::prescribe(double t) {
   parallel_for(size(), [&](std::size_t i) {
     if (!clamped_[i]) return;
-    const Clamp& c = options_.clamps[clamped_[i] - 1u];
+    const BasicClamp<D>& c = options_.clamps[clamped_[i] - 1u];
     const std::size_t p = image_partner_[i];
     if (p != none) { // u_g = -u_p, v_g = -v_p
-      x_[i] = X0_[i] - (x_[p] - X0_[p]), y_[i] = Y0_[i] - (y_[p] - Y0_[p]);
-      vx_[i] = -vx_[p], vy_[i] = -vy_[p], ax_[i] = -ax_[p], ay_[i] = -ay_[p];
+      for (int k = 0; k < D; ++k) {
+        x_[k][i] = X0_[k][i] - (x_[k][p] - X0_[k][p]);
+        v_[k][i] = -v_[k][p], a_[k][i] = -a_[k][p];
+      }
     } else if (c.position) {
-      const Vec2 X(X0_[i], Y0_[i]);
-      const Vec2 x = c.position(X, t), v = c.velocity(X, t);
+      const Vec X = at(X0_, i);
+      const Vec x = c.position(X, t), v = c.velocity(X, t);
       // a by a central difference of the prescribed velocity (output only: clamped particles
       // are not integrated).
       const double d = 1e-6 * (1.0 + std::abs(t));
-      const Vec2 a = (c.velocity(X, t + d) - c.velocity(X, t - d)) / (2.0 * d);
-      x_[i] = x.x(), y_[i] = x.y(), vx_[i] = v.x(), vy_[i] = v.y(), ax_[i] = a.x(), ay_[i] = a.y();
+      const Vec a = (c.velocity(X, t + d) - c.velocity(X, t - d)) / (2.0 * d);
+      for (int k = 0; k < D; ++k) x_[k][i] = x(k), v_[k][i] = v(k), a_[k][i] = a(k);
     } else {
-      x_[i] = X0_[i], y_[i] = Y0_[i], vx_[i] = vy_[i] = ax_[i] = ay_[i] = 0.0;
+      for (int k = 0; k < D; ++k) x_[k][i] = X0_[k][i], v_[k][i] = a_[k][i] = 0.0;
     }
   });
 }
+
+template void BasicTlsphSolid<2>::clamp_face(std::size_t, Vec&, Vec&) const;
+template void BasicTlsphSolid<3>::clamp_face(std::size_t, Vec&, Vec&) const;
+template void BasicTlsphSolid<2>::build_images();
+template void BasicTlsphSolid<3>::build_images();
+template void BasicTlsphSolid<2>::prescribe(double);
+template void BasicTlsphSolid<3>::prescribe(double);
 
 } // namespace fsi::tlsph

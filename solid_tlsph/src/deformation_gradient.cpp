@@ -1,41 +1,48 @@
 // Kinematics: the deformation gradient F_a (eq. 13) from the reference pairs, and det F.
 #include <Eigen/LU>
+#include <array>
 
 #include "fsi/core/parallel.hpp"
 #include "solid_tlsph/solid.hpp"
 
 namespace fsi::tlsph {
 
-Mat2 TlsphSolid::deformation_gradient(std::size_t a) const {
+template <int D> auto BasicTlsphSolid<D>::deformation_gradient(std::size_t a) const -> Mat {
   // eq. 13: F_a = (sum_b (u_b - u_a) (x) grad0 W_ab V_b) B0_a + I
-  const double ux_a = x_[a] - X0_[a], uy_a = y_[a] - Y0_[a];
+  const auto x = x_.coords(), X0 = X0_.coords(); // raw arrays: no reloads in the pair loop
+  const Vec u_a = displacement(a);
   // The quadratic correction: F_a = I + sum_b (u_b - u_a) (x) g~_ab (the gradients corrected).
-  const double* gx = quadratic_ ? pair_qx_.data() : pair_gx_.data();
-  const double* gy = quadratic_ ? pair_qy_.data() : pair_gy_.data();
-  double G00 = 0.0, G01 = 0.0, G10 = 0.0, G11 = 0.0;
+  const auto& g = quadratic_ ? pair_q_ : pair_g_;
+  std::array<const double*, D> gp;
+  for (int j = 0; j < D; ++j) gp[j] = g[j].data();
+  Mat G = Mat::Zero();
   for (std::uint32_t p = pair_start_[a]; p < pair_start_[a + 1]; ++p) {
     const std::uint32_t b = pair_b_[p];
-    const double dux = x_[b] - X0_[b] - ux_a, duy = y_[b] - Y0_[b] - uy_a;
-    G00 += dux * gx[p], G01 += dux * gy[p];
-    G10 += duy * gx[p], G11 += duy * gy[p];
+    for (int i = 0; i < D; ++i) {
+      const double du = x[i][b] - X0[i][b] - u_a(i);
+      for (int j = 0; j < D; ++j) G(i, j) += du * gp[j][p];
+    }
   }
-  if (quadratic_) {
-    Mat2 F;
-    F << 1.0 + G00, G01, G10, 1.0 + G11;
-    return F;
-  }
-  Mat2 F;
-  F(0, 0) = 1.0 + G00 * B00_[a] + G01 * B10_[a];
-  F(0, 1) = G00 * B01_[a] + G01 * B11_[a];
-  F(1, 0) = G10 * B00_[a] + G11 * B10_[a];
-  F(1, 1) = 1.0 + G10 * B01_[a] + G11 * B11_[a];
+  if (quadratic_) return G + Mat::Identity();
+  Mat F;
+  for (int i = 0; i < D; ++i)
+    for (int j = 0; j < D; ++j) {
+      double s = i == j ? 1.0 : 0.0; // (G B0)_ij + I_ij, summed as in eq. 13
+      for (int k = 0; k < D; ++k) s += G(i, k) * (*B_[D * k + j])[a];
+      F(i, j) = s;
+    }
   return F;
 }
 
-std::vector<double> TlsphSolid::det_F() const {
+template <int D> std::vector<double> BasicTlsphSolid<D>::det_F() const {
   std::vector<double> out(size());
   parallel_for(size(), [&](std::size_t i) { out[i] = deformation_gradient(i).determinant(); });
   return out;
 }
+
+template auto BasicTlsphSolid<2>::deformation_gradient(std::size_t) const -> Mat;
+template auto BasicTlsphSolid<3>::deformation_gradient(std::size_t) const -> Mat;
+template std::vector<double> BasicTlsphSolid<2>::det_F() const;
+template std::vector<double> BasicTlsphSolid<3>::det_F() const;
 
 } // namespace fsi::tlsph

@@ -1,3 +1,4 @@
+// Seeding: the lattice fill of a polygon (2-D) or a box (3-D).
 #include "solid_tlsph/geometry.hpp"
 
 #include <algorithm>
@@ -64,6 +65,29 @@ SolidGeometry fill_rectangle(const Vec2& lo, const Vec2& hi, double dp) {
     throw InputError("tlsph geometry: rectangle needs hi > lo in x and y");
   return fill_polygon({lo, {hi.x(), lo.y()}, hi, {lo.x(), hi.y()}},
                       {"bottom", "right", "top", "left"}, dp, lo);
+}
+
+SolidGeometry3 fill_box(const Vec3& lo, const Vec3& hi, double dp) {
+  if (!(dp > 0.0)) {
+    std::ostringstream s;
+    s << "tlsph geometry: dp = " << dp << " must be > 0";
+    throw InputError(s.str());
+  }
+  if (!(hi.x() > lo.x() && hi.y() > lo.y() && hi.z() > lo.z()))
+    throw InputError("tlsph geometry: box needs hi > lo in x, y and z");
+  // Points at dp/2 from the sides; a side that is not a multiple of dp keeps the whole layers.
+  const Vec3 cells = (hi - lo) / dp;
+  const auto count = [](double c) { return static_cast<long>(std::floor(c + 1e-9)); };
+  const long ni = count(cells.x()), nj = count(cells.y()), nk = count(cells.z());
+  SolidGeometry3 g;
+  for (long k = 0; k < nk; ++k)
+    for (long j = 0; j < nj; ++j)
+      for (long i = 0; i < ni; ++i) {
+        g.X0.push_back(lo + dp * Vec3(static_cast<double>(i) + 0.5, static_cast<double>(j) + 0.5,
+                                      static_cast<double>(k) + 0.5));
+        g.V0.push_back(dp * dp * dp);
+      }
+  return g;
 }
 
 } // namespace fsi::tlsph

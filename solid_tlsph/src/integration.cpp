@@ -11,15 +11,16 @@
 
 namespace fsi::tlsph {
 
-double TlsphSolid::stable_dt() const {
+template <int D> double BasicTlsphSolid<D>::stable_dt() const {
   struct Max {
     double a2, v2;
   };
   const Max m = parallel_reduce(
       size(), Max{0.0, 0.0},
       [&](std::size_t i) {
-        if (clamped_[i]) return Max{0.0, vx_[i] * vx_[i] + vy_[i] * vy_[i]};
-        return Max{ax_[i] * ax_[i] + ay_[i] * ay_[i], vx_[i] * vx_[i] + vy_[i] * vy_[i]};
+        const double v2 = velocity(i).squaredNorm();
+        if (clamped_[i]) return Max{0.0, v2};
+        return Max{acceleration(i).squaredNorm(), v2};
       },
       [](Max a, Max b) {
         return Max{std::max(a.a2, b.a2), std::max(a.v2, b.v2)};
@@ -30,17 +31,16 @@ double TlsphSolid::stable_dt() const {
   return options_.cfl * dt_scale_ * dt;
 }
 
-void TlsphSolid::substep(double dt) {
+template <int D> void BasicTlsphSolid<D>::substep(double dt) {
   const std::size_t n = size();
   const double half = 0.5 * dt;
   // Velocity Verlet: first half kick and drift with a^n.
   parallel_for(n, [&](std::size_t i) {
     if (clamped_[i]) return;
-    vx_[i] += half * ax_[i], vy_[i] += half * ay_[i];
-    x_[i] += dt * vx_[i], y_[i] += dt * vy_[i];
+    for (int k = 0; k < D; ++k) v_[k][i] += half * a_[k][i], x_[k][i] += dt * v_[k][i];
   });
   double work = 0.0; // f . dx of the loaded particles, in a fixed order
-  for (const std::uint32_t i : loaded_) work += dt * (fx_[i] * vx_[i] + fy_[i] * vy_[i]);
+  for (const std::uint32_t i : loaded_) work += dt * at(f_, i).dot(velocity(i));
   ++step_;
   time_ += dt;
   prescribe(time_);
@@ -49,12 +49,12 @@ void TlsphSolid::substep(double dt) {
   // Second half kick with a^{n+1}.
   parallel_for(n, [&](std::size_t i) {
     if (clamped_[i]) return;
-    vx_[i] += half * ax_[i], vy_[i] += half * ay_[i];
+    for (int k = 0; k < D; ++k) v_[k][i] += half * a_[k][i];
   });
   external_work_ += work;
 }
 
-int TlsphSolid::advance(double t, double dt) {
+template <int D> int BasicTlsphSolid<D>::advance(double t, double dt) {
   if (!(std::abs(t - time_) <= 1e-12 * (1.0 + std::abs(t)))) {
     std::ostringstream s;
     s.precision(17);
@@ -78,5 +78,12 @@ int TlsphSolid::advance(double t, double dt) {
   }
   return steps;
 }
+
+template double BasicTlsphSolid<2>::stable_dt() const;
+template double BasicTlsphSolid<3>::stable_dt() const;
+template void BasicTlsphSolid<2>::substep(double);
+template void BasicTlsphSolid<3>::substep(double);
+template int BasicTlsphSolid<2>::advance(double, double);
+template int BasicTlsphSolid<3>::advance(double, double);
 
 } // namespace fsi::tlsph

@@ -1,6 +1,6 @@
 // The solid's coupling interface: nodes on the tagged outline attached to surface particles,
 // order-1 edges between them, and their positions, velocities, accelerations and normals as
-// the solid deforms.
+// the solid deforms. 2-D only (the members require D == 2).
 #include <Eigen/LU>
 #include <algorithm>
 #include <limits>
@@ -20,7 +20,8 @@ double point_segment_distance(const Vec2& p, const Vec2& a, const Vec2& b, doubl
 
 } // namespace
 
-void TlsphSolid::build_interface(const SolidGeometry& geometry) {
+template <int D>
+void BasicTlsphSolid<D>::build_interface(const Geometry& geometry) requires(D == 2) {
   const auto& outline = geometry.outline;
   const std::size_t m = outline.size(), n = size();
   if (m == 0) return;
@@ -44,7 +45,7 @@ void TlsphSolid::build_interface(const SolidGeometry& geometry) {
   std::vector<Node> nodes;
   const double band = options_.dp; // the outer lattice layer lies at dp / 2 from the outline
   for (std::size_t i = 0; i < n; ++i) {
-    const Vec2 X(X0_[i], Y0_[i]);
+    const Vec2 X = at(X0_, i);
     // The nearest tagged edge places the particle along the outline (a corner particle
     // belongs to every edge within the band; the first tagged one wins a tie). Only a
     // projection inside the edge counts: past a concave vertex (an interface edge ending on a
@@ -86,7 +87,7 @@ void TlsphSolid::build_interface(const SolidGeometry& geometry) {
   for (const Node& node : nodes) {
     interface_.push_back(node.i);
     interface_n0_.push_back(node.n0);
-    interface_offset_.push_back(node.X - Vec2(X0_[node.i], Y0_[node.i]));
+    interface_offset_.push_back(node.X - at(X0_, node.i));
     interface_mesh_.X0.push_back(node.X);
   }
   // Order-1 edges between neighbours along the outline (dp apart along an edge, 1.5 dp from a
@@ -105,12 +106,12 @@ void TlsphSolid::build_interface(const SolidGeometry& geometry) {
     interface_.push_back(static_cast<std::uint32_t>(i));
     interface_n0_.push_back(Vec2::Zero());
     interface_offset_.push_back(Vec2::Zero());
-    interface_mesh_.X0.push_back(Vec2(X0_[i], Y0_[i]));
+    interface_mesh_.X0.push_back(at(X0_, i));
     interface_mesh_.particle_volume.push_back(V0_[i]);
   }
 }
 
-InterfaceMesh TlsphSolid::interface_mesh() const {
+template <int D> InterfaceMesh BasicTlsphSolid<D>::interface_mesh() const requires(D == 2) {
   return interface_mesh_;
 }
 
@@ -118,30 +119,33 @@ InterfaceMesh TlsphSolid::interface_mesh() const {
 // particle's (the rotation of the dp/2 offset neglected, O(dp |grad v|)). A node on an
 // odd-image clamp stays at its reference position (the images are a device of the free
 // particles' stencils; the clamp itself is rigid).
-std::vector<Vec2> TlsphSolid::interface_positions() const {
+template <int D>
+std::vector<Vec2> BasicTlsphSolid<D>::interface_positions() const requires(D == 2) {
   std::vector<Vec2> out;
   for (std::size_t k = 0; k < interface_.size(); ++k) {
     const auto i = interface_[k];
     if (imaged(i)) {
-      out.push_back(Vec2(X0_[i], Y0_[i]) + interface_offset_[k]);
+      out.push_back(at(X0_, i) + interface_offset_[k]);
       continue;
     }
-    out.push_back(Vec2(x_[i], y_[i]) + deformation_gradient(i) * interface_offset_[k]);
+    out.push_back(at(x_, i) + deformation_gradient(i) * interface_offset_[k]);
   }
   return out;
 }
-std::vector<Vec2> TlsphSolid::interface_velocities() const {
+template <int D>
+std::vector<Vec2> BasicTlsphSolid<D>::interface_velocities() const requires(D == 2) {
   std::vector<Vec2> out;
-  for (const auto i : interface_) out.push_back(imaged(i) ? Vec2::Zero() : Vec2(vx_[i], vy_[i]));
+  for (const auto i : interface_) out.push_back(imaged(i) ? Vec2::Zero() : at(v_, i));
   return out;
 }
-std::vector<Vec2> TlsphSolid::interface_accelerations() const {
+template <int D>
+std::vector<Vec2> BasicTlsphSolid<D>::interface_accelerations() const requires(D == 2) {
   std::vector<Vec2> out;
-  for (const auto i : interface_) out.push_back(imaged(i) ? Vec2::Zero() : Vec2(ax_[i], ay_[i]));
+  for (const auto i : interface_) out.push_back(imaged(i) ? Vec2::Zero() : at(a_, i));
   return out;
 }
 
-std::vector<Vec2> TlsphSolid::interface_normals() const {
+template <int D> std::vector<Vec2> BasicTlsphSolid<D>::interface_normals() const requires(D == 2) {
   std::vector<Vec2> out;
   for (std::size_t k = 0; k < interface_.size(); ++k) {
     if (interface_n0_[k].isZero()) { // a particle node
@@ -153,5 +157,12 @@ std::vector<Vec2> TlsphSolid::interface_normals() const {
   }
   return out;
 }
+
+template void BasicTlsphSolid<2>::build_interface(const Geometry&);
+template InterfaceMesh BasicTlsphSolid<2>::interface_mesh() const;
+template std::vector<Vec2> BasicTlsphSolid<2>::interface_positions() const;
+template std::vector<Vec2> BasicTlsphSolid<2>::interface_velocities() const;
+template std::vector<Vec2> BasicTlsphSolid<2>::interface_accelerations() const;
+template std::vector<Vec2> BasicTlsphSolid<2>::interface_normals() const;
 
 } // namespace fsi::tlsph

@@ -2,7 +2,9 @@
 // acceleration), its reference-point lookup, and its state (save, restore, checkpoint).
 #include "solid_tlsph/solid.hpp"
 
+#include <array>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "fsi/core/error.hpp"
@@ -19,9 +21,36 @@ template <class T> void require(bool ok, const std::string& key, T value, const 
   throw InputError(s.str());
 }
 
+/// The reals NAME0 per axis ("X0", "Y0" (, "Z0")): reference positions, not state.
+template <int D> particles::VectorField<D> reference_vector(particles::FieldSet& fields) {
+  static constexpr std::array<const char*, 3> axes{"X0", "Y0", "Z0"};
+  particles::VectorField<D> v;
+  for (std::size_t k = 0; k < D; ++k) v.component[k] = &fields.add_real(axes[k], false);
+  return v;
+}
+
+/// The reals name + "ij" of a D x D matrix, row-major (B00, B01, B10, B11), not state.
+template <int D>
+std::array<std::vector<double>*, D * D> tensor(particles::FieldSet& fields,
+                                               const std::string& name) {
+  std::array<std::vector<double>*, D * D> t;
+  for (int i = 0; i < D; ++i)
+    for (int j = 0; j < D; ++j)
+      t[static_cast<std::size_t>(D * i + j)] =
+          &fields.add_real(name + std::to_string(i) + std::to_string(j), false);
+  return t;
+}
+
+template <int D> auto make_law(const materials::MaterialOptions& o) {
+  if constexpr (D == 2)
+    return materials::make_material(o);
+  else
+    return materials::make_material_3d(o);
+}
+
 } // namespace
 
-void validate(const TlsphOptions& o) {
+template <int D> void validate(const BasicTlsphOptions<D>& o) {
   materials::validate(o.material);
   require(o.dp > 0.0, "dp", o.dp, "> 0");
   require(o.h_factor >= 1.0 && o.h_factor <= 2.0, "h_factor", o.h_factor, "in [1, 2]");
@@ -45,19 +74,16 @@ void validate(const TlsphOptions& o) {
   }
 }
 
-TlsphSolid::TlsphSolid(SolidGeometry geometry, TlsphOptions options)
-    : options_(std::move(options)), x_(fields_.add_real("x")), y_(fields_.add_real("y")),
-      vx_(fields_.add_real("vx")), vy_(fields_.add_real("vy")), ax_(fields_.add_real("ax")),
-      ay_(fields_.add_real("ay")), fx_(fields_.add_real("fx")), fy_(fields_.add_real("fy")),
-      X0_(fields_.add_real("X0", false)), Y0_(fields_.add_real("Y0", false)),
-      V0_(fields_.add_real("V0", false)), B00_(fields_.add_real("B00", false)),
-      B01_(fields_.add_real("B01", false)), B10_(fields_.add_real("B10", false)),
-      B11_(fields_.add_real("B11", false)), clamped_(fields_.add_flag("clamp", false)),
-      surface_(fields_.add_flag("surface", false)), F00_(fields_.add_real("F00", false)),
-      F01_(fields_.add_real("F01", false)), F10_(fields_.add_real("F10", false)),
-      F11_(fields_.add_real("F11", false)), PB00_(fields_.add_real("PB00", false)),
-      PB01_(fields_.add_real("PB01", false)), PB10_(fields_.add_real("PB10", false)),
-      PB11_(fields_.add_real("PB11", false)) {
+// The fields are registered in the order of the 2-D solid before it was written for D (x, y,
+// vx, vy, ..., F11, PB00 .. PB11): the same names, checkpoints and output.
+template <int D>
+BasicTlsphSolid<D>::BasicTlsphSolid(Geometry geometry, Options options)
+    : options_(std::move(options)), x_(particles::add_vector<D>(fields_, "")),
+      v_(particles::add_vector<D>(fields_, "v")), a_(particles::add_vector<D>(fields_, "a")),
+      f_(particles::add_vector<D>(fields_, "f")), X0_(reference_vector<D>(fields_)),
+      V0_(fields_.add_real("V0", false)), B_(tensor<D>(fields_, "B")),
+      clamped_(fields_.add_flag("clamp", false)), surface_(fields_.add_flag("surface", false)),
+      F_(tensor<D>(fields_, "F")), PB_(tensor<D>(fields_, "PB")) {
   validate(options_);
   const std::size_t n = geometry.X0.size();
   if (n == 0) throw InputError("tlsph: the geometry holds no particles");
@@ -67,7 +93,11 @@ TlsphSolid::TlsphSolid(SolidGeometry geometry, TlsphOptions options)
   if (geometry.outline_tags.size() != geometry.outline.size())
     throw InputError("tlsph: outline has " + std::to_string(geometry.outline.size()) +
                      " edges but " + std::to_string(geometry.outline_tags.size()) + " tags");
-  material_ = materials::make_material(options_.material);
+  if constexpr (D == 3)
+    if (!geometry.outline.empty() || options_.interface_particles)
+      throw InputError("tlsph: a 3-D solid has no coupling interface yet (give no outline and "
+                       "interface_particles = false)");
+  material_ = make_law<D>(options_.material);
   rho0_ = options_.material.density;
   h_ = options_.h_factor * options_.dp;
   {
@@ -79,8 +109,7 @@ TlsphSolid::TlsphSolid(SolidGeometry geometry, TlsphOptions options)
   for (std::size_t i = 0; i < n; ++i) {
     if (!(geometry.V0[i] > 0.0))
       throw InputError("tlsph: particle " + std::to_string(i) + " has volume <= 0");
-    X0_[i] = x_[i] = geometry.X0[i].x();
-    Y0_[i] = y_[i] = geometry.X0[i].y();
+    for (int k = 0; k < D; ++k) X0_[k][i] = x_[k][i] = geometry.X0[i](k);
     V0_[i] = geometry.V0[i];
     for (std::size_t k = 0; k < options_.clamps.size(); ++k)
       if (options_.clamps[k].contains(geometry.X0[i])) {
@@ -89,11 +118,12 @@ TlsphSolid::TlsphSolid(SolidGeometry geometry, TlsphOptions options)
       }
   }
   build_reference();
-  build_interface(geometry);
+  if constexpr (D == 2) build_interface(geometry);
   build_images();
   if (quadratic_ && options_.hourglass > 0.0) { // k_ab = hourglass E V_a w_ab; not on images
     const std::size_t pairs = pair_b_.size();
-    pair_k_.assign(pairs, 0.0), pair_rx_.assign(pairs, 0.0), pair_ry_.assign(pairs, 0.0);
+    pair_k_.assign(pairs, 0.0);
+    for (auto& r : pair_r_) r.assign(pairs, 0.0);
     const double k = options_.hourglass * options_.material.youngs_modulus;
     for (std::size_t a = 0; a < n; ++a)
       if (!imaged(a))
@@ -105,40 +135,42 @@ TlsphSolid::TlsphSolid(SolidGeometry geometry, TlsphOptions options)
   compute_acceleration();
 }
 
-TlsphSolid::~TlsphSolid() = default;
+template <int D> BasicTlsphSolid<D>::~BasicTlsphSolid() = default;
 
-std::size_t TlsphSolid::nearest_particle(const Vec2& X) const {
+template <int D> std::size_t BasicTlsphSolid<D>::nearest_particle(const Vec& X) const {
   std::size_t best = 0;
   double d2 = std::numeric_limits<double>::max();
   for (std::size_t i = 0; i < size(); ++i) {
-    const double d = (Vec2(X0_[i], Y0_[i]) - X).squaredNorm();
+    const double d = (at(X0_, i) - X).squaredNorm();
     if (d < d2) d2 = d, best = i;
   }
   return best;
 }
 
-TlsphState TlsphSolid::save() const {
+template <int D> TlsphState BasicTlsphSolid<D>::save() const {
   TlsphState s;
   fields_.save(s.fields);
   s.time = time_, s.step = step_, s.external_work = external_work_;
   return s;
 }
 
-void TlsphSolid::restore(const TlsphState& s) {
+template <int D> void BasicTlsphSolid<D>::restore(const TlsphState& s) {
   fields_.restore(s.fields);
   time_ = s.time, step_ = s.step, external_work_ = s.external_work;
   update_loaded();
   compute_stress(); // F and P B0 are scratch: a later set_interface_loads() needs them current
 }
 
-void TlsphSolid::write_state(StateArchive& archive, const std::string& prefix) const {
+template <int D>
+void BasicTlsphSolid<D>::write_state(StateArchive& archive, const std::string& prefix) const {
   fields_.write_state(archive, prefix + "particles/");
   archive.put_real(prefix + "time", time_);
   archive.put_integer(prefix + "step", step_);
   archive.put_real(prefix + "external_work", external_work_);
 }
 
-void TlsphSolid::read_state(const StateArchive& archive, const std::string& prefix) {
+template <int D>
+void BasicTlsphSolid<D>::read_state(const StateArchive& archive, const std::string& prefix) {
   // Checked before reading: FieldSet::read_state resizes every array, the reference ones too.
   archive.reals(prefix + "particles/x", size());
   fields_.read_state(archive, prefix + "particles/");
@@ -148,5 +180,10 @@ void TlsphSolid::read_state(const StateArchive& archive, const std::string& pref
   update_loaded();
   compute_stress();
 }
+
+template void validate<2>(const BasicTlsphOptions<2>&);
+template void validate<3>(const BasicTlsphOptions<3>&);
+template class BasicTlsphSolid<2>;
+template class BasicTlsphSolid<3>;
 
 } // namespace fsi::tlsph

@@ -4,7 +4,10 @@
 // Neighbours, kernel gradients grad0 W_ab and the correction matrices B0_a (eq. 14) are computed
 // once in the reference configuration; each step evaluates F_a (eq. 13), S(E) from materials/,
 // P = F S (eq. 7) and the momentum equation (eq. 12), integrated by velocity Verlet in two half
-// steps. Units SI, per unit thickness (forces in N/m, energies in J/m).
+// steps. Units SI, per unit thickness in 2-D (forces in N/m, energies in J/m). Written once for
+// D = 2 and 3 (docs/architecture.md, "Two and three dimensions"); the coupling interface (order-1
+// edges along the outline) is 2-D only.
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -17,6 +20,7 @@
 #include "materials/energies.hpp"
 #include "materials/material.hpp"
 #include "particles/field_set.hpp"
+#include "particles/vector_field.hpp"
 #include "solid_tlsph/geometry.hpp"
 
 namespace fsi {
@@ -29,10 +33,10 @@ namespace fsi::tlsph {
 /// position and velocity prescribed. Without `position`/`velocity` (a fixed clamp) they stay at
 /// X0 with v = 0; with them (a rigid motion such as a rolling tank's clamp) x = position(X0, t),
 /// v = velocity(X0, t). Both or neither must be set.
-struct Clamp {
-  std::function<bool(const Vec2& X0)> contains;
-  std::function<Vec2(const Vec2& X0, double t)> position;
-  std::function<Vec2(const Vec2& X0, double t)> velocity;
+template <int D> struct BasicClamp {
+  std::function<bool(const VecD<D>& X0)> contains;
+  std::function<VecD<D>(const VecD<D>& X0, double t)> position;
+  std::function<VecD<D>(const VecD<D>& X0, double t)> velocity;
   /// Fixed clamps (the default form; a moving clamp always holds its particles): u = 0 on the
   /// clamp's face, the line through `face_point` with normal `face_normal`, instead of at the
   /// clamped particles. Each clamped particle at the mirror position of a free particle moves
@@ -44,11 +48,14 @@ struct Clamp {
   /// docs/solid_tlsph.md).
   bool odd_image = true;
   /// The face; when unset (face_normal = 0) it is found from the reference lattice: the line
-  /// through the midpoints of the clamped-free particle pairs dp apart, which must all be
-  /// perpendicular to it and on it (InputError otherwise: set the face, or odd_image = false).
-  Vec2 face_point{0.0, 0.0};
-  Vec2 face_normal{0.0, 0.0};
+  /// (plane in 3-D) through the midpoints of the clamped-free particle pairs dp apart, which
+  /// must all be perpendicular to it and on it (InputError otherwise: set the face, or
+  /// odd_image = false).
+  VecD<D> face_point = VecD<D>::Zero();
+  VecD<D> face_normal = VecD<D>::Zero();
 };
+using Clamp = BasicClamp<2>;
+using Clamp3 = BasicClamp<3>;
 
 /// A probe's displacement as a fixed combination of particle displacements,
 /// u = sum_k weights[k] u(particles[k]) (the nearest particle: one entry of weight 1).
@@ -72,13 +79,13 @@ enum class GradientCorrection {
   quadratic,
 };
 
-struct TlsphOptions {
+template <int D> struct BasicTlsphOptions {
   materials::MaterialOptions material;
-  double dp = 0.01;              ///< lattice spacing dp_S [m], > 0 (the geometry's spacing)
-  double h_factor = 1.15;        ///< h = h_factor dp, in [1, 2] (notes: 1.15; hydrostatic case 1.3)
-  Vec2 gravity{0.0, 0.0};        ///< g [m/s^2]
-  double cfl = 0.6;              ///< dt_s = cfl min(sqrt(h/|a|), h/(c_s + |v|)), in (0, 1]
-  bool kernel_correction = true; ///< B0 of eq. 14; false: B0 = I (standard SPH, for tests)
+  double dp = 0.01;       ///< lattice spacing dp_S [m], > 0 (the geometry's spacing)
+  double h_factor = 1.15; ///< h = h_factor dp, in [1, 2] (notes: 1.15; hydrostatic case 1.3)
+  VecD<D> gravity = VecD<D>::Zero(); ///< g [m/s^2]
+  double cfl = 0.6;                  ///< dt_s = cfl min(sqrt(h/|a|), h/(c_s + |v|)), in (0, 1]
+  bool kernel_correction = true;     ///< B0 of eq. 14; false: B0 = I (standard SPH, for tests)
   /// Order of the gradient correction (needs kernel_correction); `linear` is the paper's form,
   /// `quadratic` (the default) takes ~ 2.6 x its sub-steps (dt_scale()) and meets the beam
   /// targets of docs/solid_tlsph.md with the default clamp.
@@ -98,18 +105,21 @@ struct TlsphOptions {
   /// integration, which point loads excite next to an odd-image clamp (docs/solid_tlsph.md,
   /// "Coupled").
   double hourglass = 0.5;
-  std::vector<Clamp> clamps;
+  std::vector<BasicClamp<D>> clamps;
   /// Outline tags whose surface particles form the coupling interface; empty: every edge.
   std::vector<std::string> interface_tags;
   /// Also hand every particle to the coupling as an interface node after the outline's nodes
   /// (InterfaceMesh::particle_volume): a particle fluid then takes the solid's own particles as
   /// its boundary (the RKGC paper's pair); a fluid that uses the edges ignores them.
   bool interface_particles = false;
-  int max_neighbors = 64; ///< row capacity of the reference neighbour list, >= 8
+  /// Row capacity of the reference neighbour list, >= 8 (a full 3-D row at h = 1.15 dp: 56).
+  int max_neighbors = D == 2 ? 64 : 128;
 };
+using TlsphOptions = BasicTlsphOptions<2>;
+using TlsphOptions3 = BasicTlsphOptions<3>;
 
 /// Throws InputError naming the field, its value and the allowed range.
-void validate(const TlsphOptions& options);
+template <int D> void validate(const BasicTlsphOptions<D>& options);
 
 /// The keys a user sets, each once (dp is required; fsi/core/options.hpp); the material's are
 /// materials::visit_options.
@@ -125,17 +135,23 @@ struct TlsphState {
 
 using TlsphEnergies = materials::SolidEnergies;
 
-class TlsphSolid {
+template <int D> class BasicTlsphSolid {
 public:
+  using Vec = VecD<D>;
+  using Mat = MatD<D>;
+  using Geometry = BasicSolidGeometry<D>;
+  using Options = BasicTlsphOptions<D>;
+
   /// Validates the options and the geometry, builds the reference neighbour list, grad0 W V_b
-  /// per pair and B0 (eq. 14), marks clamped and surface particles, builds the interface, and
-  /// starts at rest at X0 with a^0 from eq. 12 (gravity only). Throws InputError (bad options,
-  /// empty geometry, a neighbour row over max_neighbors, a singular moment matrix).
-  TlsphSolid(SolidGeometry geometry, TlsphOptions options);
-  ~TlsphSolid();
+  /// per pair and B0 (eq. 14), marks clamped and surface particles, builds the interface (2-D;
+  /// in 3-D the outline must be empty and interface_particles false), and starts at rest at X0
+  /// with a^0 from eq. 12 (gravity only). Throws InputError (bad options, empty geometry, a
+  /// neighbour row over max_neighbors, a singular moment matrix).
+  BasicTlsphSolid(Geometry geometry, Options options);
+  ~BasicTlsphSolid();
 
   std::size_t size() const { return fields_.size(); }
-  const TlsphOptions& options() const { return options_; }
+  const Options& options() const { return options_; }
   double h() const { return h_; }
   double sound_speed() const { return c_s_; } ///< c_s = sqrt(K / rho0)
   double time() const { return time_; }
@@ -155,56 +171,61 @@ public:
   /// max_a sum_b |g~_ab| (its one-sided surface stencils raise the highest frequency).
   double dt_scale() const { return dt_scale_; }
 
-  // --- coupling interface ---
+  // --- coupling interface (2-D) ---
   /// Nodes on the tagged outline edges (each surface particle's projection onto its nearest
   /// tagged edge, and the edges' vertices), ordered along the outline (counter-clockwise: solid
   /// on the left of a -> b), order-1 edges between neighbours along it. Each node is attached to
   /// a particle (interface_particles(); clamped ones included: their loads are reactions).
   /// With TlsphOptions::interface_particles every particle follows as a node of its own (at its
   /// position, with its volume V0; on no edge).
-  InterfaceMesh interface_mesh() const;
+  InterfaceMesh interface_mesh() const requires(D == 2);
   /// Particle each interface node k is attached to (a corner particle carries several).
   const std::vector<std::uint32_t>& interface_particles() const { return interface_; }
   /// Current x, v, a of the interface nodes.
-  std::vector<Vec2> interface_positions() const;
-  std::vector<Vec2> interface_velocities() const;
-  std::vector<Vec2> interface_accelerations() const;
+  std::vector<Vec2> interface_positions() const requires(D == 2);
+  std::vector<Vec2> interface_velocities() const requires(D == 2);
+  std::vector<Vec2> interface_accelerations() const requires(D == 2);
   /// Outward unit normals of the interface nodes in the current configuration: the reference
   /// normal n0 (from the outline) mapped by the cofactor of F, n = F^-T n0 / |F^-T n0|
   /// (Nanson's formula; the rotation R of F = R U for pure rotations); zero for particle nodes.
-  std::vector<Vec2> interface_normals() const;
+  std::vector<Vec2> interface_normals() const requires(D == 2);
   /// Nodal forces on the interface nodes [N/m], held over the next advance(); they enter
   /// eq. 12 as a^{F:S} = f / m. Clamped nodes ignore them (reactions).
-  void set_interface_loads(const std::vector<Vec2>& forces);
-  /// External nodal forces on any particles (e.g. a test's tip load) [N/m], size() entries.
-  void set_external_forces(const std::vector<Vec2>& forces);
+  void set_interface_loads(const std::vector<Vec2>& forces) requires(D == 2);
+  /// External nodal forces on any particles (e.g. a test's tip load) [N/m in 2-D, N in 3-D],
+  /// size() entries.
+  void set_external_forces(const std::vector<Vec>& forces);
 
   // --- output ---
-  Vec2 position(std::size_t i) const { return {x_[i], y_[i]}; }
-  Vec2 reference_position(std::size_t i) const { return {X0_[i], Y0_[i]}; }
-  Vec2 displacement(std::size_t i) const { return {x_[i] - X0_[i], y_[i] - Y0_[i]}; }
-  Vec2 velocity(std::size_t i) const { return {vx_[i], vy_[i]}; }
-  Vec2 acceleration(std::size_t i) const { return {ax_[i], ay_[i]}; }
+  Vec position(std::size_t i) const { return at(x_, i); }
+  Vec reference_position(std::size_t i) const { return at(X0_, i); }
+  Vec displacement(std::size_t i) const {
+    Vec u;
+    for (int k = 0; k < D; ++k) u(k) = x_[k][i] - X0_[k][i];
+    return u;
+  }
+  Vec velocity(std::size_t i) const { return at(v_, i); }
+  Vec acceleration(std::size_t i) const { return at(a_, i); }
   double volume(std::size_t i) const { return V0_[i]; }
   bool clamped(std::size_t i) const { return clamped_[i] != 0; }
   bool surface(std::size_t i) const { return surface_[i] != 0; }
   /// F_a of eq. 13 at the current positions.
-  Mat2 deformation_gradient(std::size_t i) const;
-  Mat2 correction_matrix(std::size_t i) const;
+  Mat deformation_gradient(std::size_t i) const;
+  Mat correction_matrix(std::size_t i) const;
   std::vector<double> det_F() const;
   /// Von Mises of the Cauchy stress sigma = F S F^T / J (plane: with sigma_33 from the law).
   std::vector<double> von_mises() const;
   /// Index of the particle whose reference position is nearest to X0 (a probe).
-  std::size_t nearest_particle(const Vec2& X0) const;
+  std::size_t nearest_particle(const Vec& X0) const;
   /// Kernel interpolation at reference point X0 with the linear correction (probe.cpp): the
   /// weighted least-squares fit u(X) = a + G (X - X0) over the particles b within 2h, weights
   /// W(|X_b - X0|) V_b, gives u(X0) = a = sum_b c_b u_b. Exact for linear displacement fields
   /// (at the surface too); Shepard's sum u_b W V_b / sum W V_b where the support is symmetric.
-  /// Throws InputError when the particles within 2h do not span the plane (X0 off the solid).
-  ProbeStencil interpolation_stencil(const Vec2& X0) const;
+  /// Throws InputError when the particles within 2h do not span the space (X0 off the solid).
+  ProbeStencil interpolation_stencil(const Vec& X0) const;
   /// sum_k weights[k] u(particles[k]).
-  Vec2 displacement_at(const ProbeStencil& stencil) const;
-  Vec2 interpolate_displacement(const Vec2& X0) const {
+  Vec displacement_at(const ProbeStencil& stencil) const;
+  Vec interpolate_displacement(const Vec& X0) const {
     return displacement_at(interpolation_stencil(X0));
   }
   TlsphEnergies energies() const;
@@ -212,8 +233,8 @@ public:
   /// Sets positions and velocities (e.g. an initial velocity or a prescribed displacement field
   /// in a test), then recomputes F, stress and accelerations. Clamped particles keep their
   /// prescribed values. Sizes must be size().
-  void set_positions(const std::vector<Vec2>& x);
-  void set_velocities(const std::vector<Vec2>& v);
+  void set_positions(const std::vector<Vec>& x);
+  void set_velocities(const std::vector<Vec>& v);
 
   TlsphState save() const;
   /// Returns to a saved state (positions, velocities, accelerations, pending loads, time, step).
@@ -224,17 +245,27 @@ public:
   void read_state(const StateArchive& archive, const std::string& prefix);
 
 private:
+  using Field = particles::VectorField<D>;
+  /// The D x D components (i, j) of a per-particle matrix, row-major.
+  using Tensor = std::array<std::vector<double>*, D * D>;
+  static Vec at(const Field& f, std::size_t i) {
+    Vec v;
+    for (int k = 0; k < D; ++k) v(k) = f[k][i];
+    return v;
+  }
+
   void build_reference();
   /// g~_ab and the reverse pair index of GradientCorrection::quadratic.
   void build_quadratic();
-  void build_interface(const SolidGeometry& geometry);
+  void build_interface(const Geometry& geometry) requires(D == 2);
   /// Partners of the Clamp::odd_image particles.
   void build_images();
   /// The face of fixed clamp k (its given one, or found from the lattice), oriented outwards
   /// from the clamp.
-  void clamp_face(std::size_t k, Vec2& point, Vec2& normal) const;
-  /// Residuals r_ab of particle a's quadratic fit (its row of pairs) at the current positions.
-  void hourglass_residuals(std::size_t a, double* rx, double* ry) const;
+  void clamp_face(std::size_t k, Vec& point, Vec& normal) const;
+  /// Residuals r_ab of particle a's quadratic fit (its row of pairs) at the current positions;
+  /// r[k] holds component k for the row's pairs.
+  void hourglass_residuals(std::size_t a, const std::array<double*, D>& r) const;
   /// True for a particle of a fixed odd-image clamp (no strain energy, not integrated).
   bool imaged(std::size_t i) const { return clamped_[i] && imaged_[clamped_[i] - 1u]; }
   /// F (eq. 13) and P B0 per particle; throws RunError on det F <= 0 or NaN.
@@ -242,44 +273,47 @@ private:
   /// a = eq. 12 + gravity + external + damping (needs compute_stress()).
   void compute_acceleration();
   void prescribe(double t);
-  /// Copies `values` (size() entries, else InputError naming `what`) into (ex, ey) at the free
+  /// Copies `values` (size() entries, else InputError naming `what`) into `field` at the free
   /// particles, then moves the odd images.
-  void set_free(const std::vector<Vec2>& values, std::vector<double>& ex, std::vector<double>& ey,
-                const char* what);
+  void set_free(const std::vector<Vec>& values, Field& field, const char* what);
   void substep(double dt);
   void update_loaded();
 
-  TlsphOptions options_;
-  std::unique_ptr<materials::Material> material_;
+  Options options_;
+  std::unique_ptr<materials::MaterialInterface<D>> material_;
   double h_ = 0.0, c_s_ = 0.0, rho0_ = 0.0;
   double time_ = 0.0, external_work_ = 0.0;
   long step_ = 0;
 
   particles::FieldSet fields_;
   // State: current position, velocity, acceleration, pending external forces.
-  std::vector<double>&x_, &y_, &vx_, &vy_, &ax_, &ay_, &fx_, &fy_;
+  Field x_, v_, a_, f_;
   // Reference data (not state): X0, V0, B0, clamp index (0 = free, k + 1 = clamps[k]), surface.
-  std::vector<double>&X0_, &Y0_, &V0_, &B00_, &B01_, &B10_, &B11_;
+  Field X0_;
+  std::vector<double>& V0_;
+  Tensor B_;
   std::vector<std::uint8_t>&clamped_, &surface_;
   // Scratch: F and P B0 per particle (recomputed every step).
-  std::vector<double>&F00_, &F01_, &F10_, &F11_, &PB00_, &PB01_, &PB10_, &PB11_;
+  Tensor F_, PB_;
 
   // Reference neighbour pairs, CSR by particle: neighbour b and grad0 W_ab V_b (eq. 14).
   std::vector<std::uint32_t> pair_start_, pair_b_;
-  std::vector<double> pair_gx_, pair_gy_, pair_dwr_; // grad0 W_ab V_b, |dW_ab| / r_ab V_b
+  std::array<std::vector<double>, D> pair_g_; // grad0 W_ab V_b per component
+  std::vector<double> pair_dwr_;              // |dW_ab| / r_ab V_b
   // GradientCorrection::quadratic only: the corrected gradient g~_ab and the index of the
   // reverse pair (b, a) in b's row.
-  std::vector<double> pair_qx_, pair_qy_;
+  std::array<std::vector<double>, D> pair_q_;
   std::vector<std::uint32_t> pair_rev_;
   bool quadratic_ = false;
-  // TlsphOptions::hourglass only: per pair the fit operator s_ab = w_ab h^2 A_a^-1 p_ab (5
-  // values), the penalty stiffness k_ab = hourglass E V_a w_ab (row of a; 0 on image rows) and
-  // the residual r_ab (scratch, compute_stress).
-  std::vector<double> pair_fit_, pair_k_, pair_rx_, pair_ry_;
+  // TlsphOptions::hourglass only: per pair the fit operator s_ab = w_ab h^2 A_a^-1 p_ab (one
+  // value per monomial), the penalty stiffness k_ab = hourglass E V_a w_ab (row of a; 0 on
+  // image rows) and the residual r_ab (scratch, compute_stress).
+  std::vector<double> pair_fit_, pair_k_;
+  std::array<std::vector<double>, D> pair_r_;
   // Clamp::odd_image: the free partner of each image particle (none = not an image), and the
   // image of each free particle; scratch force per unit mass of the images.
   std::vector<std::size_t> image_partner_, image_of_;
-  std::vector<double> image_ax_, image_ay_;
+  std::array<std::vector<double>, D> image_a_;
   std::vector<std::uint8_t> imaged_; // per clamp: a fixed clamp with odd_image
   bool images_ = false;
   double dt_scale_ = 1.0; // stable-step factor of the quadratic correction (build_quadratic)
@@ -290,5 +324,8 @@ private:
   std::vector<Vec2> interface_offset_;   // node X minus its particle's X0 (onto the outline)
   InterfaceMesh interface_mesh_;
 };
+
+using TlsphSolid = BasicTlsphSolid<2>;
+using TlsphSolid3 = BasicTlsphSolid<3>;
 
 } // namespace fsi::tlsph
