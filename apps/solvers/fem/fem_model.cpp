@@ -1,5 +1,6 @@
 #include "fem/fem_model.hpp"
 
+#include "fem/fe_adapter.hpp"
 #include "fsi/core/error.hpp"
 #include "fsi_app/finite_guard.hpp"
 #include "fsi_app/wall_motion.hpp"
@@ -143,48 +144,19 @@ std::unique_ptr<fem::Structure> build_structure(const Scene& scene, const Struct
   return structure;
 }
 
-// S (eq. 67): interface loads in (as FE nodal forces, eq. 59); FE node motion out (eqs. 60-62).
-// It advances the model itself, so the model's Newton counters cover coupled runs too.
-class FemModel::Adapter final : public coupling::StructureSolver {
+// S (eq. 67) on the T6 structure; it advances the model, so the model's Newton counters cover
+// coupled runs too, and checkpoints the model with them. save_state / restore_state do not roll
+// the counters back: they count every solve, re-run evaluations too.
+class FemModel::Adapter final : public FeAdapter {
 public:
   explicit Adapter(FemModel& model)
-      : model_(model),
-        forces_(fem::Vector::Zero(2 * static_cast<Eigen::Index>(model.structure().num_nodes()))) {}
-  void initialize() override {}
-  void set_interface_loads(const coupling::InterfaceLoads& loads) override {
-    forces_.setZero();
-    for (std::size_t k = 0; k < loads.size(); ++k) { // eq. 59
-      const int K = model_.interface_.fe_node[k];
-      forces_[2 * K] = loads.f[k].x();
-      forces_[2 * K + 1] = loads.f[k].y();
-    }
-    model_.structure().set_external_forces(forces_);
-  }
+      : FeAdapter(model.structure(), model.interface_), model_(model) {}
   void advance(double t, double dt) override { model_.advance(t, dt); }
-  coupling::InterfaceMotion interface_motion() const override {
-    const fem::Structure& s = model_.structure();
-    const std::size_t n = model_.interface_.fe_node.size();
-    coupling::InterfaceMotion m = coupling::InterfaceMotion::zeros(n);
-    const auto& X = s.mesh().X;
-    const auto &u = s.displacement(), &v = s.velocity(), &a = s.acceleration();
-    for (std::size_t k = 0; k < n; ++k) { // eqs. 60-62
-      const int K = model_.interface_.fe_node[k];
-      m.x[k] = X[static_cast<std::size_t>(K)] + Vec2(u[2 * K], u[2 * K + 1]);
-      m.v[k] = Vec2(v[2 * K], v[2 * K + 1]);
-      m.a[k] = Vec2(a[2 * K], a[2 * K + 1]);
-    }
-    return m;
-  }
-  // The Newton counters are not rolled back: they count every solve, re-run evaluations too.
-  void save_state() override { saved_ = model_.structure().save(); }
-  void restore_state() override { model_.structure().restore(*saved_); }
   void write_state(StateArchive& archive) const override { model_.write_state(archive); }
   void read_state(const StateArchive& archive) override { model_.read_state(archive); }
 
 private:
   FemModel& model_;
-  fem::Vector forces_;
-  std::optional<fem::StructureState> saved_;
 };
 
 FemModel::FemModel(const Scene& scene, const StructureBlock& block)
