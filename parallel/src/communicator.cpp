@@ -36,8 +36,5 @@ std::int64_t Communicator::max(std::int64_t v) const {
 bool Communicator::all(bool v) const {
   return reduce(comm_, v ? 1 : 0, MPI_INT, MPI_LAND) != 0;
 }
-void Communicator::barrier() const {
-  MPI_Barrier(comm_);
-}
 
 } // namespace fsi::parallel

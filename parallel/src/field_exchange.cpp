@@ -45,7 +45,7 @@ void FieldExchange::send(const Communicator& comm, const particles::FieldSet& fi
   // Rank r's block: field after field, each the values of r's entries in plan order.
   for (std::size_t r = 0; r < p; ++r) {
     std::byte* out = send_buf_.data() + send_displ_[r];
-    fields.for_each_array([&](const std::string&, const auto& values) {
+    fields.for_each_array([&](const auto& values) {
       constexpr std::size_t bytes = sizeof(values[0]);
       for (int k = start_[r]; k < start_[r + 1]; ++k, out += bytes)
         std::memcpy(out, &values[index_[static_cast<std::size_t>(k)]], bytes);
@@ -62,7 +62,7 @@ void FieldExchange::unpack(particles::FieldSet& fields, std::size_t at) const {
     const std::byte* in = recv_buf_.data() + recv_displ_[r];
     const auto first = at + static_cast<std::size_t>(recv_start_[r]);
     const auto last = at + static_cast<std::size_t>(recv_start_[r + 1]);
-    fields.for_each_array([&](const std::string&, auto& values) {
+    fields.for_each_array([&](auto& values) {
       constexpr std::size_t bytes = sizeof(values[0]);
       for (std::size_t i = first; i < last; ++i, in += bytes) std::memcpy(&values[i], in, bytes);
     });

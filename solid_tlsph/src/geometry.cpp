@@ -9,6 +9,18 @@
 
 namespace fsi::tlsph {
 
+namespace {
+
+void require_positive_spacing(double dp) {
+  if (!(dp > 0.0)) {
+    std::ostringstream s;
+    s << "tlsph geometry: dp = " << dp << " must be > 0";
+    throw InputError(s.str());
+  }
+}
+
+} // namespace
+
 bool inside_polygon(const std::vector<Vec2>& polygon, const Vec2& X) {
   bool in = false;
   const std::size_t n = polygon.size();
@@ -23,11 +35,7 @@ bool inside_polygon(const std::vector<Vec2>& polygon, const Vec2& X) {
 
 SolidGeometry fill_polygon(const std::vector<Vec2>& polygon, std::vector<std::string> tags,
                            double dp, const Vec2& origin) {
-  if (!(dp > 0.0)) {
-    std::ostringstream s;
-    s << "tlsph geometry: dp = " << dp << " must be > 0";
-    throw InputError(s.str());
-  }
+  require_positive_spacing(dp);
   const std::size_t n = polygon.size();
   if (n < 3)
     throw InputError("tlsph geometry: a polygon needs at least 3 vertices, got " +
@@ -68,11 +76,7 @@ SolidGeometry fill_rectangle(const Vec2& lo, const Vec2& hi, double dp) {
 }
 
 SolidGeometry3 fill_box(const Vec3& lo, const Vec3& hi, double dp) {
-  if (!(dp > 0.0)) {
-    std::ostringstream s;
-    s << "tlsph geometry: dp = " << dp << " must be > 0";
-    throw InputError(s.str());
-  }
+  require_positive_spacing(dp);
   if (!(hi.x() > lo.x() && hi.y() > lo.y() && hi.z() > lo.z()))
     throw InputError("tlsph geometry: box needs hi > lo in x, y and z");
   // Points at dp/2 from the sides; a side that is not a multiple of dp keeps the whole layers.

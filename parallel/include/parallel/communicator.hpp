@@ -25,7 +25,6 @@ public:
   std::int64_t max(std::int64_t v) const;
   /// True on every rank iff `v` is true on every rank.
   bool all(bool v) const;
-  void barrier() const;
 
 private:
   MPI_Comm comm_;

@@ -30,9 +30,6 @@ public:
 
   std::size_t received() const { return received_; }
   std::size_t sent() const { return index_.size(); }
-  /// The planned indices (grouped by destination rank) and the start of each rank's group.
-  const std::vector<std::uint32_t>& index() const { return index_; }
-  const std::vector<int>& start() const { return start_; }
 
 private:
   std::vector<std::uint32_t> index_;

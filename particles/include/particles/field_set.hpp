@@ -55,18 +55,18 @@ public:
   std::vector<std::string> names() const;
   bool has(const std::string& name) const;
 
-  /// Calls f(name, values) on every registered array, state and scratch alike, in the order of
+  /// Calls f(values) on every registered array, state and scratch alike, in the order of
   /// names(); values is a std::vector of double, std::uint8_t or std::uint32_t. For code that
   /// moves whole particles between sets (parallel/: migration, halos) without a field list.
   template <class F> void for_each_array(F&& f) {
-    for (auto& a : reals_) f(a.name, a.values);
-    for (auto& a : flags_) f(a.name, a.values);
-    for (auto& a : indices_) f(a.name, a.values);
+    for (auto& a : reals_) f(a.values);
+    for (auto& a : flags_) f(a.values);
+    for (auto& a : indices_) f(a.values);
   }
   template <class F> void for_each_array(F&& f) const {
-    for (const auto& a : reals_) f(a.name, a.values);
-    for (const auto& a : flags_) f(a.name, a.values);
-    for (const auto& a : indices_) f(a.name, a.values);
+    for (const auto& a : reals_) f(a.values);
+    for (const auto& a : flags_) f(a.values);
+    for (const auto& a : indices_) f(a.values);
   }
 
 private:
