@@ -2,6 +2,7 @@
 
 #include "fsi/core/error.hpp"
 #include "fsi_app/scene.hpp"
+#include "geometry_erp/stl_reader.hpp"
 #include "structure_fem/gmsh_reader.hpp"
 
 #include <cctype>
@@ -54,7 +55,12 @@ std::string gmsh_input(const std::string& text) {
     std::istringstream in(text);
     fem::read_gmsh_t10(in, "fuzz.msh");
   });
-  return well_formed("gmsh", t10) ? t6 : t10;
+  const std::string stl = message_of([&] {
+    std::istringstream in(text);
+    erp::read_stl(in, "fuzz.msh");
+  });
+  if (!well_formed("gmsh", t10)) return t10;
+  return well_formed("gmsh", stl) ? t6 : stl;
 }
 
 namespace {

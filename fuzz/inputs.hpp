@@ -12,8 +12,9 @@ std::string scene_input(const std::string& text);
 /// Each line is one `--set` argument, applied to data/scenes/dam_break_elastic_obstacle.yaml.
 std::string override_input(const std::string& text);
 
-/// The whole text is a Gmsh .msh file (named `fuzz.msh`), read as a 2-D (T6) and as a 3-D (T10)
-/// mesh: the 3-D reader's message if it is not well formed, else the 2-D reader's.
+/// The whole text is a mesh file (named `fuzz.msh`), read as a 2-D (T6) and a 3-D (T10) Gmsh
+/// mesh and as an STL surface: the first message that is not well formed (3-D, then STL), else
+/// the 2-D reader's.
 std::string gmsh_input(const std::string& text);
 
 /// Whether `message` (from one of the above; `target` is scene, override or gmsh) is empty or one
