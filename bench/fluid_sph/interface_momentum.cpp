@@ -55,8 +55,8 @@ void run(double dp, sph::Correction correction, sph::SphFluid::Reaction reaction
     const double h = fluid.next_dt();
     d += V * h; // the body's translation over the step, its velocity the step's mean (eq. 17)
     for (std::size_t a = 0; a < points.size(); ++a) {
-      w.x[a] = points[a].x.x() + d.x(), w.y[a] = points[a].x.y() + d.y();
-      w.vx[a] = V.x(), w.vy[a] = V.y(), w.ax[a] = w.ay[a] = 0.0;
+      for (int c = 0; c < 2; ++c)
+        w.x[c][a] = points[a].x[c] + d[c], w.v[c][a] = V[c], w.a[c][a] = 0.0;
     }
     fluid.advance(h);
     Vec2 f = Vec2::Zero();

@@ -8,31 +8,36 @@
 
 namespace fsi::sph {
 
-double SphFluid::kernel_sum(std::size_t i) const {
+template <int D> double BasicSphFluid<D>::kernel_sum(std::size_t i) const {
   double sigma = kernel_.W(0.0);
   for (std::uint32_t k = pstart_[i]; k < pstart_[i + 1]; ++k) sigma += kernel_.W(pr_[k]);
-  // A wall particle counts as V_a / dp^2 lattice particles (a dummy as exactly one).
-  const double dp2 = options_.dp * options_.dp;
+  // A wall particle counts as V_a / dp^D lattice particles (a dummy as exactly one).
+  const double cell = options_.cell_volume();
   for (std::uint32_t k = wstart_[i]; k < wstart_[i + 1]; ++k)
-    sigma += kernel_.W(wr_[k]) * (walls_.vol[wj_[k]] / dp2);
+    sigma += kernel_.W(wr_[k]) * (walls_.vol[wj_[k]] / cell);
   return sigma;
 }
 
-void SphFluid::reinitialise_density() {
+template <int D> void BasicSphFluid<D>::reinitialise_density() {
   auto& f = fluid_;
   const double rho0 = options_.rho0, inv_sigma0 = 1.0 / sigma0_;
   const bool free_surface = options_.free_surface;
-  const double dp2 = options_.dp * options_.dp;
+  const double cell = options_.cell_volume();
   parallel_for(f.size(), [&](std::size_t i) {
     const double rho_sum = rho0 * kernel_sum(i) * inv_sigma0;
     if (free_surface) {
       f.rho[i] = std::max(rho_sum, rho0);
-      f.vol[i] = dp2;
+      f.vol[i] = cell;
     } else {
       f.rho[i] = rho_sum;
       f.vol[i] = mass_ / rho_sum;
     }
   });
 }
+
+template double BasicSphFluid<2>::kernel_sum(std::size_t) const;
+template double BasicSphFluid<3>::kernel_sum(std::size_t) const;
+template void BasicSphFluid<2>::reinitialise_density();
+template void BasicSphFluid<3>::reinitialise_density();
 
 } // namespace fsi::sph

@@ -2,47 +2,59 @@
 // the surge front.
 #include "fluid_sph/sph_fluid.hpp"
 
+#include "shared.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
 namespace fsi::sph {
 
-double SphFluid::mean_neighbours() const {
+template <int D> double BasicSphFluid<D>::mean_neighbours() const {
   const std::size_t n = fluid_.size();
   if (n == 0) return 0.0;
   return static_cast<double>(pstart_[n] + wstart_[n]) / static_cast<double>(n);
 }
 
-double SphFluid::kinetic_energy() const {
+template <int D> double BasicSphFluid<D>::kinetic_energy() const {
   double e = 0.0;
-  for (std::size_t i = 0; i < fluid_.size(); ++i)
-    e += fluid_.vx[i] * fluid_.vx[i] + fluid_.vy[i] * fluid_.vy[i];
+  for (std::size_t i = 0; i < fluid_.size(); ++i) {
+    double v[D];
+    for (int c = 0; c < D; ++c) v[c] = fluid_.v[c][i];
+    e += dot<D>(v, v);
+  }
   return 0.5 * mass_ * e;
 }
 
-Vec2 SphFluid::momentum() const {
-  Vec2 m = Vec2::Zero();
-  for (std::size_t i = 0; i < fluid_.size(); ++i) m += Vec2(fluid_.vx[i], fluid_.vy[i]);
+template <int D> auto BasicSphFluid<D>::momentum() const -> Vec {
+  Vec m = Vec::Zero();
+  for (std::size_t i = 0; i < fluid_.size(); ++i) {
+    Vec v;
+    for (int c = 0; c < D; ++c) v[c] = fluid_.v[c][i];
+    m += v;
+  }
   return mass_ * m;
 }
 
-double SphFluid::pressure_at(const Vec2& point) const {
+template <int D> double BasicSphFluid<D>::pressure_at(const Vec& point) const {
   double sw = 0.0, swp = 0.0;
   const double c2 = options_.c0 * options_.c0;
+  const Vec period = options_.domain_max - options_.domain_min;
+  const std::array<bool, D> periodic = options_.periodic();
   for (std::size_t i = 0; i < fluid_.size(); ++i) {
-    double dx = point.x() - fluid_.x[i], dy = point.y() - fluid_.y[i];
-    const Vec2 period = options_.domain_max - options_.domain_min;
-    if (options_.periodic_x) dx -= period.x() * std::round(dx / period.x());
-    if (options_.periodic_y) dy -= period.y() * std::round(dy / period.y());
-    const double w = kernel_.W(std::sqrt(dx * dx + dy * dy)) * fluid_.vol[i];
+    double d[D];
+    for (int c = 0; c < D; ++c) {
+      d[c] = point[c] - fluid_.x[c][i];
+      if (periodic[static_cast<std::size_t>(c)]) d[c] -= period[c] * std::round(d[c] / period[c]);
+    }
+    const double w = kernel_.W(std::sqrt(dot<D>(d, d))) * fluid_.vol[i];
     sw += w;
     swp += w * c2 * (fluid_.rho[i] - options_.rho0);
   }
   return sw > 0.0 ? swp / sw : 0.0;
 }
 
-double SphFluid::surge_front() const {
+template <int D> double BasicSphFluid<D>::surge_front() const {
   // The largest x of the bulk, as the EMPS fluid's probe (pnd >= n0/2, pnd without i itself): a
   // particle whose neighbours' kernel sum (fluid and wall, without its own W(0), about a third
   // of sigma0) is below half the lattice's is spray, skipped. With W(0) counted, a lone particle
@@ -50,8 +62,19 @@ double SphFluid::surge_front() const {
   const double w0 = kernel_.W(0.0), bulk = 0.5 * (sigma0_ - w0);
   double front = -std::numeric_limits<double>::max();
   for (std::size_t i = 0; i < fluid_.size(); ++i)
-    if (kernel_sum(i) - w0 >= bulk) front = std::max(front, fluid_.x[i]);
+    if (kernel_sum(i) - w0 >= bulk) front = std::max(front, fluid_.x[0][i]);
   return front;
 }
+
+template double BasicSphFluid<2>::mean_neighbours() const;
+template double BasicSphFluid<3>::mean_neighbours() const;
+template double BasicSphFluid<2>::kinetic_energy() const;
+template double BasicSphFluid<3>::kinetic_energy() const;
+template auto BasicSphFluid<2>::momentum() const -> Vec;
+template auto BasicSphFluid<3>::momentum() const -> Vec;
+template double BasicSphFluid<2>::pressure_at(const Vec&) const;
+template double BasicSphFluid<3>::pressure_at(const Vec&) const;
+template double BasicSphFluid<2>::surge_front() const;
+template double BasicSphFluid<3>::surge_front() const;
 
 } // namespace fsi::sph

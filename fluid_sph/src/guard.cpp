@@ -12,29 +12,42 @@
 
 namespace fsi::sph {
 
-std::string SphFluid::where(std::size_t i, long step, double t) const {
-  return "particle " + std::to_string(fluid_.id[i]) + " at (" + fmt(fluid_.x[i]) + ", " +
-         fmt(fluid_.y[i]) + "), step " + std::to_string(step) + ", t = " + fmt(t) + " s";
+template <int D> std::string BasicSphFluid<D>::where(std::size_t i, long step, double t) const {
+  std::string at = fmt(fluid_.x[0][i]);
+  for (int c = 1; c < D; ++c) at += ", " + fmt(fluid_.x[c][i]);
+  return "particle " + std::to_string(fluid_.id[i]) + " at (" + at + "), step " +
+         std::to_string(step) + ", t = " + fmt(t) + " s";
 }
 
-void SphFluid::guard(long step, double t) const {
+template <int D> void BasicSphFluid<D>::guard(long step, double t) const {
   const auto& f = fluid_;
   const double lo = options_.rho_min_factor * options_.rho0,
                hi = options_.rho_max_factor * options_.rho0;
+  const auto finite_velocity = [&](std::size_t i) {
+    for (int c = 0; c < D; ++c)
+      if (!std::isfinite(f.v[c][i])) return false;
+    return true;
+  };
   const std::size_t bad = parallel_reduce(
       f.size(), none,
       [&](std::size_t i) {
-        const bool ok = std::isfinite(f.x[i]) && std::isfinite(f.y[i]) && std::isfinite(f.vx[i]) &&
-                        std::isfinite(f.vy[i]) && f.rho[i] >= lo && f.rho[i] <= hi;
+        for (int c = 0; c < D; ++c)
+          if (!std::isfinite(f.x[c][i])) return i;
+        const bool ok = finite_velocity(i) && f.rho[i] >= lo && f.rho[i] <= hi;
         return ok ? none : i;
       },
       [](std::size_t a, std::size_t b) { return std::min(a, b); });
   if (bad == none) return;
   const double r = f.rho[bad];
-  if (std::isfinite(r) && std::isfinite(f.vx[bad]) && std::isfinite(f.vy[bad]))
+  if (std::isfinite(r) && finite_velocity(bad))
     throw RunError("fluid_sph: density " + fmt(r) + " out of [" + fmt(lo) + ", " + fmt(hi) +
                    "] at " + where(bad, step, t));
   throw RunError("fluid_sph: non-finite position, velocity or density at " + where(bad, step, t));
 }
+
+template std::string BasicSphFluid<2>::where(std::size_t, long, double) const;
+template std::string BasicSphFluid<3>::where(std::size_t, long, double) const;
+template void BasicSphFluid<2>::guard(long, double) const;
+template void BasicSphFluid<3>::guard(long, double) const;
 
 } // namespace fsi::sph

@@ -19,16 +19,18 @@ double Inflow::profile(double y, double t) const {
   return 1.5 * mean * 4.0 * s * (H - s) / (H * H); // eq. 25, mean over the height = mean
 }
 
-void SphFluid::impose_inflow(double t) {
+template <int D> void BasicSphFluid<D>::impose_inflow(double t) requires(D == 2) {
   auto& f = fluid_;
   const Inflow& in = options_.inflow;
   const double x0 = options_.domain_min.x(), x1 = x0 + in.buffer;
   parallel_for(f.size(), [&](std::size_t i) {
-    const double x = grid_.wrap_x(f.x[i]);
+    const double x = grid_.wrap_x(f.x[0][i]);
     if (x < x0 || x >= x1) return;
-    f.vx[i] = in.profile(f.y[i], t);
-    f.vy[i] = 0.0;
+    f.v[0][i] = in.profile(f.x[1][i], t);
+    f.v[1][i] = 0.0;
   });
 }
+
+template void BasicSphFluid<2>::impose_inflow(double);
 
 } // namespace fsi::sph

@@ -9,51 +9,65 @@
 
 namespace fsi::sph {
 
-void SphFluid::first_half(double dt) {
+template <int D> void BasicSphFluid<D>::first_half(double dt) {
   auto& f = fluid_;
   const double half = 0.5 * dt, c2 = options_.c0 * options_.c0, rho0 = options_.rho0;
+  // The component arrays as raw pointers before the loops (D known at compile time).
+  std::array<double*, D> x, v, a;
+  std::array<const double*, D> ap, e, wv, wa, wn;
+  std::array<const double*, S> b;
+  for (int c = 0; c < D; ++c) {
+    x[c] = f.x[c].data(), v[c] = f.v[c].data(), a[c] = f.a[c].data(), ap[c] = f.ap[c].data();
+    e[c] = pe_[c].data(), wv[c] = walls_.v[c].data(), wa[c] = walls_.a[c].data();
+    wn[c] = walls_.n[c].data();
+  }
+  for (int s = 0; s < S; ++s) b[s] = f.b[s]->data();
   parallel_for(f.size(), [&](std::size_t i) {
     f.rho[i] += f.drho[i] * half;
     f.p[i] = c2 * (f.rho[i] - rho0); // eq. 2
-    f.x[i] += f.vx[i] * half;
-    f.y[i] += f.vy[i] * half;
+    for (int c = 0; c < D; ++c) x[c][i] += v[c][i] * half;
   });
   const double rho0c0 = rho0 * options_.c0, inv_c0 = 1.0 / options_.c0, inv_m = 1.0 / mass_;
   const bool lim = options_.riemann_limiter;
   const double rho0c0_pairs = options_.pair_dissipation ? rho0c0 : 0.0;
+  const double *p = f.p.data(), *vol = f.vol.data(), *wvol = walls_.vol.data();
   parallel_for(f.size(), [&](std::size_t i) {
-    const double p_i = f.p[i], vx_i = f.vx[i], vy_i = f.vy[i];
-    const double b00 = f.b00[i], b01 = f.b01[i], b11 = f.b11[i];
-    double fx = 0.0, fy = 0.0;
+    const double p_i = p[i];
+    double v_i[D], b_i[S], F[D] = {};
+    for (int c = 0; c < D; ++c) v_i[c] = v[c][i];
+    for (int s = 0; s < S; ++s) b_i[s] = b[s][i];
     for (std::uint32_t k = pstart_[i]; k < pstart_[i + 1]; ++k) {
       const std::uint32_t j = pj_[k];
-      const double ex = pex_[k], ey = pey_[k], dWV = pdw_[k] * f.vol[j];
-      const double p_j = f.p[j];
+      const double dWV = pdw_[k] * vol[j], p_j = p[j];
+      double g[D], b_j[S], dv[D], e_k[D];
+      for (int s = 0; s < S; ++s) b_j[s] = b[s][j];
+      for (int c = 0; c < D; ++c) e_k[c] = e[c][k], g[c] = dWV * e_k[c], dv[c] = v_i[c] - v[c][j];
       // (p_i B_j + p_j B_i) grad W_ij V_j (eqs. 18, 20).
-      const double gx = dWV * ex, gy = dWV * ey;
-      fx -= p_i * (f.b00[j] * gx + f.b01[j] * gy) + p_j * (b00 * gx + b01 * gy);
-      fy -= p_i * (f.b01[j] * gx + f.b11[j] * gy) + p_j * (b01 * gx + b11 * gy);
+      for (int c = 0; c < D; ++c) F[c] -= p_i * sym_row<D>(b_j, c, g) + p_j * sym_row<D>(b_i, c, g);
       // Riemann dissipation: -2 (P* - p_bar) grad W = beta rho0 c0 u grad W (eq. 5).
-      const double u = (vx_i - f.vx[j]) * ex + (vy_i - f.vy[j]) * ey;
+      const double u = dot<D>(dv, e_k);
       const double d = rho0c0_pairs * limiter(u, inv_c0, lim) * u;
-      fx += d * gx;
-      fy += d * gy;
+      for (int c = 0; c < D; ++c) F[c] += d * g[c];
     }
     // Walls (eqs. 15-17): dummy pressure p_d = p_i + rho_i r max(0, (a_prior - a_w) . (-e_ia)).
-    const double apx = f.apx[i], apy = f.apy[i], rho_i = f.rho[i];
+    const double rho_i = f.rho[i];
     for (std::uint32_t k = wstart_[i]; k < wstart_[i + 1]; ++k) {
-      const std::uint32_t a = wj_[k];
-      const Vec2 t =
-          wall_term({p_i, rho_i, wr_[k], apx - walls_.ax[a], apy - walls_.ay[a], wex_[k], wey_[k],
-                     wdw_[k] * walls_.vol[a], b00, b01, b11, vx_i - walls_.vx[a],
-                     vy_i - walls_.vy[a], walls_.nx[a], walls_.ny[a], rho0c0, inv_c0, lim});
-      fx += t.x();
-      fy += t.y();
+      const std::uint32_t w = wj_[k];
+      WallPair<D> q{p_i, rho_i, wr_[k], {},     {},     wdw_[k] * wvol[w],
+                    b_i, {},    {},     rho0c0, inv_c0, lim};
+      for (int c = 0; c < D; ++c) {
+        q.da[c] = ap[c][i] - wa[c][w], q.e[c] = we_[c][k];
+        q.dv[c] = v_i[c] - wv[c][w], q.n[c] = wn[c][w];
+      }
+      const auto t = wall_term(q);
+      for (int c = 0; c < D; ++c) F[c] += t[c];
     }
-    const double s = f.vol[i] * inv_m;
-    f.ax[i] = fx * s + apx;
-    f.ay[i] = fy * s + apy;
+    const double s = vol[i] * inv_m;
+    for (int c = 0; c < D; ++c) a[c][i] = F[c] * s + ap[c][i];
   });
 }
+
+template void BasicSphFluid<2>::first_half(double);
+template void BasicSphFluid<3>::first_half(double);
 
 } // namespace fsi::sph

@@ -50,7 +50,7 @@ std::string to_string(Correction c) {
   return c == Correction::none ? "none" : "rkgc";
 }
 
-void SphOptions::validate() const {
+template <int D> void BasicSphOptions<D>::validate() const {
   const auto fail = [](const std::string& key, double v, const std::string& range) {
     throw InputError("fluid_sph: " + key + " = " + fmt(v) + ", allowed " + range);
   };
@@ -76,13 +76,16 @@ void SphOptions::validate() const {
   if (!(rho_min_factor > 0.0 && rho_min_factor < 1.0))
     fail("rho_min_factor", rho_min_factor, "(0, 1)");
   if (!(rho_max_factor > 1.0)) fail("rho_max_factor", rho_max_factor, "> 1");
-  const Vec2 size = domain_max - domain_min;
-  if (!(size.x() > 0.0)) fail("domain_max.x - domain_min.x", size.x(), "> 0");
-  if (!(size.y() > 0.0)) fail("domain_max.y - domain_min.y", size.y(), "> 0");
+  const VecD<D> size = domain_max - domain_min;
+  const std::string axis[] = {"x", "y", "z"};
+  for (int c = 0; c < D; ++c)
+    if (!(size[c] > 0.0))
+      fail("domain_max." + axis[c] + " - domain_min." + axis[c], size[c], "> 0");
+  if (D == 3 && inflow.on()) throw InputError("fluid_sph: the inflow buffer is 2-D only");
   if (inflow.on()) {
     if (!periodic_x)
       throw InputError("fluid_sph: inflow.buffer > 0 needs periodic_x (the channel wraps in x)");
-    if (!(inflow.buffer <= 0.5 * size.x()))
+    if (!(inflow.buffer <= 0.5 * size[0]))
       fail("inflow.buffer", inflow.buffer, "(0, half the periodic length]");
     if (!(inflow.velocity > 0.0)) fail("inflow.velocity", inflow.velocity, "> 0");
     if (!(inflow.ramp_time >= 0.0)) fail("inflow.ramp_time", inflow.ramp_time, ">= 0");
@@ -90,10 +93,12 @@ void SphOptions::validate() const {
       fail("inflow.y_max - inflow.y_min", inflow.y_max - inflow.y_min, "> 0");
   }
   const double cut = 2.0 * h();
-  if (periodic_x && size.x() < 3.0 * cut)
-    fail("periodic length x", size.x(), ">= 3 kernel supports (6 h)");
-  if (periodic_y && size.y() < 3.0 * cut)
-    fail("periodic length y", size.y(), ">= 3 kernel supports (6 h)");
+  for (int c = 0; c < D; ++c)
+    if (periodic()[static_cast<std::size_t>(c)] && size[c] < 3.0 * cut)
+      fail("periodic length " + axis[c], size[c], ">= 3 kernel supports (6 h)");
 }
+
+template struct BasicSphOptions<2>;
+template struct BasicSphOptions<3>;
 
 } // namespace fsi::sph

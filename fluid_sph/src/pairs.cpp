@@ -14,39 +14,63 @@ namespace fsi::sph {
 
 namespace {
 
-/// Neighbour j at (dx, dy) = x_i - x_j into slot k of a pair set: e_ij, dW_ij, r_ij.
-inline void store_pair(std::uint32_t k, std::uint32_t j, double dx, double dy,
-                       const particles::WendlandC2& kernel, std::vector<std::uint32_t>& js,
-                       std::vector<double>& ex, std::vector<double>& ey, std::vector<double>& dw,
-                       std::vector<double>& rs) {
-  const double r = std::sqrt(dx * dx + dy * dy);
+/// Neighbour j at d = x_i - x_j into slot k of a pair set: e_ij, dW_ij, r_ij.
+template <int D, class K>
+inline void store_pair(std::uint32_t k, std::uint32_t j, const double* d, const K& kernel,
+                       std::vector<std::uint32_t>& js, std::array<std::vector<double>, D>& e,
+                       std::vector<double>& dw, std::vector<double>& rs) {
+  const double r = std::sqrt(dot<D>(d, d));
   js[k] = j;
-  ex[k] = dx / r;
-  ey[k] = dy / r;
+  for (int c = 0; c < D; ++c) e[c][k] = d[c] / r;
   dw[k] = kernel.dW(r);
   rs[k] = r;
 }
 
+/// |r e x n|, the distance from wall point a's normal line (through a) of a particle at r e from
+/// it: |r (e_x n_y - e_y n_x)| in 2-D.
+template <int D> inline double off_normal(double r, const double* e, const double* n) {
+  if constexpr (D == 2) {
+    return std::abs(r * (e[0] * n[1] - e[1] * n[0]));
+  } else {
+    const double c0 = e[1] * n[2] - e[2] * n[1], c1 = e[2] * n[0] - e[0] * n[2];
+    const double c2 = e[0] * n[1] - e[1] * n[0];
+    return r * std::sqrt(c0 * c0 + c1 * c1 + c2 * c2);
+  }
+}
+
 } // namespace
 
-void SphFluid::build_pairs(bool guard) {
+template <int D> void BasicSphFluid<D>::build_pairs(bool guard) {
   auto& f = fluid_;
   const std::size_t n = f.size(), nw = walls_.size();
-  grid_.bin(f.xb.data(), f.yb.data(), n);
-  wall_grid_.bin(walls_.xb.data(), walls_.yb.data(), nw);
+  grid_.bin(f.xb.coords(), n);
+  wall_grid_.bin(walls_.xb.coords(), nw);
   const double cut2 = kernel_.cutoff() * kernel_.cutoff();
+  const particles::Coords<D> xb = f.xb.coords(), wxb = walls_.xb.coords();
+  // d = x_i - x_j - s (the image shift s of a periodic neighbour) and |d|^2.
+  const auto offset = [](const Vec& x_i, const double* x_j, const std::array<double, D>& s,
+                         double* d) {
+    for (int c = 0; c < D; ++c) d[c] = x_i[c] - x_j[c] - s[c];
+    return dot<D>(d, d);
+  };
+  const auto at = [](const particles::Coords<D>& x, std::size_t j, double* out) {
+    for (int c = 0; c < D; ++c) out[c] = x[c][j];
+  };
   count_.resize(2 * n);
   parallel_for_balanced(n, [&](std::size_t i) {
-    const double xi = f.xb[i], yi = f.yb[i];
+    Vec x_i;
+    for (int c = 0; c < D; ++c) x_i[c] = xb[c][i];
     std::uint32_t c = 0, cw = 0;
-    grid_.for_each_near(xi, yi, [&](std::uint32_t j, double sx, double sy) {
-      const double dx = xi - f.xb[j] - sx, dy = yi - f.yb[j] - sy;
-      const double r2 = dx * dx + dy * dy;
+    grid_.for_each_near(x_i, [&](std::uint32_t j, const std::array<double, D>& s) {
+      double d[D], x_j[D];
+      at(xb, j, x_j);
+      const double r2 = offset(x_i, x_j, s, d);
       if (j != i && r2 < cut2 && r2 > 0.0) ++c;
     });
-    wall_grid_.for_each_near(xi, yi, [&](std::uint32_t a, double sx, double sy) {
-      const double dx = xi - walls_.xb[a] - sx, dy = yi - walls_.yb[a] - sy;
-      const double r2 = dx * dx + dy * dy;
+    wall_grid_.for_each_near(x_i, [&](std::uint32_t a, const std::array<double, D>& s) {
+      double d[D], x_a[D];
+      at(wxb, a, x_a);
+      const double r2 = offset(x_i, x_a, s, d);
       if (r2 < cut2 && r2 > 0.0) ++cw;
     });
     count_[i] = c;
@@ -62,17 +86,19 @@ void SphFluid::build_pairs(bool guard) {
   // Grow only (with headroom): no allocation in the usual advection step.
   if (pstart_[n] > pj_.size()) {
     const std::size_t m = pstart_[n] + pstart_[n] / 8 + 16;
-    pj_.resize(m), pex_.resize(m), pey_.resize(m), pdw_.resize(m), pr_.resize(m);
+    pj_.resize(m), pdw_.resize(m), pr_.resize(m);
+    for (auto& e : pe_) e.resize(m);
   }
   if (wstart_[n] > wj_.size()) {
     const std::size_t m = wstart_[n] + wstart_[n] / 8 + 16;
-    wj_.resize(m), wex_.resize(m), wey_.resize(m), wdw_.resize(m), wr_.resize(m);
+    wj_.resize(m), wdw_.resize(m), wr_.resize(m);
+    for (auto& e : we_) e.resize(m);
   }
   // Fill, in the same visiting order, then the through-a-wall guard (issue 20, Antoci's gate):
-  // from wall point a, with p = (x_i - x_a) . n_a - depth_a and q = (x_i - x_a) x n_a, the
+  // from wall point a, with p = (x_i - x_a) . n_a - depth_a and q = |(x_i - x_a) x n_a|, the
   // particle's signed distance to the wall surface is s_a = p on a face, the same from every
   // point of a flat face (all layers); on the bisector of a convex corner whose faces' normals
-  // are 2 phi apart, with corner_a = sin(phi), s_a = cos(phi) p + sin(phi) |q|, the larger of
+  // are 2 phi apart, with corner_a = sin(phi), s_a = cos(phi) p + sin(phi) q, the larger of
   // the signed distances to the two faces' lines through the corner. A particle is behind the
   // walls when s_a < -dp/2 (the first layer's plane, the guard's tolerance) for the nearest
   // point AND every point within 1.5 dp more (the nearest's lattice neighbours, dp and
@@ -90,23 +116,26 @@ void SphFluid::build_pairs(bool guard) {
   const std::size_t behind = parallel_reduce_balanced(
       n, none,
       [&](std::size_t i) {
-        const double xi = f.xb[i], yi = f.yb[i];
+        Vec x_i;
+        for (int c = 0; c < D; ++c) x_i[c] = xb[c][i];
         std::uint32_t k = pstart_[i];
-        grid_.for_each_near(xi, yi, [&](std::uint32_t j, double sx, double sy) {
-          const double dx = xi - f.xb[j] - sx, dy = yi - f.yb[j] - sy;
-          const double r2 = dx * dx + dy * dy;
+        grid_.for_each_near(x_i, [&](std::uint32_t j, const std::array<double, D>& s) {
+          double d[D], x_j[D];
+          at(xb, j, x_j);
+          const double r2 = offset(x_i, x_j, s, d);
           if (j == i || r2 >= cut2 || r2 <= 0.0) return;
-          store_pair(k++, j, dx, dy, kernel_, pj_, pex_, pey_, pdw_, pr_);
+          store_pair<D>(k++, j, d, kernel_, pj_, pe_, pdw_, pr_);
         });
         const std::uint32_t kw0 = wstart_[i];
         std::uint32_t kw = kw0;
         double nearest = cut2;
         std::uint32_t a_nearest = 0;
-        wall_grid_.for_each_near(xi, yi, [&](std::uint32_t a, double sx, double sy) {
-          const double dx = xi - walls_.xb[a] - sx, dy = yi - walls_.yb[a] - sy;
-          const double r2 = dx * dx + dy * dy;
+        wall_grid_.for_each_near(x_i, [&](std::uint32_t a, const std::array<double, D>& s) {
+          double d[D], x_a[D];
+          at(wxb, a, x_a);
+          const double r2 = offset(x_i, x_a, s, d);
           if (r2 >= cut2 || r2 <= 0.0) return;
-          store_pair(kw++, a, dx, dy, kernel_, wj_, wex_, wey_, wdw_, wr_);
+          store_pair<D>(kw++, a, d, kernel_, wj_, we_, wdw_, wr_);
           if (r2 < nearest) nearest = r2, a_nearest = a;
         });
         if (!guard) return none;
@@ -114,16 +143,17 @@ void SphFluid::build_pairs(bool guard) {
         for (std::uint32_t k = kw0; k < kw; ++k) {
           if (wr_[k] > within) continue;
           const std::uint32_t a = wj_[k];
-          const double nx = walls_.nx[a], ny = walls_.ny[a], sine = walls_.corner[a];
-          const double p = wr_[k] * (wex_[k] * nx + wey_[k] * ny) - walls_.depth[a];
-          const double q = wr_[k] * (wex_[k] * ny - wey_[k] * nx);
-          if (std::sqrt(1.0 - sine * sine) * p + sine * std::abs(q) >= tolerance) return none;
+          double e_k[D], n_a[D];
+          for (int c = 0; c < D; ++c) e_k[c] = we_[c][k], n_a[c] = walls_.n[c][a];
+          const double sine = walls_.corner[a];
+          const double p = wr_[k] * dot<D>(e_k, n_a) - walls_.depth[a];
+          const double q = off_normal<D>(wr_[k], e_k, n_a);
+          if (std::sqrt(1.0 - sine * sine) * p + sine * q >= tolerance) return none;
         }
         if (kw == kw0) return none;
         // The group's exact surface, where the caller gave it (at the positions of the pairs).
         const std::size_t g = walls_.group[a_nearest];
-        if (g < distances_.size() && distances_[g] && distances_[g](Vec2(xi, yi)) >= tolerance)
-          return none;
+        if (g < distances_.size() && distances_[g] && distances_[g](x_i) >= tolerance) return none;
         return i;
       },
       [](std::size_t a, std::size_t b) { return std::min(a, b); });
@@ -131,5 +161,8 @@ void SphFluid::build_pairs(bool guard) {
     throw RunError("fluid_sph: behind the first wall layer (through a wall): " +
                    where(behind, step_, t_));
 }
+
+template void BasicSphFluid<2>::build_pairs(bool);
+template void BasicSphFluid<3>::build_pairs(bool);
 
 } // namespace fsi::sph

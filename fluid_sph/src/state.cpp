@@ -10,14 +10,14 @@
 
 namespace fsi::sph {
 
-void SphFluid::save(State& s) const {
+template <int D> void BasicSphFluid<D>::save(State& s) const {
   fluid_.fields.save(s.fluid);
   walls_.fields.save(s.walls);
   s.t = t_, s.Dt = Dt_, s.elapsed = elapsed_, s.dt_acoustic = dt_acoustic_;
   s.step = step_, s.builds = builds_, s.sub = sub_, s.subs = subs_, s.removed = removed_;
 }
 
-void SphFluid::restore(const State& s) {
+template <int D> void BasicSphFluid<D>::restore(const State& s) {
   fluid_.fields.restore(s.fluid);
   walls_.fields.restore(s.walls);
   t_ = s.t, Dt_ = s.Dt, elapsed_ = s.elapsed, dt_acoustic_ = s.dt_acoustic;
@@ -28,7 +28,8 @@ void SphFluid::restore(const State& s) {
   });
 }
 
-void SphFluid::write_state(StateArchive& a, const std::string& prefix) const {
+template <int D>
+void BasicSphFluid<D>::write_state(StateArchive& a, const std::string& prefix) const {
   fluid_.fields.write_state(a, prefix + "fluid/");
   walls_.fields.write_state(a, prefix + "walls/");
   a.put(prefix + "clock", std::vector<double>{t_, Dt_, elapsed_, dt_acoustic_});
@@ -36,7 +37,8 @@ void SphFluid::write_state(StateArchive& a, const std::string& prefix) const {
                                                        static_cast<std::int64_t>(removed_)});
 }
 
-void SphFluid::read_state(const StateArchive& a, const std::string& prefix) {
+template <int D>
+void BasicSphFluid<D>::read_state(const StateArchive& a, const std::string& prefix) {
   const std::size_t nw = walls_.size();
   const auto& clock = a.reals(prefix + "clock", 4);
   const auto& counters = a.integers(prefix + "counters", 5);
@@ -53,5 +55,14 @@ void SphFluid::read_state(const StateArchive& a, const std::string& prefix) {
     fluid_.p[i] = options_.c0 * options_.c0 * (fluid_.rho[i] - options_.rho0);
   });
 }
+
+template void BasicSphFluid<2>::save(State&) const;
+template void BasicSphFluid<3>::save(State&) const;
+template void BasicSphFluid<2>::restore(const State&);
+template void BasicSphFluid<3>::restore(const State&);
+template void BasicSphFluid<2>::write_state(StateArchive&, const std::string&) const;
+template void BasicSphFluid<3>::write_state(StateArchive&, const std::string&) const;
+template void BasicSphFluid<2>::read_state(const StateArchive&, const std::string&);
+template void BasicSphFluid<3>::read_state(const StateArchive&, const std::string&);
 
 } // namespace fsi::sph

@@ -13,27 +13,27 @@
 
 namespace fsi::sph {
 
-double SphFluid::next_dt() const {
+template <int D> double BasicSphFluid<D>::next_dt() const {
   if (options_.fixed_dt > 0.0) return options_.fixed_dt;
   return std::min(dt_acoustic_, Dt_ - elapsed_);
 }
 
-void SphFluid::advance(double dt) {
+template <int D> void BasicSphFluid<D>::advance(double dt) {
   const double left = Dt_ - elapsed_;
   if (!(dt > 0.0) || (options_.fixed_dt <= 0.0 && dt > left * (1.0 + 1e-12)))
     throw InputError("fluid_sph: acoustic step " + fmt(dt) + " not in (0, " + fmt(left) +
                      "] (what is left of the advection step)");
-  move_walls(dt);
+  if constexpr (D == 2) move_walls(dt);
   first_half(dt);
   if (tracked_ < walls_.size()) wall_reaction();
   second_half(dt);
-  if (options_.inflow.on()) impose_inflow(t_ + dt);
+  if constexpr (D == 2)
+    if (options_.inflow.on()) impose_inflow(t_ + dt);
   if (options_.damping_time > 0.0 && t_ < options_.damping_time) {
     const double T = options_.damping_time;
     const double keep = std::max(0.0, 1.0 - dt * 20.0 / T * (1.0 - t_ / T));
     parallel_for(fluid_.size(), [&](std::size_t i) {
-      fluid_.vx[i] *= keep;
-      fluid_.vy[i] *= keep;
+      for (int c = 0; c < D; ++c) fluid_.v[c][i] *= keep;
     });
   }
   t_ += dt;
@@ -44,7 +44,7 @@ void SphFluid::advance(double dt) {
   if (filled) per_advection_step();
 }
 
-void SphFluid::advance_to(double t_end) {
+template <int D> void BasicSphFluid<D>::advance_to(double t_end) {
   while (t_ < t_end - 1e-12 * std::max(1.0, std::abs(t_end))) {
     double dt = next_dt();
     if (options_.fixed_dt <= 0.0) dt = std::min(dt, t_end - t_);
@@ -52,28 +52,30 @@ void SphFluid::advance_to(double t_end) {
   }
 }
 
-void SphFluid::per_advection_step() {
+template <int D> void BasicSphFluid<D>::per_advection_step() {
   auto& f = fluid_;
   compute_advection_dt();
   // Periodic wrap; particles that left a non-periodic side of the domain are removed.
-  const Vec2 lo = options_.domain_min, hi = options_.domain_max;
+  const Vec lo = options_.domain_min, hi = options_.domain_max;
+  const std::array<bool, D> periodic = options_.periodic();
   keep_.assign(f.size(), 1);
   bool any_out = false;
   for (std::size_t i = 0; i < f.size(); ++i) {
-    f.x[i] = grid_.wrap_x(f.x[i]);
-    f.y[i] = grid_.wrap_y(f.y[i]);
-    if ((!options_.periodic_x && (f.x[i] < lo.x() || f.x[i] > hi.x())) ||
-        (!options_.periodic_y && (f.y[i] < lo.y() || f.y[i] > hi.y())))
-      keep_[i] = 0, any_out = true;
+    bool out = false;
+    for (int c = 0; c < D; ++c) {
+      const double x = f.x[c][i] = grid_.wrap(c, f.x[c][i]);
+      out = out || (!periodic[static_cast<std::size_t>(c)] && (x < lo[c] || x > hi[c]));
+    }
+    if (out) keep_[i] = 0, any_out = true;
   }
   if (any_out) removed_ += f.fields.compact(keep_);
   // Sort by cell (particles of a cell contiguous, neighbours close in memory).
-  grid_.bin(f.x.data(), f.y.data(), f.size());
+  grid_.bin(f.x.coords(), f.size());
   f.fields.permute(grid_.order(), scratch_);
-  std::copy(f.x.begin(), f.x.end(), f.xb.begin());
-  std::copy(f.y.begin(), f.y.end(), f.yb.begin());
-  std::copy(walls_.x.begin(), walls_.x.end(), walls_.xb.begin());
-  std::copy(walls_.y.begin(), walls_.y.end(), walls_.yb.begin());
+  for (int c = 0; c < D; ++c) {
+    std::copy(f.x[c].begin(), f.x[c].end(), f.xb[c].begin());
+    std::copy(walls_.x[c].begin(), walls_.x[c].end(), walls_.xb[c].begin());
+  }
   build_pairs();
   ++builds_;
   reinitialise_density();
@@ -89,28 +91,30 @@ void SphFluid::per_advection_step() {
   if (dt_acoustic_ <= 0.0) compute_acoustic_dt();
 }
 
-void SphFluid::compute_acoustic_dt() {
+template <int D> void BasicSphFluid<D>::compute_acoustic_dt() {
   const auto& f = fluid_;
   double worst = options_.c0;
   for (std::size_t i = 0; i < f.size(); ++i) {
-    const double v = std::hypot(f.vx[i], f.vy[i]), a = std::hypot(f.ax[i], f.ay[i]);
+    double v_i[D], a_i[D];
+    for (int c = 0; c < D; ++c) v_i[c] = f.v[c][i], a_i[c] = f.a[c][i];
+    const double v = length<D>(v_i), a = length<D>(a_i);
     worst = std::max(worst, std::max(options_.c0 + v, std::sqrt(4.0 * h_ * a)));
   }
   dt_acoustic_ = options_.acoustic_cfl * h_ / worst;
 }
 
-void SphFluid::compute_advection_dt() {
+template <int D> void BasicSphFluid<D>::compute_advection_dt() {
   const auto& f = fluid_;
   const double four_h = 4.0 * h_;
   // Dt = 0.25 h / max(sqrt(max(|v|^2, 4 h |a|)), U_ref, nu / h) (method notes).
   const double worst = parallel_reduce(
       f.size(), 0.0,
       [&](std::size_t i) {
-        const double v2 = f.vx[i] * f.vx[i] + f.vy[i] * f.vy[i];
-        const double a = std::sqrt(f.ax[i] * f.ax[i] + f.ay[i] * f.ay[i]);
-        return std::max(v2, four_h * a);
+        double v_i[D], a_i[D];
+        for (int c = 0; c < D; ++c) v_i[c] = f.v[c][i], a_i[c] = f.a[c][i];
+        return std::max(dot<D>(v_i, v_i), four_h * std::sqrt(dot<D>(a_i, a_i)));
       },
-      [](double a, double b) { return std::max(a, b); });
+      [](double l, double r) { return std::max(l, r); });
   const double speed =
       std::max({std::sqrt(worst), options_.u_advection(), options_.viscosity / h_});
   Dt_ = options_.advection_cfl * h_ / speed;
@@ -119,5 +123,18 @@ void SphFluid::compute_advection_dt() {
   const double nu = options_.viscosity, number = options_.viscous_number;
   if (nu > 0.0 && number > 0.0) Dt_ = std::min(Dt_, number * h_ * h_ / nu);
 }
+
+template double BasicSphFluid<2>::next_dt() const;
+template double BasicSphFluid<3>::next_dt() const;
+template void BasicSphFluid<2>::advance(double);
+template void BasicSphFluid<3>::advance(double);
+template void BasicSphFluid<2>::advance_to(double);
+template void BasicSphFluid<3>::advance_to(double);
+template void BasicSphFluid<2>::per_advection_step();
+template void BasicSphFluid<3>::per_advection_step();
+template void BasicSphFluid<2>::compute_acoustic_dt();
+template void BasicSphFluid<3>::compute_acoustic_dt();
+template void BasicSphFluid<2>::compute_advection_dt();
+template void BasicSphFluid<3>::compute_advection_dt();
 
 } // namespace fsi::sph

@@ -11,7 +11,8 @@
 
 namespace fsi::sph {
 
-void SphFluid::fill_walls(const std::vector<WallPolyline>& walls) {
+template <int D>
+void BasicSphFluid<D>::fill_walls(const std::vector<WallPolyline>& walls) requires(D == 2) {
   // Dummy particles: lattice points at (i + 1/2) dp from each polyline's first point that lie on
   // the wall side (right of the nearest segment; at a vertex, of the sum of the two normals) within
   // 4 dp of the polyline. Their normal is that of the nearest feature, into the fluid, and their
@@ -79,16 +80,16 @@ void SphFluid::fill_walls(const std::vector<WallPolyline>& walls) {
   walls_.fields.resize(nw);
   for (std::size_t a = 0; a < nw; ++a) {
     walls_.group[a] = groups[a];
-    walls_.x[a] = walls_.x0[a] = walls_.xb[a] = xs[a].x();
-    walls_.y[a] = walls_.y0[a] = walls_.yb[a] = xs[a].y();
-    walls_.nx[a] = walls_.nx0[a] = ns[a].x();
-    walls_.ny[a] = walls_.ny0[a] = ns[a].y();
+    for (int c = 0; c < D; ++c) {
+      walls_.x[c][a] = walls_.x0[c][a] = walls_.xb[c][a] = xs[a][c];
+      walls_.n[c][a] = walls_.n0[c][a] = ns[a][c];
+    }
     walls_.depth[a] = ds[a];
     walls_.vol[a] = dp * dp;
   }
 }
 
-void SphFluid::move_walls(double dt) {
+template <int D> void BasicSphFluid<D>::move_walls(double dt) requires(D == 2) {
   if (motions_.empty()) return;
   for (std::size_t g = 0; g < motions_.size(); ++g) {
     if (!motions_[g]) continue;
@@ -98,23 +99,27 @@ void SphFluid::move_walls(double dt) {
     const double inv_dt = 1.0 / dt;
     parallel_for(walls_.size(), [&](std::size_t a) {
       if (walls_.group[a] != g) return;
-      const Vec2 X(walls_.x0[a] - m0.centre.x(), walls_.y0[a] - m0.centre.y());
+      auto &x = walls_.x, &n = walls_.n, &n0 = walls_.n0, &v = walls_.v, &acc = walls_.a;
+      const Vec2 X(walls_.x0[0][a] - m0.centre.x(), walls_.x0[1][a] - m0.centre.y());
       const Vec2 r0(c0 * X.x() - s0 * X.y(), s0 * X.x() + c0 * X.y());
       const Vec2 r1(c1 * X.x() - s1 * X.y(), s1 * X.x() + c1 * X.y());
       const Vec2 x0 = m0.centre + m0.d + r0, x1 = m1.centre + m1.d + r1;
       const Vec2 v0 = m0.v + m0.omega * Vec2(-r0.y(), r0.x());
       const Vec2 v1 = m1.v + m1.omega * Vec2(-r1.y(), r1.x());
       // Velocity and acceleration averaged over the acoustic step (eq. 17, ref. [54]).
-      walls_.vx[a] = (x1.x() - x0.x()) * inv_dt;
-      walls_.vy[a] = (x1.y() - x0.y()) * inv_dt;
-      walls_.ax[a] = (v1.x() - v0.x()) * inv_dt;
-      walls_.ay[a] = (v1.y() - v0.y()) * inv_dt;
-      walls_.x[a] = x1.x();
-      walls_.y[a] = x1.y();
-      walls_.nx[a] = c1 * walls_.nx0[a] - s1 * walls_.ny0[a];
-      walls_.ny[a] = s1 * walls_.nx0[a] + c1 * walls_.ny0[a];
+      v[0][a] = (x1.x() - x0.x()) * inv_dt;
+      v[1][a] = (x1.y() - x0.y()) * inv_dt;
+      acc[0][a] = (v1.x() - v0.x()) * inv_dt;
+      acc[1][a] = (v1.y() - v0.y()) * inv_dt;
+      x[0][a] = x1.x();
+      x[1][a] = x1.y();
+      n[0][a] = c1 * n0[0][a] - s1 * n0[1][a];
+      n[1][a] = s1 * n0[0][a] + c1 * n0[1][a];
     });
   }
 }
+
+template void BasicSphFluid<2>::fill_walls(const std::vector<WallPolyline>&);
+template void BasicSphFluid<2>::move_walls(double);
 
 } // namespace fsi::sph

@@ -1,9 +1,10 @@
 #pragma once
 // The one copy of the wall terms of eqs. 15-17 for a fluid particle i and a wall particle a: the
 // fluid's step (first_half) adds them to i, the tracked walls' reaction takes them off a.
-#include "fsi/core/types.hpp"
+#include "shared.hpp"
 
 #include <algorithm>
+#include <array>
 
 namespace fsi::sph {
 
@@ -17,8 +18,9 @@ inline double limiter(double u, double inv_c0, bool on) {
 /// extrapolated towards every dummy: the reference code's max(0, .) leaves p_d = p_i above the
 /// particle, a vertical force on the side-wall columns that no pressure field balances (it drove a
 /// circulation along the side walls, docs/fluid_sph.md).
-inline double dummy_jump(double rho_i, double r, double dax, double day, double ex, double ey) {
-  return -rho_i * r * (dax * ex + day * ey);
+template <int D, class A, class E>
+inline double dummy_jump(double rho_i, double r, const A& da, const E& e) {
+  return -rho_i * r * dot<D>(da, e);
 }
 
 /// The no-slip viscous wall term (eq. 15) of a pair (i, a) is 2 mu V_i (v_i - v_d) this: with the
@@ -29,26 +31,31 @@ inline double wall_viscous_weight(double dW, double V_a, double r, double reg) {
 }
 
 /// What the wall term of a pair (i, a) needs.
-struct WallPair {
-  double p_i, rho_i, r; ///< pressure and density of i, distance r_ia
-  double dax, day;      ///< a_prior,i - a_w
-  double ex, ey, dWV;   ///< e_ia and dW V_a
-  double b00, b01, b11; ///< B_i (eq. 18)
-  double dvx, dvy;      ///< v_i - v_w
-  double nx, ny;        ///< wall normal
+template <int D> struct WallPair {
+  double p_i, rho_i, r;     ///< pressure and density of i, distance r_ia
+  std::array<double, D> da; ///< a_prior,i - a_w
+  std::array<double, D> e;  ///< e_ia
+  double dWV;               ///< dW V_a
+  const double* b;          ///< B_i (eq. 18), upper triangle (sym)
+  std::array<double, D> dv; ///< v_i - v_w
+  std::array<double, D> n;  ///< wall normal
   double rho0c0, inv_c0;
   bool limiter_on;
 };
 
 /// The force per unit volume on i from wall particle a: the dummy pressure (eq. 16), pushing only,
 /// and the Riemann dissipation along the wall normal with u = 2 (v_i - v_w) . n_w (eqs. 15, 17).
-inline Vec2 wall_term(const WallPair& w) {
-  const double p_d = w.p_i + dummy_jump(w.rho_i, w.r, w.dax, w.day, w.ex, w.ey);
+template <int D> inline std::array<double, D> wall_term(const WallPair<D>& w) {
+  const double p_d = w.p_i + dummy_jump<D>(w.rho_i, w.r, w.da, w.e);
   // A wall pushes, never pulls: p_i + p_d >= 0 (p_d < 0 above a particle near the surface).
-  const double gx = w.dWV * w.ex, gy = w.dWV * w.ey, ps = std::max(w.p_i + p_d, 0.0);
-  const double u = 2.0 * (w.dvx * w.nx + w.dvy * w.ny);
+  std::array<double, D> g;
+  for (int c = 0; c < D; ++c) g[c] = w.dWV * w.e[c];
+  const double ps = std::max(w.p_i + p_d, 0.0);
+  const double u = 2.0 * dot<D>(w.dv, w.n);
   const double d = w.rho0c0 * limiter(u, w.inv_c0, w.limiter_on) * u * w.dWV;
-  return {-ps * (w.b00 * gx + w.b01 * gy) + d * w.nx, -ps * (w.b01 * gx + w.b11 * gy) + d * w.ny};
+  std::array<double, D> t;
+  for (int c = 0; c < D; ++c) t[c] = -ps * sym_row<D>(w.b, c, g) + d * w.n[c];
+  return t;
 }
 
 } // namespace fsi::sph

@@ -84,12 +84,12 @@ TEST_CASE("sph: channel with an inflow buffer develops plane Poiseuille flow", "
     const auto& p = f.particles();
     double m = 0, sx = 0, sp = 0, sxx = 0, sxp = 0;
     for (std::size_t i = 0; i < p.size(); ++i) {
-      if (p.x[i] < xa || p.x[i] >= xb) continue;
-      const int b = std::clamp(static_cast<int>(p.y[i] / H * bins), 0, bins - 1);
-      su[b] += p.vx[i], sy[b] += p.y[i], n[b] += 1.0;
-      flux += o.mass() * p.vx[i] / (xb - xa) / samples;
+      if (p.x[0][i] < xa || p.x[0][i] >= xb) continue;
+      const int b = std::clamp(static_cast<int>(p.x[1][i] / H * bins), 0, bins - 1);
+      su[b] += p.v[0][i], sy[b] += p.x[1][i], n[b] += 1.0;
+      flux += o.mass() * p.v[0][i] / (xb - xa) / samples;
       const double pr = f.pressure(i);
-      m += 1, sx += p.x[i], sp += pr, sxx += p.x[i] * p.x[i], sxp += p.x[i] * pr;
+      m += 1, sx += p.x[0][i], sp += pr, sxx += p.x[0][i] * p.x[0][i], sxp += p.x[0][i] * pr;
     }
     slope += (m * sxp - sx * sp) / (m * sxx - sx * sx) / samples;
   }

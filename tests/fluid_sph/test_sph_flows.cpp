@@ -70,12 +70,12 @@ Hydrostatic hydrostatic(double dp, double H, double W, double t_end, sph::Correc
   double n = 0, sy = 0, sp = 0, syy = 0, syp = 0, row = 0, row_y = 0;
   int rows = 0;
   for (std::size_t i = 0; i < p.size(); ++i) {
-    if (p.y[i] < 0.0 || (!periodic && (p.x[i] < 0.0 || p.x[i] > W))) ++r.below_floor;
-    if (p.x[i] < 0.25 * W || p.x[i] > 0.75 * W) continue;
-    if (p.y[i] < dp) row += f.pressure(i), row_y += p.y[i], ++rows;
-    if (p.y[i] < 3.0 * dp || p.y[i] > H - 3.0 * dp) continue;
-    n += 1, sy += p.y[i], sp += f.pressure(i), syy += p.y[i] * p.y[i],
-        syp += p.y[i] * f.pressure(i);
+    if (p.x[1][i] < 0.0 || (!periodic && (p.x[0][i] < 0.0 || p.x[0][i] > W))) ++r.below_floor;
+    if (p.x[0][i] < 0.25 * W || p.x[0][i] > 0.75 * W) continue;
+    if (p.x[1][i] < dp) row += f.pressure(i), row_y += p.x[1][i], ++rows;
+    if (p.x[1][i] < 3.0 * dp || p.x[1][i] > H - 3.0 * dp) continue;
+    n += 1, sy += p.x[1][i], sp += f.pressure(i), syy += p.x[1][i] * p.x[1][i],
+        syp += p.x[1][i] * f.pressure(i);
   }
   const double slope = (n * syp - sy * sp) / (n * syy - sy * sy);
   r.bottom_pressure = (sp - slope * sy) / n;

@@ -131,14 +131,12 @@ void SphModel::Adapter::advance(double t, double dt) {
       bs[j].place(x, position_, normal_);
       bs[j].interpolate(a_[j], point_a_);
       for (std::size_t p = 0; p < bs[j].size(); ++p, ++a) {
-        w.vx[a] = (position_[p].x() - w.x[a]) * inv_h; // mean over the acoustic step (eq. 17)
-        w.vy[a] = (position_[p].y() - w.y[a]) * inv_h;
-        w.ax[a] = point_a_[p].x();
-        w.ay[a] = point_a_[p].y();
-        w.x[a] = position_[p].x();
-        w.y[a] = position_[p].y();
-        w.nx[a] = normal_[p].x();
-        w.ny[a] = normal_[p].y();
+        for (int c = 0; c < 2; ++c) {
+          w.v[c][a] = (position_[p][c] - w.x[c][a]) * inv_h; // mean over the acoustic step (eq. 17)
+          w.a[c][a] = point_a_[p][c];
+          w.x[c][a] = position_[p][c];
+          w.n[c][a] = normal_[p][c];
+        }
       }
     }
     f.advance(h);
@@ -254,8 +252,8 @@ void SphModel::write_frame(FieldsFile& file, const std::vector<std::string>& fie
   xy_.resize(2 * n);
   v_.resize(2 * n);
   for (std::size_t i = 0; i < n; ++i) {
-    xy_[2 * i] = p.x[i], xy_[2 * i + 1] = p.y[i];
-    v_[2 * i] = p.vx[i], v_[2 * i + 1] = p.vy[i];
+    xy_[2 * i] = p.x[0][i], xy_[2 * i + 1] = p.x[1][i];
+    v_[2 * i] = p.v[0][i], v_[2 * i + 1] = p.v[1][i];
   }
   file.write_grid("particles", xy_,
                   select_fields(fields, {{"velocity", 2, v_.data()},
@@ -280,7 +278,7 @@ std::optional<double> SphModel::probe(const ProbeSpec& probe) const {
   if (probe.quantity == "kinetic_energy") return fluid_->kinetic_energy(); // J per m of depth
   if (probe.quantity == "mean_speed") {
     double speeds = 0.0;
-    for (std::size_t i = 0; i < p.size(); ++i) speeds += std::hypot(p.vx[i], p.vy[i]);
+    for (std::size_t i = 0; i < p.size(); ++i) speeds += std::hypot(p.v[0][i], p.v[1][i]);
     return p.size() ? speeds / static_cast<double>(p.size()) : 0.0;
   }
   if (probe.quantity == "wall_force_x") return wall_force().x();
@@ -311,7 +309,8 @@ std::optional<std::string> SphModel::non_finite() const {
     const std::string what = i < first_point_
                                  ? "wall particle " + std::to_string(i)
                                  : "interface point " + std::to_string(i - first_point_);
-    if (auto bad = non_finite_point(what, {w.x[i], w.y[i]}, {w.vx[i], w.vy[i]})) return bad;
+    if (auto bad = non_finite_point(what, {w.x[0][i], w.x[1][i]}, {w.v[0][i], w.v[1][i]}))
+      return bad;
   }
   return std::nullopt;
 }

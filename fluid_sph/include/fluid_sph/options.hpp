@@ -4,6 +4,7 @@
 #include "fsi/core/options.hpp"
 #include "fsi/core/types.hpp"
 
+#include <array>
 #include <string>
 
 namespace fsi::sph {
@@ -29,13 +30,15 @@ struct Inflow {
   double profile(double y, double t) const;
 };
 
-struct SphOptions {
+/// The fluid's options in D = 2 or 3 dimensions (gravity and domain D-vectors; the inflow buffer
+/// is 2-D only).
+template <int D> struct BasicSphOptions {
   double rho0 = 1000.0;   ///< reference density, kg/m^3
   double c0 = 0.0;        ///< artificial sound speed of p = c0^2 (rho - rho0) (eq. 2), m/s
   double dp = 0.0;        ///< initial particle spacing, m
   double h_over_dp = 1.3; ///< h = 1.3 dp (method notes, "Kernel and resolution")
   double viscosity = 0.0; ///< kinematic nu, m^2/s (eq. 3's viscous term; 0 skips it)
-  Vec2 gravity = Vec2::Zero();
+  VecD<D> gravity = VecD<D>::Zero();
   Correction correction = Correction::rkgc;
   /// true: the low-dissipation limiter of eq. 5, beta = min(3 max(u / c0, 0), 1). false: beta = 1,
   /// the full linearised Riemann dissipation (settling runs: with the limiter a hydrostatic tank
@@ -62,22 +65,47 @@ struct SphOptions {
   double fixed_dt = 0.0;     ///< > 0: every acoustic step is fixed_dt (Dt a whole number of them)
   /// Domain: periodic directions use it as the period [min, max); otherwise a fluid particle
   /// leaving it is removed and counted.
-  Vec2 domain_min = Vec2::Zero(), domain_max = Vec2::Zero();
+  VecD<D> domain_min = VecD<D>::Zero(), domain_max = VecD<D>::Zero();
   bool periodic_x = false, periodic_y = false;
+  bool periodic_z = false; ///< D = 3 only
+  std::array<bool, D> periodic() const {
+    if constexpr (D == 2)
+      return {periodic_x, periodic_y};
+    else
+      return {periodic_x, periodic_y, periodic_z};
+  }
   /// Artificial damping for settling runs (hydrostatic): for t < damping_time the velocities are
   /// damped at rate 20 / T_d (1 - t / T_d) after each acoustic step (0: off).
   double damping_time = 0.0;
-  Inflow inflow{}; ///< channel inflow buffer (needs periodic_x)
+  Inflow inflow{}; ///< channel inflow buffer (needs periodic_x; 2-D only)
   /// Density guard: a RunError names the particle when rho leaves [lo, hi] rho0.
   double rho_min_factor = 0.5, rho_max_factor = 1.5;
 
   double h() const { return h_over_dp * dp; }
-  double mass() const { return rho0 * dp * dp; }
+  /// dp^D, a lattice particle's volume.
+  double cell_volume() const {
+    if constexpr (D == 2)
+      return dp * dp;
+    else
+      return dp * dp * dp;
+  }
+  double mass() const {
+    if constexpr (D == 2)
+      return rho0 * dp * dp;
+    else
+      return rho0 * dp * dp * dp;
+  }
   /// u_ref, or c0 / 10 where it is 0 (c0 = 10 U_ref, method notes).
   double u_advection() const { return u_ref > 0.0 ? u_ref : 0.1 * c0; }
   /// Throws fsi::InputError naming the option, its value and the allowed range.
   void validate() const;
 };
+
+extern template struct BasicSphOptions<2>;
+extern template struct BasicSphOptions<3>;
+
+using SphOptions = BasicSphOptions<2>;
+using SphOptions3 = BasicSphOptions<3>;
 
 std::string to_string(Correction c);
 

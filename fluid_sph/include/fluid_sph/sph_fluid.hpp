@@ -1,6 +1,7 @@
 #pragma once
 // Weakly compressible Riemann-SPH fluid with reverse kernel gradient correction (RKGC paper,
-// eqs. 1-5, 15-24; ../shared/sph-method-notes.md gives the reference code's forms and signs).
+// eqs. 1-5, 15-24; ../shared/sph-method-notes.md gives the reference code's forms and signs),
+// written once for D = 2 and 3 (docs/architecture.md, "Two and three dimensions").
 //
 // Dual-criteria time stepping (method notes, "Fluid step"). An advection step Dt holds several
 // acoustic steps dt; pair data (neighbours, e_ij, dW_ij), the correction matrices B_i, the prior
@@ -12,13 +13,18 @@
 // (eq. 24) and the next Dt.
 //
 // Pair conventions: e_ij = (r_i - r_j) / r_ij, grad_i W_ij = dW_ij e_ij with dW <= 0.
-// Walls: polylines with the fluid on the LEFT of each directed segment a -> b, filled with 4 layers
-// of dummy particles at dp; one-sided Riemann wall (eqs. 15-17, method notes' dummy state).
+// Walls: in 2-D polylines with the fluid on the LEFT of each directed segment a -> b, filled with
+// 4 layers of dummy particles at dp; in both dimensions wall particles given directly (WallPoint;
+// box_walls for a box tank); one-sided Riemann wall (eqs. 15-17, method notes' dummy state).
+// What stays 2-D (members requires(D == 2)): polylines, rigid wall motions, the inflow buffer and
+// the interface boundary of a 2-D interface mesh (fluid_sph/interface_boundary.hpp).
 #include "fluid_sph/options.hpp"
 #include "particles/field_set.hpp"
 #include "particles/kernels.hpp"
 #include "particles/periodic_grid.hpp"
+#include "particles/vector_field.hpp"
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -31,7 +37,7 @@ class StateArchive;
 namespace fsi::sph {
 
 /// A rigid wall: points in order (fluid on the left of each segment), open or closed, and a
-/// motion group (walls of one group move together; group 0 without a motion is static).
+/// motion group (walls of one group move together; group 0 without a motion is static). 2-D.
 struct WallPolyline {
   std::vector<Vec2> points;
   bool closed = false;
@@ -40,7 +46,7 @@ struct WallPolyline {
 
 /// Rigid motion of a wall group at time t: a material point X (reference position) is at
 /// x = X_c + d + R(theta) (X - X_c), with velocity v_c + omega x r and acceleration
-/// a_c + alpha x r - omega^2 r, r = R(theta) (X - X_c).
+/// a_c + alpha x r - omega^2 r, r = R(theta) (X - X_c). 2-D.
 struct RigidMotion {
   Vec2 centre = Vec2::Zero(); ///< X_c, reference
   Vec2 d = Vec2::Zero(), v = Vec2::Zero(), a = Vec2::Zero();
@@ -50,73 +56,99 @@ using WallMotion = std::function<RigidMotion(double t)>;
 
 /// The signed distance of a point to a wall group's surface, > 0 on the fluid's side (the caller's
 /// exact geometry, e.g. a structure's interface polyline as it is now).
-using WallDistance = std::function<double(const Vec2& x)>;
+template <int D> using BasicWallDistance = std::function<double(const VecD<D>& x)>;
+using WallDistance = BasicWallDistance<2>;
 
 /// A wall particle given directly (e.g. a boundary point of a structure's interface,
-/// fluid_sph/interface_boundary.hpp): reference position, unit normal into the fluid, group,
-/// depth behind the wall surface along n (>= 0) and, on the bisector of a convex corner of the
-/// solid, the sine of half the angle between its faces' normals (0 elsewhere; < 1): the
-/// through-a-wall guard's geometry; its volume V_a (0: dp^2, a wall dummy's).
-struct WallPoint {
-  Vec2 x = Vec2::Zero(), n = Vec2::Zero();
+/// fluid_sph/interface_boundary.hpp, or a box tank's dummy, box_walls): reference position, unit
+/// normal into the fluid, group, depth behind the wall surface along n (>= 0) and, on the bisector
+/// of a convex corner of the solid, the sine of half the angle between its faces' normals (0
+/// elsewhere; < 1): the through-a-wall guard's geometry; its volume V_a (0: dp^D, a wall dummy's).
+template <int D> struct BasicWallPoint {
+  VecD<D> x = VecD<D>::Zero(), n = VecD<D>::Zero();
   int group = 0;
   double depth = 0.0, corner = 0.0, vol = 0.0;
 };
+using WallPoint = BasicWallPoint<2>;
+using WallPoint3 = BasicWallPoint<3>;
 
-/// The fluid's struct-of-arrays particles (registered in one FieldSet).
-struct FluidParticles {
+/// The stored entries of a symmetric D x D matrix, its upper triangle row by row: 3 in 2-D
+/// (b00, b01, b11), 6 in 3-D (b00, b01, b02, b11, b12, b22).
+template <int D> inline constexpr int symmetric_count = D*(D + 1) / 2;
+
+/// The reals prefix + rc of a symmetric matrix's upper triangle (r <= c) in `fields`.
+template <int D>
+std::array<std::vector<double>*, symmetric_count<D>> add_symmetric(particles::FieldSet& fields,
+                                                                   const std::string& prefix) {
+  std::array<std::vector<double>*, symmetric_count<D>> m{};
+  std::size_t k = 0;
+  for (int r = 0; r < D; ++r)
+    for (int c = r; c < D; ++c)
+      m[k++] = &fields.add_real(prefix + std::to_string(r) + std::to_string(c));
+  return m;
+}
+
+/// The fluid's struct-of-arrays particles (registered in one FieldSet; the 2-D names x, y, vx, vy
+/// of the vectors, so 2-D checkpoints are unchanged).
+template <int D> struct BasicFluidParticles {
   particles::FieldSet fields;
   std::vector<std::uint32_t>& id = fields.add_index("id");
-  std::vector<double>&x = fields.add_real("x"), &y = fields.add_real("y");
-  std::vector<double>&vx = fields.add_real("vx"), &vy = fields.add_real("vy");
+  particles::VectorField<D> x = particles::add_vector<D>(fields, "");
+  particles::VectorField<D> v = particles::add_vector<D>(fields, "v");
   std::vector<double>& rho = fields.add_real("rho");
   std::vector<double>& drho = fields.add_real("drho");
   std::vector<double>& vol = fields.add_real("vol");
-  /// Symmetric correction matrix B~ (eq. 21).
-  std::vector<double>& b00 = fields.add_real("b00");
-  std::vector<double>& b01 = fields.add_real("b01");
-  std::vector<double>& b11 = fields.add_real("b11");
+  /// Symmetric correction matrix B~ (eq. 21), upper triangle (symmetric_count).
+  std::array<std::vector<double>*, symmetric_count<D>> b = add_symmetric<D>(fields, "b");
   /// Prior acceleration: gravity + viscous, per Dt.
-  std::vector<double>&apx = fields.add_real("apx"), &apy = fields.add_real("apy");
+  particles::VectorField<D> ap = particles::add_vector<D>(fields, "ap");
   /// Total acceleration of the last acoustic step.
-  std::vector<double>&ax = fields.add_real("ax"), &ay = fields.add_real("ay");
+  particles::VectorField<D> a = particles::add_vector<D>(fields, "a");
   /// Positions at the last pair build.
-  std::vector<double>&xb = fields.add_real("xb"), &yb = fields.add_real("yb");
+  particles::VectorField<D> xb = particles::add_vector<D>(fields, "", true, "b");
   /// Scratch (not state): pressure; |A_i| (the WKGC indicator).
   std::vector<double>& p = fields.add_real("p", false);
   std::vector<double>& det_a = fields.add_real("det_a", false);
   std::size_t size() const { return fields.size(); }
 };
+using FluidParticles = BasicFluidParticles<2>;
 
-/// Dummy wall particles (4 layers at dp).
-struct WallParticles {
+/// Wall particles: dummies (4 layers at dp) and points given directly.
+template <int D> struct BasicWallParticles {
   particles::FieldSet fields;
   std::vector<std::uint32_t>& group = fields.add_index("group");
   /// Current and reference positions.
-  std::vector<double>&x = fields.add_real("x"), &y = fields.add_real("y");
-  std::vector<double>&x0 = fields.add_real("x0"), &y0 = fields.add_real("y0");
+  particles::VectorField<D> x = particles::add_vector<D>(fields, "");
+  particles::VectorField<D> x0 = particles::add_vector<D>(fields, "", true, "0");
   /// Unit normal into the fluid, current and reference.
-  std::vector<double>&nx = fields.add_real("nx"), &ny = fields.add_real("ny");
-  std::vector<double>&nx0 = fields.add_real("nx0"), &ny0 = fields.add_real("ny0");
+  particles::VectorField<D> n = particles::add_vector<D>(fields, "n");
+  particles::VectorField<D> n0 = particles::add_vector<D>(fields, "n", true, "0");
   /// Velocity and acceleration averaged over the step.
-  std::vector<double>&vx = fields.add_real("vx"), &vy = fields.add_real("vy");
-  std::vector<double>&ax = fields.add_real("ax"), &ay = fields.add_real("ay");
+  particles::VectorField<D> v = particles::add_vector<D>(fields, "v");
+  particles::VectorField<D> a = particles::add_vector<D>(fields, "a");
   /// Positions at the last pair build.
-  std::vector<double>&xb = fields.add_real("xb"), &yb = fields.add_real("yb");
+  particles::VectorField<D> xb = particles::add_vector<D>(fields, "", true, "b");
   /// Tracked walls: the viscous force of the fluid on them, per Dt.
-  std::vector<double>&fvx = fields.add_real("fvx"), &fvy = fields.add_real("fvy");
+  particles::VectorField<D> fv = particles::add_vector<D>(fields, "fv");
   /// Depth behind the wall surface along the normal and, on a convex corner's bisector, the sine
   /// of half the angle between the faces' normals (WallPoint): reference geometry fixed by the
   /// constructor (as the wall count is), so not state.
   std::vector<double>& depth = fields.add_real("depth", false);
   std::vector<double>& corner = fields.add_real("corner", false);
-  /// Volume V_a in every wall sum: dp^2 for a dummy; a boundary point's own (WallPoint::vol).
+  /// Volume V_a in every wall sum: dp^D for a dummy; a boundary point's own (WallPoint::vol).
   std::vector<double>& vol = fields.add_real("vol", false);
   std::size_t size() const { return fields.size(); }
 };
+using WallParticles = BasicWallParticles<2>;
 
-class SphFluid {
+template <int D> class BasicSphFluid {
 public:
+  using Vec = VecD<D>;
+  using Options = BasicSphOptions<D>;
+  using Point = BasicWallPoint<D>;
+  using Distance = BasicWallDistance<D>;
+  static constexpr int S = symmetric_count<D>;
+
   /// Fluid particles start at rest at `positions`; walls are filled with dummy particles.
   /// Throws fsi::InputError on invalid options or positions outside the domain.
   /// `points` are appended to the walls' dummies as further wall particles (in order);
@@ -125,29 +157,33 @@ public:
   /// only if its distance puts it more than dp/2 behind too (a thin body's end face may have no
   /// boundary point of its own). Called during the pair builds, this one's included, from several
   /// threads at once.
-  SphFluid(const SphOptions& options, const std::vector<Vec2>& positions,
-           const std::vector<WallPolyline>& walls = {}, const std::vector<WallPoint>& points = {},
-           std::vector<WallDistance> distances = {});
+  BasicSphFluid(const Options& options, const std::vector<Vec>& positions,
+                const std::vector<WallPolyline>& walls = {}, const std::vector<Point>& points = {},
+                std::vector<Distance> distances = {}) requires(D == 2);
+  /// The 3-D fluid: its walls are the wall particles `points` (e.g. box_walls), as above.
+  BasicSphFluid(const Options& options, const std::vector<Vec>& positions,
+                const std::vector<Point>& points = {},
+                std::vector<Distance> distances = {}) requires(D == 3);
 
   /// Initial velocities (before the first advance), one per particle in the order of the
   /// constructor's positions (particle id; the particles themselves are sorted by cell).
-  void set_velocities(const std::vector<Vec2>& v);
+  void set_velocities(const std::vector<Vec>& v);
   /// Motion of a wall group from now on (its dummies follow it from the next acoustic step).
-  void set_wall_motion(int group, WallMotion motion);
+  void set_wall_motion(int group, WallMotion motion) requires(D == 2);
   /// Wall particles the caller moves (groups without a WallMotion, e.g. a structure's boundary
-  /// points): before each advance set x, y, nx, ny at the step's end and vx, vy, ax, ay averaged
-  /// over it (eq. 17); the pairs follow at the next advection step, as for a WallMotion.
-  WallParticles& moved_walls() { return walls_; }
+  /// points): before each advance set x, n at the step's end and v, a averaged over it (eq. 17);
+  /// the pairs follow at the next advection step, as for a WallMotion.
+  BasicWallParticles<D>& moved_walls() { return walls_; }
   /// How the force on a tracked wall is formed. exact: the reaction of the wall terms the fluid
   /// particles felt (action = -reaction). reference_code: the RKGC paper's code, whose reaction
   /// takes the dummy pressure of eq. 16 without B_i (method notes): a measurement of the momentum
   /// it does not conserve (bench/fluid_sph/interface_momentum.cpp), not a model to run with.
   enum class Reaction { exact, reference_code };
   /// From now on the force of the fluid on each wall particle a >= first is kept: wall_force(a)
-  /// after each advance, N/m, formed as `reaction` says (eqs. 15-17 and the no-slip viscous term
-  /// frozen over Dt).
+  /// after each advance, N/m (2-D) or N (3-D), formed as `reaction` says (eqs. 15-17 and the
+  /// no-slip viscous term frozen over Dt).
   void track_wall_forces(std::size_t first, Reaction reaction = Reaction::exact);
-  Vec2 wall_force(std::size_t a) const { return {wfx_[a - tracked_], wfy_[a - tracked_]}; }
+  Vec wall_force(std::size_t a) const;
 
   /// The acoustic step allowed now: min(acoustic criterion, what is left of the current Dt), or
   /// fixed_dt.
@@ -167,15 +203,15 @@ public:
   std::size_t removed() const { return removed_; }
   double mean_neighbours() const;
   double sigma0() const { return sigma0_; }
-  const SphOptions& options() const { return options_; }
-  const FluidParticles& particles() const { return fluid_; }
-  const WallParticles& walls() const { return walls_; }
+  const Options& options() const { return options_; }
+  const BasicFluidParticles<D>& particles() const { return fluid_; }
+  const BasicWallParticles<D>& walls() const { return walls_; }
 
   // Probes.
   double kinetic_energy() const;
-  Vec2 momentum() const;
+  Vec momentum() const;
   /// Kernel-weighted (Shepard) pressure at a point, from the fluid particles within 2h; 0 if none.
-  double pressure_at(const Vec2& point) const;
+  double pressure_at(const Vec& point) const;
   /// Largest x of the bulk fluid (neighbours' kernel sum >= half the lattice's, W(0) left out
   /// as MPS's pnd leaves out i): the surge front of a dam break.
   double surge_front() const;
@@ -199,22 +235,26 @@ public:
 
   // The operators, exposed for the consistency tests (eqs. 18-19): on the current pairs.
   /// grad psi_i by the RKGC form sum_j (psi_i B_j + psi_j B_i) grad W_ij V_j (eq. 18).
-  Vec2 rkgc_gradient(std::size_t i, const std::vector<double>& psi) const;
+  Vec rkgc_gradient(std::size_t i, const std::vector<double>& psi) const;
   /// B_i sum_j (psi_j - psi_i) grad W_ij V_j (first-order consistent for any B_i = A_i^-1).
-  Vec2 corrected_difference_gradient(std::size_t i, const std::vector<double>& psi) const;
+  Vec corrected_difference_gradient(std::size_t i, const std::vector<double>& psi) const;
   /// sum_j (psi_j - psi_i) grad W_ij V_j (uncorrected).
-  Vec2 plain_difference_gradient(std::size_t i, const std::vector<double>& psi) const;
+  Vec plain_difference_gradient(std::size_t i, const std::vector<double>& psi) const;
 
 private:
-  void fill_walls(const std::vector<WallPolyline>& walls);
-  void append_wall_points(const std::vector<WallPoint>& points);
+  /// The members' set-up and the fluid particles (walls and the first advection step follow).
+  struct Setup {};
+  BasicSphFluid(Setup, const Options& options, const std::vector<Vec>& positions,
+                std::vector<Distance> distances);
+  void fill_walls(const std::vector<WallPolyline>& walls) requires(D == 2);
+  void append_wall_points(const std::vector<Point>& points);
 
   void wall_reaction();         // tracked walls: the wall terms of first_half, reversed
   void wall_viscous_reaction(); // tracked walls: the viscous wall term of prior_acceleration
 
   void per_advection_step(); // wrap, remove, sort, pairs, density, B, viscous, transport, Dt
-  // From xb, yb (fluid) and xb, yb (walls); guard: the through-a-wall check (not on a rebuild of
-  // pairs already checked, restore and read_state, whose walls' exact surface may have moved).
+  // From xb (fluid) and xb (walls); guard: the through-a-wall check (not on a rebuild of pairs
+  // already checked, restore and read_state, whose walls' exact surface may have moved).
   void build_pairs(bool guard = true);
   void reinitialise_density();
   /// sum_j W_ij over fluid i's fluid and wall neighbours and itself, at the last list build.
@@ -224,25 +264,25 @@ private:
   void transport_shift();
   void compute_advection_dt();
   void compute_acoustic_dt();
-  void move_walls(double dt);
-  void impose_inflow(double t); // the buffer's particles get U(y, t) (fluid_sph/src/inflow.cpp)
+  void move_walls(double dt) requires(D == 2);
+  void impose_inflow(double t) requires(D == 2); // the buffer's U(y, t) (src/inflow.cpp)
   void first_half(double dt);
   void second_half(double dt);
   void guard(long step, double t) const;
   std::string where(std::size_t i, long step, double t) const;
 
-  SphOptions options_;
-  particles::WendlandC2 kernel_;
+  Options options_;
+  particles::BasicWendlandC2<D> kernel_;
   double h_, sigma0_, mass_;
-  FluidParticles fluid_;
-  WallParticles walls_;
-  std::vector<WallMotion> motions_;     // by group, empty: static
-  std::vector<WallDistance> distances_; // by group, empty: the points' planes alone
-  particles::PeriodicGrid grid_, wall_grid_;
+  BasicFluidParticles<D> fluid_;
+  BasicWallParticles<D> walls_;
+  std::vector<WallMotion> motions_; // by group, empty: static (2-D)
+  std::vector<Distance> distances_; // by group, empty: the points' planes alone
+  particles::BasicPeriodicGrid<D> grid_, wall_grid_;
   // Pairs, compressed rows: fluid i's fluid neighbours are pj_[pstart_[i] .. pstart_[i+1]).
   std::vector<std::uint32_t> pstart_, pj_, wstart_, wj_;
-  std::vector<double> pex_, pey_, pdw_, pr_; // e_ij, dW_ij, r_ij
-  std::vector<double> wex_, wey_, wdw_, wr_;
+  std::array<std::vector<double>, D> pe_, we_; // e_ij by component
+  std::vector<double> pdw_, pr_, wdw_, wr_;    // dW_ij, r_ij
   std::vector<double> scratch_;
   std::vector<std::uint32_t> count_;
   std::vector<std::uint8_t> keep_;
@@ -250,11 +290,24 @@ private:
   long step_ = 0, builds_ = 0, sub_ = 0, subs_ = 0; // fixed dt: subs_ acoustic steps per Dt
   std::size_t removed_ = 0;
   std::size_t tracked_ = static_cast<std::size_t>(-1); // first tracked wall particle
-  std::vector<double> wfx_, wfy_;                      // their force, last acoustic step
+  std::array<std::vector<double>, D> wf_;              // their force, last acoustic step
   Reaction reaction_ = Reaction::exact;
 };
 
+extern template class BasicSphFluid<2>;
+extern template class BasicSphFluid<3>;
+
+using SphFluid = BasicSphFluid<2>;
+using SphFluid3 = BasicSphFluid<3>;
+
 /// Lattice points (x0 + (i + 1/2) dp, y0 + (j + 1/2) dp) inside the rectangle [lo, hi].
 std::vector<Vec2> fill_rectangle(const Vec2& lo, const Vec2& hi, double dp);
+/// Lattice points lo + (i + 1/2, j + 1/2, k + 1/2) dp inside the box [lo, hi].
+std::vector<Vec3> fill_box(const Vec3& lo, const Vec3& hi, double dp);
+/// The dummies of an open box tank [lo, hi] (no lid): the lattice points lo + (i + 1/2) dp within
+/// `layers` dp outside its floor and four sides, below hi.z, with the normal of the nearest face
+/// (on an edge or corner the normalised sum of the faces' normals, as at a polyline's vertex) and
+/// the depth behind the nearest feature along it.
+std::vector<WallPoint3> box_walls(const Vec3& lo, const Vec3& hi, double dp, int layers = 4);
 
 } // namespace fsi::sph

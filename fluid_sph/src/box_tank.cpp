@@ -1,0 +1,60 @@
+// The 3-D set-up of a box of water in an open box tank: the lattice fill and the tank's dummies
+// (the 3-D counterpart of fill_rectangle and of a polyline's dummies, wall_dummies.cpp).
+#include "fluid_sph/sph_fluid.hpp"
+
+#include "fsi/core/error.hpp"
+
+#include <cmath>
+
+namespace fsi::sph {
+
+namespace {
+
+/// The whole lattice layers of spacing dp in [lo, hi) along one axis.
+long layers_in(double lo, double hi, double dp) {
+  return static_cast<long>(std::floor((hi - lo) / dp + 1e-9));
+}
+
+} // namespace
+
+std::vector<Vec3> fill_box(const Vec3& lo, const Vec3& hi, double dp) {
+  if (!(dp > 0.0)) throw InputError("fluid_sph: fill_box needs dp > 0");
+  const long ni = layers_in(lo.x(), hi.x(), dp), nj = layers_in(lo.y(), hi.y(), dp),
+             nk = layers_in(lo.z(), hi.z(), dp);
+  std::vector<Vec3> out;
+  for (long k = 0; k < nk; ++k)
+    for (long j = 0; j < nj; ++j)
+      for (long i = 0; i < ni; ++i)
+        out.push_back(lo + dp * Vec3(static_cast<double>(i) + 0.5, static_cast<double>(j) + 0.5,
+                                     static_cast<double>(k) + 0.5));
+  return out;
+}
+
+std::vector<WallPoint3> box_walls(const Vec3& lo, const Vec3& hi, double dp, int layers) {
+  if (!(dp > 0.0) || layers < 1 || !((hi - lo).minCoeff() > 0.0))
+    throw InputError("fluid_sph: box_walls needs dp > 0, layers >= 1 and hi > lo");
+  const double depth = layers * dp;
+  const long ni = layers_in(lo.x(), hi.x(), dp), nj = layers_in(lo.y(), hi.y(), dp),
+             nk = layers_in(lo.z(), hi.z(), dp);
+  std::vector<WallPoint3> out;
+  for (long k = -layers; k < nk; ++k)
+    for (long j = -layers; j < nj + layers; ++j)
+      for (long i = -layers; i < ni + layers; ++i) {
+        const Vec3 q = lo + dp * Vec3(static_cast<double>(i) + 0.5, static_cast<double>(j) + 0.5,
+                                      static_cast<double>(k) + 0.5);
+        // The nearest point of the tank's solid outside: q clamped into [lo, hi] (no lid).
+        const Vec3 nearest = q.cwiseMax(lo).cwiseMin(hi);
+        const Vec3 behind = nearest - q; // into the fluid, 0 along the axes inside the box
+        const double dist = behind.norm();
+        if (!(dist > 0.0) || dist >= depth) continue;
+        // The normal: the sum of the faces' inward normals the point is behind, normalised.
+        Vec3 n = Vec3::Zero();
+        for (int c = 0; c < 3; ++c)
+          if (behind[c] != 0.0) n[c] = behind[c] > 0.0 ? 1.0 : -1.0;
+        n.normalize();
+        out.push_back({q, n, 0, behind.dot(n), 0.0, 0.0});
+      }
+  return out;
+}
+
+} // namespace fsi::sph
