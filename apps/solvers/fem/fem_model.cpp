@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <type_traits>
 
 namespace fsi::app::fem_plugin {
 
@@ -54,7 +55,10 @@ double edge_length(const fem::Mesh& mesh, const std::string& tag) {
 
 } // namespace
 
-int probe_node(const Scene& scene, const fem::Mesh& mesh, const ProbeSpec& probe) {
+namespace {
+// The node a probe names, by index or at its reference point (probe.point, in 3-D point3).
+template <class MeshT>
+int probe_node_of(const Scene& scene, const MeshT& mesh, const ProbeSpec& probe) {
   const int count = static_cast<int>(mesh.num_nodes());
   if (probe.node) {
     if (*probe.node >= count)
@@ -63,21 +67,38 @@ int probe_node(const Scene& scene, const fem::Mesh& mesh, const ProbeSpec& probe
                   std::to_string(count) + " nodes)");
     return *probe.node;
   }
-  Vec2 lo = mesh.X.front(), hi = mesh.X.front();
+  using Point = std::decay_t<decltype(mesh.X.front())>;
+  const Point point = [&] {
+    if constexpr (Point::RowsAtCompileTime == 3)
+      return *probe.point3;
+    else
+      return *probe.point;
+  }();
+  Point lo = mesh.X.front(), hi = mesh.X.front();
   for (const auto& x : mesh.X) lo = lo.cwiseMin(x), hi = hi.cwiseMax(x);
   const double tolerance = 1e-6 * (hi - lo).norm();
   int best = 0;
   for (int k = 1; k < count; ++k)
-    if ((mesh.X[static_cast<std::size_t>(k)] - *probe.point).norm() <
-        (mesh.X[static_cast<std::size_t>(best)] - *probe.point).norm())
+    if ((mesh.X[static_cast<std::size_t>(k)] - point).norm() <
+        (mesh.X[static_cast<std::size_t>(best)] - point).norm())
       best = k;
-  if ((mesh.X[static_cast<std::size_t>(best)] - *probe.point).norm() > tolerance) {
+  if ((mesh.X[static_cast<std::size_t>(best)] - point).norm() > tolerance) {
     std::ostringstream msg;
-    msg << "no node of structure '" << probe.structure << "' at (" << probe.point->x() << ", "
-        << probe.point->y() << ")";
+    msg << "no node of structure '" << probe.structure << "' at (";
+    for (int i = 0; i < point.size(); ++i) msg << (i ? ", " : "") << point[i];
+    msg << ")";
     fail_at(scene, probe.line, probe.key + ".point", msg.str());
   }
   return best;
+}
+} // namespace
+
+int probe_node(const Scene& scene, const fem::Mesh& mesh, const ProbeSpec& probe) {
+  return probe_node_of(scene, mesh, probe);
+}
+
+int probe_node(const Scene& scene, const fem::TetMesh& mesh, const ProbeSpec& probe) {
+  return probe_node_of(scene, mesh, probe);
 }
 
 namespace {
@@ -185,17 +206,7 @@ void FemModel::advance(double /*time*/, double dt) {
   } catch (const RunError& e) {
     throw RunError("structure '" + name() + "': " + e.what());
   }
-  const auto& report = *step;
-  newton_iterations_ += report.iterations;
-  newton_max_ = std::max(newton_max_, report.iterations);
-  newton_halvings_ += report.halvings;
-  steps_with_halvings_ += report.halvings > 0 ? 1 : 0;
-  if (report.substeps > 1) ++substepped_steps_, substeps_ += report.substeps;
-  roundoff_stops_ += report.roundoff_stops;
-  ++steps_;
-  const long fallbacks = structure_->linear_solver_fallbacks();
-  lu_fallbacks_ += fallbacks - lu_fallbacks_seen_;
-  lu_fallbacks_seen_ = fallbacks;
+  counters_.add(*step, structure_->linear_solver_fallbacks());
 }
 
 std::optional<std::string> FemModel::non_finite() const {
@@ -212,7 +223,7 @@ std::optional<std::string> FemModel::non_finite() const {
 }
 
 std::vector<std::string> FemModel::take_notes() {
-  if (lu_noted_ || lu_fallbacks_ == 0) return {};
+  if (lu_noted_ || counters_.lu_fallbacks == 0) return {};
   lu_noted_ = true;
   std::ostringstream s;
   s << "structure '" << name() << "': the stiffness matrix is not positive definite at structure "
@@ -253,47 +264,17 @@ std::optional<double> FemModel::probe(const ProbeSpec& probe) const {
 }
 
 void FemModel::write_state(StateArchive& archive) const {
-  const std::string prefix = "structures/" + name() + "/";
-  structure_->write_state(archive, prefix);
-  archive.put("run/" + prefix + "newton",
-              std::vector<std::int64_t>{newton_iterations_, steps_, newton_max_});
-  archive.put("run/" + prefix + "halvings",
-              std::vector<std::int64_t>{newton_halvings_, steps_with_halvings_, substepped_steps_,
-                                        substeps_});
-  archive.put("run/" + prefix + "roundoff_stops", std::vector<std::int64_t>{roundoff_stops_});
-  archive.put("run/" + prefix + "lu_fallbacks", std::vector<std::int64_t>{lu_fallbacks_});
+  structure_->write_state(archive, "structures/" + name() + "/");
+  counters_.write(archive, name());
 }
 
 void FemModel::read_state(const StateArchive& archive) {
-  const std::string prefix = "structures/" + name() + "/";
-  structure_->read_state(archive, prefix);
-  const auto& counts = archive.integers("run/" + prefix + "newton", 3);
-  newton_iterations_ = counts[0], steps_ = counts[1], newton_max_ = static_cast<int>(counts[2]);
-  if (archive.all_integers().count("run/" + prefix + "halvings")) { // absent before the safeguard
-    const auto& h = archive.integers("run/" + prefix + "halvings", 4);
-    newton_halvings_ = h[0], steps_with_halvings_ = h[1];
-    substepped_steps_ = h[2], substeps_ = h[3];
-  }
-  if (archive.all_integers().count("run/" + prefix + "roundoff_stops")) // absent before the count
-    roundoff_stops_ = archive.integers("run/" + prefix + "roundoff_stops", 1)[0];
-  if (archive.all_integers().count("run/" + prefix + "lu_fallbacks")) // absent before the count
-    lu_fallbacks_ = archive.integers("run/" + prefix + "lu_fallbacks", 1)[0];
+  structure_->read_state(archive, "structures/" + name() + "/");
+  counters_.read(archive, name());
 }
 
 void FemModel::report(JsonObject& run) const {
-  JsonObject s;
-  s.add("nodes", static_cast<long long>(structure_->mesh().num_nodes()))
-      .add("elements", static_cast<long long>(structure_->mesh().num_elements()))
-      .add("newton_iterations_mean",
-           steps_ ? static_cast<double>(newton_iterations_) / static_cast<double>(steps_) : 0.0)
-      .add("newton_iterations_max", newton_max_)
-      .add("newton_halvings", static_cast<long long>(newton_halvings_))
-      .add("steps_with_newton_halvings", static_cast<long long>(steps_with_halvings_))
-      .add("substepped_steps", static_cast<long long>(substepped_steps_))
-      .add("substeps", static_cast<long long>(substeps_))
-      .add("newton_roundoff_stops", static_cast<long long>(roundoff_stops_))
-      .add("linear_solver_lu_fallbacks", static_cast<long long>(lu_fallbacks_));
-  run.add("structure_" + name(), s);
+  counters_.report(run, name(), structure_->mesh().num_nodes(), structure_->mesh().num_elements());
 }
 
 } // namespace fsi::app::fem_plugin

@@ -3,6 +3,7 @@
 // scene's constant loads and, coupled, the interface loads; also the coupler's S through the
 // interface its tagged boundary describes.
 #include "coupling/interface.hpp"
+#include "fem/fem_counters.hpp"
 #include "fem/fem_spec.hpp"
 #include "fsi_app/solver_plugin.hpp"
 #include "fsi_app/wall_motion.hpp"
@@ -27,6 +28,8 @@ std::unique_ptr<fem::Structure> build_structure(const Scene& scene, const Struct
 
 /// The FE node a displacement probe names (by index, or by reference position).
 int probe_node(const Scene& scene, const fem::Mesh& mesh, const ProbeSpec& probe);
+/// The same on a T10 mesh (the probe's point3).
+int probe_node(const Scene& scene, const fem::TetMesh& mesh, const ProbeSpec& probe);
 
 class FemModel final : public StructurePart {
 public:
@@ -59,13 +62,7 @@ private:
   std::optional<WallFrame> frame_; // the clamped_motion wall's motion (tank-frame probes)
   std::vector<std::pair<std::string, int>> probe_nodes_; // probe name -> node
   std::unique_ptr<Adapter> adapter_;
-  long newton_iterations_ = 0, steps_ = 0;
-  int newton_max_ = 0;
-  long newton_halvings_ = 0, steps_with_halvings_ = 0; ///< Newton safeguard (Structure::newton)
-  long substepped_steps_ = 0, substeps_ = 0;           ///< retried steps, their sub-steps
-  long roundoff_stops_ = 0;    ///< Newton solves ended at the round-off floor (fem::NewtonOptions)
-  long lu_fallbacks_ = 0;      ///< factorisations done by LU (fem::LinearSolverKind::ldlt_or_lu)
-  long lu_fallbacks_seen_ = 0; ///< the structure's own count at the last advance
+  FemCounters counters_;
   bool lu_noted_ = false;
 };
 
