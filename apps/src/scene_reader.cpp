@@ -393,47 +393,40 @@ template <int D> std::string expected_point(const YAML::Node& node) {
 }
 } // namespace
 
-Vec2 Section::vec2(const std::string& key, const std::string& doc) {
-  const YAML::Node node = get(key, "[x, y]", "required", "", doc);
-  if (ctx_->documenting()) return Vec2::Zero();
-  if (!node.IsDefined()) missing(key);
-  Vec2 v;
-  if (!parse_vec<2>(node, v)) fail(key, expected_point<2>(node));
+namespace {
+/// The point `node` holds, or nothing when the key is absent; a bad one fails naming `key`.
+template <int D>
+std::optional<VecD<D>> point(const Section& s, const std::string& key, const YAML::Node& node) {
+  if (!node.IsDefined()) return std::nullopt;
+  VecD<D> v;
+  if (!parse_vec<D>(node, v)) s.fail(key, expected_point<D>(node));
   return v;
+}
+} // namespace
+
+Vec2 Section::vec2(const std::string& key, const std::string& doc) {
+  const auto v = point<2>(*this, key, get(key, "[x, y]", "required", "", doc));
+  if (ctx_->documenting()) return Vec2::Zero();
+  if (!v) missing(key);
+  return *v;
 }
 
 Vec2 Section::vec2(const std::string& key, const Vec2& fallback, const std::string& doc) {
-  const YAML::Node node =
-      get(key, "[x, y]",
-          "[" + format_number(fallback.x()) + ", " + format_number(fallback.y()) + "]", "", doc);
-  if (!node.IsDefined()) return fallback;
-  Vec2 v;
-  if (!parse_vec<2>(node, v)) fail(key, expected_point<2>(node));
-  return v;
+  const std::string shown =
+      "[" + format_number(fallback.x()) + ", " + format_number(fallback.y()) + "]";
+  return point<2>(*this, key, get(key, "[x, y]", shown, "", doc)).value_or(fallback);
 }
 
 std::optional<Vec2> Section::optional_vec2(const std::string& key, const std::string& doc) {
-  const YAML::Node node = get(key, "[x, y]", "optional", "", doc);
-  if (!node.IsDefined()) return std::nullopt;
-  Vec2 v;
-  if (!parse_vec<2>(node, v)) fail(key, expected_point<2>(node));
-  return v;
+  return point<2>(*this, key, get(key, "[x, y]", "optional", "", doc));
 }
 
 Vec3 Section::vec3(const std::string& key, const Vec3& fallback, const std::string& doc) {
-  const YAML::Node node = get(key, "[x, y, z]", "", "", doc);
-  if (!node.IsDefined()) return fallback;
-  Vec3 v;
-  if (!parse_vec<3>(node, v)) fail(key, expected_point<3>(node));
-  return v;
+  return optional_vec3(key, doc).value_or(fallback);
 }
 
 std::optional<Vec3> Section::optional_vec3(const std::string& key, const std::string& doc) {
-  const YAML::Node node = get(key, "[x, y, z]", "optional", "", doc);
-  if (!node.IsDefined()) return std::nullopt;
-  Vec3 v;
-  if (!parse_vec<3>(node, v)) fail(key, expected_point<3>(node));
-  return v;
+  return point<3>(*this, key, get(key, "[x, y, z]", "optional", "", doc));
 }
 
 std::vector<Vec2> Section::points(const std::string& key, std::size_t min_count,

@@ -2,7 +2,6 @@
 
 #include "fem/fe_adapter.hpp"
 #include "fsi/core/error.hpp"
-#include "fsi_app/finite_guard.hpp"
 #include "fsi_app/wall_motion.hpp"
 #include "structure_fem/gmsh_reader.hpp"
 #include "structure_fem/loads.hpp"
@@ -109,17 +108,8 @@ std::optional<WallFrame> tank_frame(const Scene& scene, const StructureBlock& bl
 } // namespace
 
 fem::Mesh checked_mesh(const Scene& scene, const StructureBlock& block) {
-  const StructureSpec& spec = block.as<StructureSpec>();
   fem::Mesh mesh = build_mesh(scene, block);
-  auto check = [&](const std::string& tag, const char* key) {
-    if (!mesh.has_tag(tag))
-      fail_at(scene, block.line, block.key + key, "no boundary '" + tag + "'");
-  };
-  for (const auto& tag : spec.clamped) check(tag, ".clamped");
-  for (const auto& tag : spec.interface) check(tag, ".interface");
-  for (const auto& l : spec.loads) check(l.boundary, ".loads");
-  for (const auto& p : scene.output.probes)
-    if (p.structure == block.name) probe_node(scene, mesh, p);
+  check_tags_and_probes(scene, block, mesh, [&](const std::string& t) { return mesh.has_tag(t); });
   return mesh;
 }
 
@@ -181,7 +171,7 @@ private:
 };
 
 FemModel::FemModel(const Scene& scene, const StructureBlock& block)
-    : StructurePart(block.name), structure_(build_structure(scene, block)),
+    : BasicFemPart(block.name, build_structure(scene, block)),
       interface_(fem::interface_of(structure_->mesh(), block.as<StructureSpec>().interface)),
       frame_(tank_frame(scene, block)), adapter_(std::make_unique<Adapter>(*this)) {
   for (const auto& p : scene.output.probes)
@@ -197,29 +187,6 @@ coupling::StructureSolver& FemModel::coupling_solver() {
 
 std::vector<Polygon> FemModel::occupied_area() const {
   return occupied_triangles(structure_->mesh());
-}
-
-void FemModel::advance(double /*time*/, double dt) {
-  const fem::StepReport* step = nullptr;
-  try { // the library's message has the step and time; the run names the structure (issue 41)
-    step = &structure_->advance(dt);
-  } catch (const RunError& e) {
-    throw RunError("structure '" + name() + "': " + e.what());
-  }
-  counters_.add(*step, structure_->linear_solver_fallbacks());
-}
-
-std::optional<std::string> FemModel::non_finite() const {
-  const auto& u = structure_->displacement();
-  const auto& v = structure_->velocity();
-  const auto& X = structure_->mesh().X;
-  for (std::size_t k = 0; k < X.size(); ++k) {
-    const auto d = 2 * static_cast<Eigen::Index>(k);
-    if (auto what = non_finite_point("structure '" + name() + "' node " + std::to_string(k),
-                                     X[k] + Vec2(u[d], u[d + 1]), Vec2(v[d], v[d + 1])))
-      return what;
-  }
-  return std::nullopt;
 }
 
 std::vector<std::string> FemModel::take_notes() {
@@ -261,20 +228,6 @@ std::optional<double> FemModel::probe(const ProbeSpec& probe) const {
                                 structure_->time())[c];
   }
   return std::nullopt;
-}
-
-void FemModel::write_state(StateArchive& archive) const {
-  structure_->write_state(archive, "structures/" + name() + "/");
-  counters_.write(archive, name());
-}
-
-void FemModel::read_state(const StateArchive& archive) {
-  structure_->read_state(archive, "structures/" + name() + "/");
-  counters_.read(archive, name());
-}
-
-void FemModel::report(JsonObject& run) const {
-  counters_.report(run, name(), structure_->mesh().num_nodes(), structure_->mesh().num_elements());
 }
 
 } // namespace fsi::app::fem_plugin

@@ -2,7 +2,6 @@
 
 #include "fem/fem_model.hpp"
 #include "fsi/core/error.hpp"
-#include "fsi_app/finite_guard.hpp"
 #include "structure_fem/box_mesher.hpp"
 #include "structure_fem/gmsh_reader.hpp"
 #include "structure_fem/loads.hpp"
@@ -87,55 +86,23 @@ std::unique_ptr<fem::StructureT10> build_structure_t10(const Scene& scene,
 } // namespace
 
 fem::TetMesh checked_tet_mesh(const Scene& scene, const StructureBlock& block) {
-  const StructureSpec& spec = block.as<StructureSpec>();
   fem::TetMesh mesh = build_tet_mesh(scene, block);
-  auto check = [&](const std::string& tag, const char* key) {
-    if (std::none_of(mesh.faces.begin(), mesh.faces.end(),
-                     [&](const fem::BoundaryFace& f) { return f.tag == tag; }))
-      fail_at(scene, block.line, block.key + key, "no boundary '" + tag + "'");
-  };
-  for (const auto& tag : spec.clamped) check(tag, ".clamped");
-  for (const auto& tag : spec.interface) check(tag, ".interface");
-  for (const auto& l : spec.loads) check(l.boundary, ".loads");
-  for (const auto& p : scene.output.probes)
-    if (p.structure == block.name) probe_node(scene, mesh, p);
+  check_tags_and_probes(scene, block, mesh, [&](const std::string& tag) {
+    return std::any_of(mesh.faces.begin(), mesh.faces.end(),
+                       [&](const fem::BoundaryFace& f) { return f.tag == tag; });
+  });
   return mesh;
 }
 
 FemModelT10::FemModelT10(const Scene& scene, const StructureBlock& block)
-    : StructurePart(block.name), structure_(build_structure_t10(scene, block)) {
+    : BasicFemPart(block.name, build_structure_t10(scene, block)) {
   for (const auto& p : scene.output.probes)
     if (p.structure == block.name)
       probe_nodes_.emplace_back(p.name, probe_node(scene, structure_->mesh(), p));
 }
 
-FemModelT10::~FemModelT10() = default;
-
 coupling::StructureSolver& FemModelT10::coupling_solver() {
   throw std::logic_error("a 3-D FE structure is not coupled (3-D scenes take no fluid yet)");
-}
-
-void FemModelT10::advance(double /*time*/, double dt) {
-  const fem::StepReport* step = nullptr;
-  try {
-    step = &structure_->advance(dt);
-  } catch (const RunError& e) {
-    throw RunError("structure '" + name() + "': " + e.what());
-  }
-  counters_.add(*step, structure_->linear_solver_fallbacks());
-}
-
-std::optional<std::string> FemModelT10::non_finite() const {
-  const auto& u = structure_->displacement();
-  const auto& v = structure_->velocity();
-  const auto& X = structure_->mesh().X;
-  for (std::size_t k = 0; k < X.size(); ++k) {
-    const auto d = 3 * static_cast<Eigen::Index>(k);
-    if (auto what = non_finite_point3("structure '" + name() + "' node " + std::to_string(k),
-                                      Vec3(X[k] + u.segment<3>(d)), Vec3(v.segment<3>(d))))
-      return what;
-  }
-  return std::nullopt;
 }
 
 void FemModelT10::declare(FieldsFile& file) const {
@@ -160,20 +127,6 @@ std::optional<double> FemModelT10::probe(const ProbeSpec& probe) const {
     if (name == probe.name) // displacement_x, _y or _z
       return structure_->displacement()[3 * node + (probe.quantity.back() - 'x')];
   return std::nullopt;
-}
-
-void FemModelT10::write_state(StateArchive& archive) const {
-  structure_->write_state(archive, "structures/" + name() + "/");
-  counters_.write(archive, name());
-}
-
-void FemModelT10::read_state(const StateArchive& archive) {
-  structure_->read_state(archive, "structures/" + name() + "/");
-  counters_.read(archive, name());
-}
-
-void FemModelT10::report(JsonObject& run) const {
-  counters_.report(run, name(), structure_->mesh().num_nodes(), structure_->mesh().num_elements());
 }
 
 } // namespace fsi::app::fem_plugin

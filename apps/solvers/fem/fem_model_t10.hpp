@@ -3,7 +3,7 @@
 // solid (a box mesh or a Gmsh file) under gravity and the scene's constant face loads. 3-D
 // scenes take no fluid yet (read_scene refuses one), so the part is never coupled: it shows no
 // 2-D interface and occupies no 2-D area.
-#include "fem/fem_counters.hpp"
+#include "fem/fem_part.hpp"
 #include "fem/fem_spec.hpp"
 #include "fsi_app/solver_plugin.hpp"
 #include "structure_fem/mesh_t10.hpp"
@@ -24,30 +24,20 @@ const std::vector<std::string>& box_sides();
 /// surfaces), with its tags and probe nodes checked. Throws InputError (scene file and line).
 fem::TetMesh checked_tet_mesh(const Scene& scene, const StructureBlock& block);
 
-class FemModelT10 final : public StructurePart {
+class FemModelT10 final : public BasicFemPart<fem::T10> {
 public:
   FemModelT10(const Scene& scene, const StructureBlock& block);
-  ~FemModelT10() override;
-  void advance(double time, double dt) override;
   void declare(FieldsFile& file) const override;
   void write_frame(FieldsFile& file, const std::vector<std::string>& fields) const override;
   std::optional<double> probe(const ProbeSpec& probe) const override;
-  std::optional<std::string> non_finite() const override;
-  void report(JsonObject& run) const override;
-  void write_state(StateArchive& archive) const override;
-  void read_state(const StateArchive& archive) override;
   const InterfaceMesh& interface_mesh() const override { return no_interface_; }
   std::vector<Polygon> occupied_area() const override { return {}; }
   /// Never called: a 3-D scene has no fluid to couple to (throws std::logic_error).
   coupling::StructureSolver& coupling_solver() override;
 
-  const fem::StructureT10& structure() const { return *structure_; }
-
 private:
-  std::unique_ptr<fem::StructureT10> structure_;
   InterfaceMesh no_interface_;
   std::vector<std::pair<std::string, int>> probe_nodes_; // probe name -> node
-  FemCounters counters_;
 };
 
 } // namespace fsi::app::fem_plugin

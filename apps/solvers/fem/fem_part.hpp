@@ -1,10 +1,13 @@
 #pragma once
-// The Newton and linear-solver counts of one FE structure over a run (T6 or T10): summed per
-// step, checkpointed, and reported in run.json.
+// What the FE structure's part does alike for T6 and T10: one Newmark step with the Newton and
+// linear-solver counts summed per step, the checkpoint, run.json and the finite guard.
 #include "fsi/core/state_archive.hpp"
 #include "fsi_app/output/json.hpp"
+#include "fsi_app/solver_plugin.hpp"
 #include "structure_fem/newton_raphson.hpp"
+#include "structure_fem/structure.hpp"
 
+#include <memory>
 #include <string>
 
 namespace fsi::app::fem_plugin {
@@ -27,5 +30,28 @@ struct FemCounters {
   void report(JsonObject& run, const std::string& name, std::size_t nodes,
               std::size_t elements) const;
 };
+
+/// A structure part holding its BasicStructure<Family> and counters.
+template <class Family> class BasicFemPart : public StructurePart {
+public:
+  BasicFemPart(std::string name, std::unique_ptr<fem::BasicStructure<Family>> structure);
+  /// One step of the structure's own clock; RunError names the structure.
+  void advance(double time, double dt) override;
+  std::optional<std::string> non_finite() const override;
+  void report(JsonObject& run) const override;
+  /// The structure and its Newton counters under "structures/<name>/".
+  void write_state(StateArchive& archive) const override;
+  void read_state(const StateArchive& archive) override;
+
+  fem::BasicStructure<Family>& structure() { return *structure_; }
+  const fem::BasicStructure<Family>& structure() const { return *structure_; }
+
+protected:
+  std::unique_ptr<fem::BasicStructure<Family>> structure_;
+  FemCounters counters_;
+};
+
+extern template class BasicFemPart<fem::T6>;
+extern template class BasicFemPart<fem::T10>;
 
 } // namespace fsi::app::fem_plugin

@@ -1,4 +1,7 @@
-#include "fem/fem_counters.hpp"
+#include "fem/fem_part.hpp"
+
+#include "fsi/core/error.hpp"
+#include "fsi_app/finite_guard.hpp"
 
 #include <algorithm>
 #include <cstdint>
@@ -58,5 +61,56 @@ void FemCounters::report(JsonObject& run, const std::string& name, std::size_t n
       .add("linear_solver_lu_fallbacks", static_cast<long long>(lu_fallbacks));
   run.add("structure_" + name, s);
 }
+
+template <class Family>
+BasicFemPart<Family>::BasicFemPart(std::string name,
+                                   std::unique_ptr<fem::BasicStructure<Family>> structure)
+    : StructurePart(std::move(name)), structure_(std::move(structure)) {}
+
+template <class Family> void BasicFemPart<Family>::advance(double /*time*/, double dt) {
+  const fem::StepReport* step = nullptr;
+  try { // the library's message has the step and time; the run names the structure (issue 41)
+    step = &structure_->advance(dt);
+  } catch (const RunError& e) {
+    throw RunError("structure '" + name() + "': " + e.what());
+  }
+  counters_.add(*step, structure_->linear_solver_fallbacks());
+}
+
+template <class Family> std::optional<std::string> BasicFemPart<Family>::non_finite() const {
+  constexpr int dim = Family::dim;
+  const auto& u = structure_->displacement();
+  const auto& v = structure_->velocity();
+  const auto& X = structure_->mesh().X;
+  for (std::size_t k = 0; k < X.size(); ++k) {
+    const auto d = dim * static_cast<Eigen::Index>(k);
+    const std::string what = "structure '" + name() + "' node " + std::to_string(k);
+    const VecD<dim> x = X[k] + u.template segment<dim>(d), vk = v.template segment<dim>(d);
+    std::optional<std::string> bad;
+    if constexpr (dim == 2)
+      bad = non_finite_point(what, x, vk);
+    else
+      bad = non_finite_point3(what, x, vk);
+    if (bad) return bad;
+  }
+  return std::nullopt;
+}
+
+template <class Family> void BasicFemPart<Family>::report(JsonObject& run) const {
+  counters_.report(run, name(), structure_->mesh().num_nodes(), structure_->mesh().num_elements());
+}
+
+template <class Family> void BasicFemPart<Family>::write_state(StateArchive& archive) const {
+  structure_->write_state(archive, "structures/" + name() + "/");
+  counters_.write(archive, name());
+}
+
+template <class Family> void BasicFemPart<Family>::read_state(const StateArchive& archive) {
+  structure_->read_state(archive, "structures/" + name() + "/");
+  counters_.read(archive, name());
+}
+
+template class BasicFemPart<fem::T6>;
+template class BasicFemPart<fem::T10>;
 
 } // namespace fsi::app::fem_plugin
