@@ -5,6 +5,7 @@
 #include "fsi/core/error.hpp"
 #include "fsi_app/cli.hpp"
 #include "fsi_app/scene.hpp"
+#include "structure_fem/gmsh_reader.hpp"
 
 #include <catch2/catch.hpp>
 #include <sstream>
@@ -103,4 +104,33 @@ TEST_CASE("apps: the 3-D box scene builds its T10 mesh and probes the tip", "[ap
   const double tip_z = *model.probe(s.output.probes[0]);
   CHECK(tip_z == model.structure().displacement()[3 * 44 + 2]);
   CHECK(tip_z < -1e-9);
+}
+
+TEST_CASE("apps: a 3-D scene reads a Gmsh T10 mesh with its physical surfaces",
+          "[apps][scene][3d]") {
+  // The unit cube of tests/structure_fem/data/gmsh (surfaces "clamped" and "loaded").
+  const std::string cube = FSI_SOURCE_DIR "/tests/structure_fem/data/gmsh/cube_41.msh";
+  const std::string text = "dimension: 3\ntime: {end: 0.002, dt: 0.001}\noutput: {interval: "
+                           "0.001}\nstructures:\n  - name: cube\n    mesh: {kind: gmsh, file: " +
+                           cube +
+                           "}\n    material: {youngs_modulus: 1.0e6, poisson_ratio: 0.3, "
+                           "density: 1000.0}\n    clamped: [clamped]\n    loads: [{boundary: "
+                           "loaded, pressure: 1.0e3}]\n";
+  const Scene s = parse_scene(text, "g.yaml", {});
+  const auto part = find_structure_plugin("fem")->build(s, 0);
+  const auto& model = dynamic_cast<const fem_plugin::FemModelT10&>(*part);
+  const fsi::fem::TetMesh mesh = fsi::fem::read_gmsh_t10(cube);
+  CHECK(model.structure().mesh().num_elements() == mesh.num_elements());
+  CHECK(model.structure().mesh().num_nodes() == mesh.num_nodes());
+  // The pressure pushes the loaded face in: the external forces sum to -p A n (A = 1 m^2).
+  const fsi::fem::Vector& f = model.structure().external_forces();
+  const fsi::Vec3 total(f(Eigen::seqN(0, f.size() / 3, 3)).sum(),
+                        f(Eigen::seqN(1, f.size() / 3, 3)).sum(),
+                        f(Eigen::seqN(2, f.size() / 3, 3)).sum());
+  CHECK(total.norm() == Approx(1.0e3).epsilon(1e-12));
+  const Scene bad = parse_scene(text, "g.yaml", {"structures[0].clamped=[nope]"});
+  CHECK_THROWS_WITH(find_structure_plugin("fem")->validate(bad, 0),
+                    Catch::Matchers::Equals("g.yaml:5: structures[0].mesh: " + cube +
+                                            ": missing physical group \"nope\" (the file names: "
+                                            "clamped, loaded, solid)"));
 }
