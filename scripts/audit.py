@@ -263,6 +263,22 @@ for name, arg, names in [
     case("--set", name, ["check", base, "--set", arg], "error",
          ["base.yaml", "--set " + arg.split("\n")[0][:100]])
 
+# ---------------------------------------------------------------- 3-D scenes (issue 44)
+C3 = open(os.path.join(ROOT, "data/scenes/cantilever_3d.yaml")).read()
+for name, old, new, names in [
+    ("dimension_four", "dimension: 3", "dimension: 4", [":10:", "dimension"]),
+    ("gravity_2d_in_3d", "gravity: [0.0, -9.81, 0.0]", "gravity: [0.0, -9.81]",
+     [":11:", "gravity", "[x, y, z]"]),
+    ("probe_point_2d_in_3d", "point: [1.0, 0.05, 0.05]", "point: [1.0, 0.05]",
+     ["output.probes[0].point", "[x, y, z]"]),
+    ("plane_in_3d", "density: 1000.0", "density: 1000.0\n      plane: strain",
+     ["material.plane", "2-D only"]),
+    ("box_side_unknown", "clamped: [left]", "clamped: [x_min]", ["clamped", "x_min"]),
+    ("fluid_in_3d", "structures:", "fluid: {type: emps}\nstructures:",
+     ["fluid", "3-D fluids are not yet available"]),
+]:
+    scene_case("c3d_" + name, edit(C3, old, new), names)
+
 # ---------------------------------------------------------------- command line
 out = path("out")
 os.makedirs(out, exist_ok=True)

@@ -147,6 +147,7 @@ Outline outline_of(const fem_plugin::MeshSpec& m, const Section& fe) {
 } // namespace
 
 void tlsph_from_fem(Section& s) {
+  if (s.context().dimension == 3) return; // TL-SPH is refused in 3-D scenes (read_tlsph)
   const YAML::Node& entry = s.node();
   int mesh_line = 0, clamped_line = 0, dp_line = 0;
   if (given(entry, "tlsph", "region") || !given(entry, "fem", "mesh", mesh_line).IsDefined())
@@ -209,6 +210,7 @@ void tlsph_from_fem(Section& s) {
 }
 
 void fem_from_tlsph(Section& s) {
+  if (s.context().dimension == 3) return; // 3-D: no 2-D region to mesh
   const YAML::Node& entry = s.node();
   int region_line = 0, clamped_line = 0;
   const YAML::Node region = given(entry, "tlsph", "region", region_line);

@@ -95,8 +95,12 @@ ProbeSpec read_probe(Section s) {
                         "N/m, of the last step");
   p.structure = s.text("structure", "", "structure name, for displacement probes");
   p.node = s.optional_integer("node", Range::non_negative(), "FE node index (or give point)");
-  p.point = s.optional_vec2(
-      "point", "reference position of the FE node or the TL-SPH point, or the fluid point, m");
+  const std::string point_doc = "reference position of the FE node or the TL-SPH point, or the "
+                                "fluid point, m (dimension 3: [x, y, z])";
+  if (s.context().dimension == 3 && !s.context().documenting())
+    p.point3 = s.optional_vec3("point", point_doc);
+  else
+    p.point = s.optional_vec2("point", point_doc);
   p.box_min = s.optional_vec2("min", "mean_pressure: lower-left corner of the box, m");
   p.box_max = s.optional_vec2("max", "mean_pressure: upper-right corner of the box, m");
   p.part = s.choice("part", kForceParts, "total",
@@ -120,6 +124,8 @@ ProbeSpec read_probe(Section s) {
     if (on_structure && p.structure.empty()) s.fail("structure", "required key missing");
     if (p.interpolate && !on_structure)
       s.fail("interpolate", "only a structure's displacement probes interpolate");
+    if (p.quantity == "displacement_z" && s.context().dimension != 3)
+      s.fail("quantity", "displacement_z needs a 3-D scene (dimension: 3)");
     if (p.quantity == "pressure" && !p.point) s.fail("point", "required key missing");
     if (p.quantity == "mean_pressure") {
       if (!p.box_min) s.fail("min", "required key missing");
@@ -397,23 +403,39 @@ void read_solver_block(Section& s, const std::vector<Plugin>& plugins, Block& bl
   }
 }
 
+int read_dimension(Section& top) {
+  return top.integer("dimension", 2, Range::closed(2, 3),
+                     "2 or 3: every point and vector of the scene has this many coordinates; "
+                     "3 takes structures only (type fem, T10 elements) for now");
+}
+
 Scene read_scene(Section top) {
   Scene scene;
   ReadContext& ctx = top.context();
   scene.name = top.text("name", "", "scene name, for logs (default: the file name)");
-  scene.gravity = top.vec2("gravity", Vec2::Zero(), "gravitational acceleration, m/s^2");
+  scene.dimension = ctx.dimension = read_dimension(top);
+  const std::string gravity_doc = "gravitational acceleration, m/s^2 (dimension 3: [x, y, z])";
+  if (scene.dimension == 3)
+    scene.gravity3 = top.vec3("gravity", Vec3::Zero(), gravity_doc);
+  else
+    scene.gravity = top.vec2("gravity", Vec2::Zero(), gravity_doc);
   scene.time = read_time(top.required_block("time", "time span and step"));
   std::vector<Section> probe_sections;
   scene.output = read_output(top.required_block("output", "what is written, and how often"),
                              scene.time.end, probe_sections);
   auto fluid_section = top.block("fluid", "the fluid; absent: no fluid");
+  if (fluid_section && scene.dimension == 3)
+    top.fail("fluid", "3-D fluids are not yet available (dimension: 3 takes structures only)");
   if (fluid_section) {
     scene.fluid.emplace();
     read_solver_block(*fluid_section, fluid_plugins(), *scene.fluid, "fluid");
     fluid_section->finish();
   }
-  for (auto& w : top.list("walls", "polygon walls (ERP), static or with prescribed motion"))
+  for (auto& w : top.list("walls", "polygon walls (ERP), static or with prescribed motion")) {
+    if (scene.dimension == 3)
+      top.fail("walls", "3-D walls are not yet available (dimension: 3 takes structures only)");
     scene.walls.push_back(read_wall(w));
+  }
   auto structure_sections = top.list("structures", "the structures");
   for (auto& st : structure_sections) {
     StructureBlock& b = scene.structures.emplace_back();
@@ -501,6 +523,10 @@ std::string scene_reference() {
       << "holding a side's strip becoming that clamped side, or reads a Gmsh `region.file`.\n"
       << "What does not translate (FE `loads`, a slanted clamped side, a TL-SPH polygon) is an\n"
       << "error naming the key (apps/solvers/structure_geometry.hpp).\n\n"
+      << "A scene of `dimension: 3` reads every point and vector as [x, y, z] (y up, as in 2-D)\n"
+      << "and takes structures of type fem only (T10 elements; mesh kind box or gmsh, linear\n"
+      << "solver cholmod by default, no `plane`, loads on faces as a total force or a pressure);\n"
+      << "a fluid, walls or a TL-SPH structure in 3-D are refused for now.\n\n"
       << "| key | type | default | allowed | meaning |\n|---|---|---|---|---|\n";
   for (const auto& k : *ctx.collector)
     out << "| `" << k.path << "` | " << k.type << " | " << k.fallback << " | " << k.range << " | "

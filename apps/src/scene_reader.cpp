@@ -374,37 +374,59 @@ std::string Section::choice(const std::string& key, const std::vector<std::strin
 }
 
 namespace {
-bool parse_vec2(const YAML::Node& node, Vec2& out) {
-  if (!node.IsSequence() || node.size() != 2) return false;
-  return parse_real(node[0], out.x()) && parse_real(node[1], out.y());
+template <int D> bool parse_vec(const YAML::Node& node, VecD<D>& out) {
+  if (!node.IsSequence() || node.size() != D) return false;
+  for (int i = 0; i < D; ++i)
+    if (!parse_real(node[i], out[i])) return false;
+  return true;
+}
+
+// A point of the other dimension says which dimension the scene is.
+template <int D> std::string expected_point(const YAML::Node& node) {
+  const bool other = node.IsSequence() && node.size() == 5 - D;
+  if constexpr (D == 2)
+    return other ? "expected [x, y]: the scene is 2-D (give dimension: 3 for [x, y, z])"
+                 : "expected a pair of real numbers [x, y]";
+  else
+    return other ? "expected [x, y, z]: the scene is 3-D (dimension: 3)"
+                 : "expected three real numbers [x, y, z]";
+}
+} // namespace
+
+namespace {
+/// The point `node` holds, or nothing when the key is absent; a bad one fails naming `key`.
+template <int D>
+std::optional<VecD<D>> point(const Section& s, const std::string& key, const YAML::Node& node) {
+  if (!node.IsDefined()) return std::nullopt;
+  VecD<D> v;
+  if (!parse_vec<D>(node, v)) s.fail(key, expected_point<D>(node));
+  return v;
 }
 } // namespace
 
 Vec2 Section::vec2(const std::string& key, const std::string& doc) {
-  const YAML::Node node = get(key, "[x, y]", "required", "", doc);
+  const auto v = point<2>(*this, key, get(key, "[x, y]", "required", "", doc));
   if (ctx_->documenting()) return Vec2::Zero();
-  if (!node.IsDefined()) missing(key);
-  Vec2 v;
-  if (!parse_vec2(node, v)) fail(key, "expected a pair of real numbers [x, y]");
-  return v;
+  if (!v) missing(key);
+  return *v;
 }
 
 Vec2 Section::vec2(const std::string& key, const Vec2& fallback, const std::string& doc) {
-  const YAML::Node node =
-      get(key, "[x, y]",
-          "[" + format_number(fallback.x()) + ", " + format_number(fallback.y()) + "]", "", doc);
-  if (!node.IsDefined()) return fallback;
-  Vec2 v;
-  if (!parse_vec2(node, v)) fail(key, "expected a pair of real numbers [x, y]");
-  return v;
+  const std::string shown =
+      "[" + format_number(fallback.x()) + ", " + format_number(fallback.y()) + "]";
+  return point<2>(*this, key, get(key, "[x, y]", shown, "", doc)).value_or(fallback);
 }
 
 std::optional<Vec2> Section::optional_vec2(const std::string& key, const std::string& doc) {
-  const YAML::Node node = get(key, "[x, y]", "optional", "", doc);
-  if (!node.IsDefined()) return std::nullopt;
-  Vec2 v;
-  if (!parse_vec2(node, v)) fail(key, "expected a pair of real numbers [x, y]");
-  return v;
+  return point<2>(*this, key, get(key, "[x, y]", "optional", "", doc));
+}
+
+Vec3 Section::vec3(const std::string& key, const Vec3& fallback, const std::string& doc) {
+  return optional_vec3(key, doc).value_or(fallback);
+}
+
+std::optional<Vec3> Section::optional_vec3(const std::string& key, const std::string& doc) {
+  return point<3>(*this, key, get(key, "[x, y, z]", "optional", "", doc));
 }
 
 std::vector<Vec2> Section::points(const std::string& key, std::size_t min_count,
@@ -417,7 +439,7 @@ std::vector<Vec2> Section::points(const std::string& key, std::size_t min_count,
   std::vector<Vec2> pts;
   for (const auto& item : node) {
     Vec2 v;
-    if (!parse_vec2(item, v))
+    if (!parse_vec<2>(item, v))
       fail(key, "point " + std::to_string(pts.size()) + " is not a pair of real numbers [x, y]");
     pts.push_back(v);
   }

@@ -6,7 +6,7 @@
 namespace fsi::app {
 
 /// Reads the keys materials/ declares (visit_options) and checks its rule across keys
-/// (neo_hookean: plane strain only); every other key of the block is an error.
+/// (neo_hookean: plane strain only; in 3-D no plane); every other key of the block is an error.
 void read_material(Section& block, materials::MaterialOptions& options);
 
 } // namespace fsi::app

@@ -22,11 +22,12 @@ struct TimeSpec {
 
 struct ProbeSpec {
   std::string name;
-  std::string quantity;      ///< displacement_x|y, displacement_x|y_tank, surge_front, pressure,
-                             ///< mean_pressure, mean_speed, kinetic_energy
-  std::string structure;     ///< for displacement probes
-  std::optional<int> node;   ///< FE node index, or
-  std::optional<Vec2> point; ///< reference position of a node / a fluid point
+  std::string quantity;       ///< displacement_x|y|z, displacement_x|y_tank, surge_front, pressure,
+                              ///< mean_pressure, mean_speed, kinetic_energy
+  std::string structure;      ///< for displacement probes
+  std::optional<int> node;    ///< FE node index, or
+  std::optional<Vec2> point;  ///< reference position of a node / a fluid point
+  std::optional<Vec3> point3; ///< the same in a 3-D scene
   std::optional<Vec2> box_min, box_max; ///< mean_pressure: the box averaged over
   std::string part = "total";           ///< wall_force: total|pressure|repulsive|viscous
   bool interpolate = false;             ///< tlsph: kernel interpolation at point, not nearest
@@ -104,8 +105,10 @@ struct CheckpointSpec {
 struct Scene {
   std::filesystem::path path;
   std::string name;
+  int dimension = 2; ///< 2 or 3: points, vectors and meshes of this dimension
   TimeSpec time;
   Vec2 gravity = Vec2::Zero();
+  Vec3 gravity3 = Vec3::Zero(); ///< dimension 3
   OutputSpec output;
   std::optional<FluidBlock> fluid;
   std::vector<WallSpec> walls;

@@ -39,6 +39,7 @@ struct ReadContext {
   /// argument (a later "required key missing" inside says so).
   std::map<std::string, std::string> created;
   std::unique_ptr<std::vector<KeyDoc>> collector; ///< non-null in documentation mode
+  int dimension = 2; ///< the scene's `dimension`: points are [x, y] or [x, y, z]
 
   bool documenting() const { return collector != nullptr; }
 };
@@ -78,6 +79,9 @@ public:
   Vec2 vec2(const std::string& key, const std::string& doc);
   Vec2 vec2(const std::string& key, const Vec2& fallback, const std::string& doc);
   std::optional<Vec2> optional_vec2(const std::string& key, const std::string& doc);
+  /// [x, y, z], in a scene of dimension 3 (documented with the 2-D key it stands for).
+  Vec3 vec3(const std::string& key, const Vec3& fallback, const std::string& doc);
+  std::optional<Vec3> optional_vec3(const std::string& key, const std::string& doc);
   std::vector<Vec2> points(const std::string& key, std::size_t min_count, const std::string& doc);
   std::vector<std::string> names(const std::string& key, const std::vector<std::string>& fallback,
                                  const std::string& doc);

@@ -2,7 +2,6 @@
 
 #include "fem/fe_adapter.hpp"
 #include "fsi/core/error.hpp"
-#include "fsi_app/finite_guard.hpp"
 #include "fsi_app/wall_motion.hpp"
 #include "structure_fem/gmsh_reader.hpp"
 #include "structure_fem/loads.hpp"
@@ -11,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <type_traits>
 
 namespace fsi::app::fem_plugin {
 
@@ -54,7 +54,10 @@ double edge_length(const fem::Mesh& mesh, const std::string& tag) {
 
 } // namespace
 
-int probe_node(const Scene& scene, const fem::Mesh& mesh, const ProbeSpec& probe) {
+namespace {
+// The node a probe names, by index or at its reference point (probe.point, in 3-D point3).
+template <class MeshT>
+int probe_node_of(const Scene& scene, const MeshT& mesh, const ProbeSpec& probe) {
   const int count = static_cast<int>(mesh.num_nodes());
   if (probe.node) {
     if (*probe.node >= count)
@@ -63,21 +66,38 @@ int probe_node(const Scene& scene, const fem::Mesh& mesh, const ProbeSpec& probe
                   std::to_string(count) + " nodes)");
     return *probe.node;
   }
-  Vec2 lo = mesh.X.front(), hi = mesh.X.front();
+  using Point = std::decay_t<decltype(mesh.X.front())>;
+  const Point point = [&] {
+    if constexpr (Point::RowsAtCompileTime == 3)
+      return *probe.point3;
+    else
+      return *probe.point;
+  }();
+  Point lo = mesh.X.front(), hi = mesh.X.front();
   for (const auto& x : mesh.X) lo = lo.cwiseMin(x), hi = hi.cwiseMax(x);
   const double tolerance = 1e-6 * (hi - lo).norm();
   int best = 0;
   for (int k = 1; k < count; ++k)
-    if ((mesh.X[static_cast<std::size_t>(k)] - *probe.point).norm() <
-        (mesh.X[static_cast<std::size_t>(best)] - *probe.point).norm())
+    if ((mesh.X[static_cast<std::size_t>(k)] - point).norm() <
+        (mesh.X[static_cast<std::size_t>(best)] - point).norm())
       best = k;
-  if ((mesh.X[static_cast<std::size_t>(best)] - *probe.point).norm() > tolerance) {
+  if ((mesh.X[static_cast<std::size_t>(best)] - point).norm() > tolerance) {
     std::ostringstream msg;
-    msg << "no node of structure '" << probe.structure << "' at (" << probe.point->x() << ", "
-        << probe.point->y() << ")";
+    msg << "no node of structure '" << probe.structure << "' at (";
+    for (int i = 0; i < point.size(); ++i) msg << (i ? ", " : "") << point[i];
+    msg << ")";
     fail_at(scene, probe.line, probe.key + ".point", msg.str());
   }
   return best;
+}
+} // namespace
+
+int probe_node(const Scene& scene, const fem::Mesh& mesh, const ProbeSpec& probe) {
+  return probe_node_of(scene, mesh, probe);
+}
+
+int probe_node(const Scene& scene, const fem::TetMesh& mesh, const ProbeSpec& probe) {
+  return probe_node_of(scene, mesh, probe);
 }
 
 namespace {
@@ -88,17 +108,8 @@ std::optional<WallFrame> tank_frame(const Scene& scene, const StructureBlock& bl
 } // namespace
 
 fem::Mesh checked_mesh(const Scene& scene, const StructureBlock& block) {
-  const StructureSpec& spec = block.as<StructureSpec>();
   fem::Mesh mesh = build_mesh(scene, block);
-  auto check = [&](const std::string& tag, const char* key) {
-    if (!mesh.has_tag(tag))
-      fail_at(scene, block.line, block.key + key, "no boundary '" + tag + "'");
-  };
-  for (const auto& tag : spec.clamped) check(tag, ".clamped");
-  for (const auto& tag : spec.interface) check(tag, ".interface");
-  for (const auto& l : spec.loads) check(l.boundary, ".loads");
-  for (const auto& p : scene.output.probes)
-    if (p.structure == block.name) probe_node(scene, mesh, p);
+  check_tags_and_probes(scene, block, mesh, [&](const std::string& t) { return mesh.has_tag(t); });
   return mesh;
 }
 
@@ -160,7 +171,7 @@ private:
 };
 
 FemModel::FemModel(const Scene& scene, const StructureBlock& block)
-    : StructurePart(block.name), structure_(build_structure(scene, block)),
+    : BasicFemPart(block.name, build_structure(scene, block)),
       interface_(fem::interface_of(structure_->mesh(), block.as<StructureSpec>().interface)),
       frame_(tank_frame(scene, block)), adapter_(std::make_unique<Adapter>(*this)) {
   for (const auto& p : scene.output.probes)
@@ -178,41 +189,8 @@ std::vector<Polygon> FemModel::occupied_area() const {
   return occupied_triangles(structure_->mesh());
 }
 
-void FemModel::advance(double /*time*/, double dt) {
-  const fem::StepReport* step = nullptr;
-  try { // the library's message has the step and time; the run names the structure (issue 41)
-    step = &structure_->advance(dt);
-  } catch (const RunError& e) {
-    throw RunError("structure '" + name() + "': " + e.what());
-  }
-  const auto& report = *step;
-  newton_iterations_ += report.iterations;
-  newton_max_ = std::max(newton_max_, report.iterations);
-  newton_halvings_ += report.halvings;
-  steps_with_halvings_ += report.halvings > 0 ? 1 : 0;
-  if (report.substeps > 1) ++substepped_steps_, substeps_ += report.substeps;
-  roundoff_stops_ += report.roundoff_stops;
-  ++steps_;
-  const long fallbacks = structure_->linear_solver_fallbacks();
-  lu_fallbacks_ += fallbacks - lu_fallbacks_seen_;
-  lu_fallbacks_seen_ = fallbacks;
-}
-
-std::optional<std::string> FemModel::non_finite() const {
-  const auto& u = structure_->displacement();
-  const auto& v = structure_->velocity();
-  const auto& X = structure_->mesh().X;
-  for (std::size_t k = 0; k < X.size(); ++k) {
-    const auto d = 2 * static_cast<Eigen::Index>(k);
-    if (auto what = non_finite_point("structure '" + name() + "' node " + std::to_string(k),
-                                     X[k] + Vec2(u[d], u[d + 1]), Vec2(v[d], v[d + 1])))
-      return what;
-  }
-  return std::nullopt;
-}
-
 std::vector<std::string> FemModel::take_notes() {
-  if (lu_noted_ || lu_fallbacks_ == 0) return {};
+  if (lu_noted_ || counters_.lu_fallbacks == 0) return {};
   lu_noted_ = true;
   std::ostringstream s;
   s << "structure '" << name() << "': the stiffness matrix is not positive definite at structure "
@@ -250,50 +228,6 @@ std::optional<double> FemModel::probe(const ProbeSpec& probe) const {
                                 structure_->time())[c];
   }
   return std::nullopt;
-}
-
-void FemModel::write_state(StateArchive& archive) const {
-  const std::string prefix = "structures/" + name() + "/";
-  structure_->write_state(archive, prefix);
-  archive.put("run/" + prefix + "newton",
-              std::vector<std::int64_t>{newton_iterations_, steps_, newton_max_});
-  archive.put("run/" + prefix + "halvings",
-              std::vector<std::int64_t>{newton_halvings_, steps_with_halvings_, substepped_steps_,
-                                        substeps_});
-  archive.put("run/" + prefix + "roundoff_stops", std::vector<std::int64_t>{roundoff_stops_});
-  archive.put("run/" + prefix + "lu_fallbacks", std::vector<std::int64_t>{lu_fallbacks_});
-}
-
-void FemModel::read_state(const StateArchive& archive) {
-  const std::string prefix = "structures/" + name() + "/";
-  structure_->read_state(archive, prefix);
-  const auto& counts = archive.integers("run/" + prefix + "newton", 3);
-  newton_iterations_ = counts[0], steps_ = counts[1], newton_max_ = static_cast<int>(counts[2]);
-  if (archive.all_integers().count("run/" + prefix + "halvings")) { // absent before the safeguard
-    const auto& h = archive.integers("run/" + prefix + "halvings", 4);
-    newton_halvings_ = h[0], steps_with_halvings_ = h[1];
-    substepped_steps_ = h[2], substeps_ = h[3];
-  }
-  if (archive.all_integers().count("run/" + prefix + "roundoff_stops")) // absent before the count
-    roundoff_stops_ = archive.integers("run/" + prefix + "roundoff_stops", 1)[0];
-  if (archive.all_integers().count("run/" + prefix + "lu_fallbacks")) // absent before the count
-    lu_fallbacks_ = archive.integers("run/" + prefix + "lu_fallbacks", 1)[0];
-}
-
-void FemModel::report(JsonObject& run) const {
-  JsonObject s;
-  s.add("nodes", static_cast<long long>(structure_->mesh().num_nodes()))
-      .add("elements", static_cast<long long>(structure_->mesh().num_elements()))
-      .add("newton_iterations_mean",
-           steps_ ? static_cast<double>(newton_iterations_) / static_cast<double>(steps_) : 0.0)
-      .add("newton_iterations_max", newton_max_)
-      .add("newton_halvings", static_cast<long long>(newton_halvings_))
-      .add("steps_with_newton_halvings", static_cast<long long>(steps_with_halvings_))
-      .add("substepped_steps", static_cast<long long>(substepped_steps_))
-      .add("substeps", static_cast<long long>(substeps_))
-      .add("newton_roundoff_stops", static_cast<long long>(roundoff_stops_))
-      .add("linear_solver_lu_fallbacks", static_cast<long long>(lu_fallbacks_));
-  run.add("structure_" + name(), s);
 }
 
 } // namespace fsi::app::fem_plugin

@@ -3,6 +3,7 @@
 // scene's constant loads and, coupled, the interface loads; also the coupler's S through the
 // interface its tagged boundary describes.
 #include "coupling/interface.hpp"
+#include "fem/fem_part.hpp"
 #include "fem/fem_spec.hpp"
 #include "fsi_app/solver_plugin.hpp"
 #include "fsi_app/wall_motion.hpp"
@@ -27,45 +28,47 @@ std::unique_ptr<fem::Structure> build_structure(const Scene& scene, const Struct
 
 /// The FE node a displacement probe names (by index, or by reference position).
 int probe_node(const Scene& scene, const fem::Mesh& mesh, const ProbeSpec& probe);
+/// The same on a T10 mesh (the probe's point3).
+int probe_node(const Scene& scene, const fem::TetMesh& mesh, const ProbeSpec& probe);
 
-class FemModel final : public StructurePart {
+/// Fails (scene file and line) for a clamped, interface or load tag that has_tag(tag) denies,
+/// and for a probe of the entry that names no node of `mesh`.
+template <class MeshT, class HasTag>
+void check_tags_and_probes(const Scene& scene, const StructureBlock& block, const MeshT& mesh,
+                           HasTag has_tag) {
+  const StructureSpec& spec = block.as<StructureSpec>();
+  auto check = [&](const std::string& tag, const char* key) {
+    if (!has_tag(tag)) fail_at(scene, block.line, block.key + key, "no boundary '" + tag + "'");
+  };
+  for (const auto& tag : spec.clamped) check(tag, ".clamped");
+  for (const auto& tag : spec.interface) check(tag, ".interface");
+  for (const auto& l : spec.loads) check(l.boundary, ".loads");
+  for (const auto& p : scene.output.probes)
+    if (p.structure == block.name) probe_node(scene, mesh, p);
+}
+
+class FemModel final : public BasicFemPart<fem::T6> {
 public:
   FemModel(const Scene& scene, const StructureBlock& block);
   ~FemModel() override;
-  void advance(double time, double dt) override;
   void declare(FieldsFile& file) const override;
   void write_frame(FieldsFile& file, const std::vector<std::string>& fields) const override;
   std::optional<double> probe(const ProbeSpec& probe) const override;
-  std::optional<std::string> non_finite() const override;
-  void report(JsonObject& run) const override;
   /// Once per run: the first factorisation the default solver did by LU.
   std::vector<std::string> take_notes() override;
-  /// The structure and its Newton counters under "structures/<name>/", coupled or not.
-  void write_state(StateArchive& archive) const override;
-  void read_state(const StateArchive& archive) override;
   const InterfaceMesh& interface_mesh() const override { return interface_.mesh; }
   std::vector<Polygon> occupied_area() const override;
   coupling::StructureSolver& coupling_solver() override;
 
-  fem::Structure& structure() { return *structure_; }
-  const fem::Structure& structure() const { return *structure_; }
   /// The interface with its FE nodes (NCR, eq. 50).
   const fem::FeInterface& interface() const { return interface_; }
 
 private:
   class Adapter;
-  std::unique_ptr<fem::Structure> structure_;
   fem::FeInterface interface_;
   std::optional<WallFrame> frame_; // the clamped_motion wall's motion (tank-frame probes)
   std::vector<std::pair<std::string, int>> probe_nodes_; // probe name -> node
   std::unique_ptr<Adapter> adapter_;
-  long newton_iterations_ = 0, steps_ = 0;
-  int newton_max_ = 0;
-  long newton_halvings_ = 0, steps_with_halvings_ = 0; ///< Newton safeguard (Structure::newton)
-  long substepped_steps_ = 0, substeps_ = 0;           ///< retried steps, their sub-steps
-  long roundoff_stops_ = 0;    ///< Newton solves ended at the round-off floor (fem::NewtonOptions)
-  long lu_fallbacks_ = 0;      ///< factorisations done by LU (fem::LinearSolverKind::ldlt_or_lu)
-  long lu_fallbacks_seen_ = 0; ///< the structure's own count at the last advance
   bool lu_noted_ = false;
 };
 

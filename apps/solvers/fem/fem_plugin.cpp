@@ -3,6 +3,7 @@
 #include "fem/fem_plugin.hpp"
 
 #include "fem/fem_model.hpp"
+#include "fem/fem_model_t10.hpp"
 #include "fsi/core/format.hpp"
 #include "fsi_app/wall_motion.hpp"
 #include "structure_geometry.hpp"
@@ -44,13 +45,16 @@ void check_rectangle_probe(const MeshSpec& m, const ProbeSpec& p, const Section&
 void check(const Scene& scene, std::size_t index, Section& s, std::vector<Section>& probes) {
   const StructureBlock& block = scene.structures[index];
   const StructureSpec& st = block.as<StructureSpec>();
-  if (st.mesh.kind == "rectangle") {
-    const std::set<std::string> tags = {"left", "right", "bottom", "top"};
+  if (st.mesh.kind != "gmsh") {
+    const bool box = st.mesh.kind == "box";
+    const std::set<std::string> tags =
+        box ? std::set<std::string>(box_sides().begin(), box_sides().end())
+            : std::set<std::string>{"left", "right", "bottom", "top"};
+    const std::string sides = box ? "a box has left, right, bottom, top, back, front"
+                                  : "a rectangle has left, right, bottom, top";
     auto check_tags = [&](const std::vector<std::string>& list, const std::string& key) {
       for (const auto& t : list)
-        if (!tags.count(t))
-          s.fail(key,
-                 "unknown boundary tag '" + t + "' (a rectangle has left, right, bottom, top)");
+        if (!tags.count(t)) s.fail(key, "unknown boundary tag '" + t + "' (" + sides + ")");
     };
     check_tags(st.clamped, "clamped");
     check_tags(st.interface, "interface");
@@ -63,10 +67,31 @@ void check(const Scene& scene, std::size_t index, Section& s, std::vector<Sectio
   for (std::size_t i = 0; i < scene.output.probes.size(); ++i) {
     const auto& p = scene.output.probes[i];
     if (p.structure != block.name) continue;
-    if (!p.node && !p.point) probes[i].fail("", "give node or point");
+    if (!p.node && !p.point && !p.point3) probes[i].fail("", "give node or point");
     if (st.mesh.kind == "rectangle") check_rectangle_probe(st.mesh, p, probes[i]);
     check_frame_probe(p, st.clamped_motion, probes[i]);
   }
+}
+
+// A T10 box: (2 nx + 1)(2 ny + 1)(2 nz + 1) nodes, 6 nx ny nz elements. Per degree of freedom
+// the sparse M, K and K_eff hold about 81 entries per row (27 nodes x 3), the Cholesky factor
+// about 20 times the entries of K (3D nested dissection fill, an assumption), and about 16 state
+// and work vectors; per element the 900 assembly triplets (16 B each).
+Footprint box_footprint(const MeshSpec& m) {
+  Footprint e;
+  e.key = "mesh";
+  const double nx = m.elements_x, ny = m.elements_y, nz = m.elements_z;
+  const double nodes = (2 * nx + 1) * (2 * ny + 1) * (2 * nz + 1);
+  const double elements = 6 * nx * ny * nz;
+  const double row_entries = 81;
+  const double per_dof = 3 * row_entries * 12 + 20 * row_entries * 12 + 16 * 8;
+  e.count = elements;
+  e.bytes = 3 * nodes * per_dof + elements * (900 * 16 + 10 * 4) + nodes * 3 * 8 * 2;
+  e.counts = count(elements) + " T10 elements (6 elements_x elements_y elements_z)";
+  if (elements * 10 * 81 > std::numeric_limits<int>::max()) // 30 dofs per element, 81 per row
+    e.overflows.emplace_back(
+        "mesh", count(elements) + " T10 elements: the sparse matrices would exceed 2^31 entries");
+  return e;
 }
 
 // A structured T6 rectangle: (2 nx + 1)(2 ny + 1) nodes, 2 nx ny elements. Per degree of
@@ -77,6 +102,7 @@ Footprint footprint(const Scene& scene, std::size_t index) {
   const StructureSpec& st = scene.structures[index].as<StructureSpec>();
   Footprint e;
   e.key = "mesh";
+  if (st.mesh.kind == "box") return box_footprint(st.mesh);
   if (st.mesh.kind != "rectangle") return e; // a Gmsh mesh is bounded by its file
   const double nx = st.mesh.elements_x, ny = st.mesh.elements_y;
   const double nodes = (2 * nx + 1) * (2 * ny + 1);
@@ -99,23 +125,33 @@ Footprint footprint(const Scene& scene, std::size_t index) {
 // The mesh (read or generated) and its tags; the outline the part would show.
 StructureOutline validate(const Scene& scene, std::size_t index) {
   const StructureBlock& block = scene.structures[index];
+  if (scene.dimension == 3) { // no fluid: no interface or area to show
+    checked_tet_mesh(scene, block);
+    return {};
+  }
   const fem::Mesh mesh = checked_mesh(scene, block);
   return {fem::interface_of(mesh, block.as<StructureSpec>().interface).mesh,
           occupied_triangles(mesh)};
+}
+
+std::unique_ptr<StructurePart> build(const Scene& scene, std::size_t index) {
+  if (scene.dimension == 3) return make_structure_part<FemModelT10>(scene, index);
+  return make_structure_part<FemModel>(scene, index);
 }
 
 } // namespace
 
 StructurePlugin plugin() {
   return {"fem",
-          "total-Lagrangian T6 finite elements, Newmark-beta, Newton-Raphson",
+          "total-Lagrangian T6 (3-D: T10) finite elements, Newmark-beta, Newton-Raphson",
           read_structure,
           check,
-          make_structure_part<FemModel>,
+          build,
           validate,
           footprint,
           {"displacement", "velocity", "von_mises"},
-          {"displacement_x", "displacement_y", "displacement_x_tank", "displacement_y_tank"},
+          {"displacement_x", "displacement_y", "displacement_z", "displacement_x_tank",
+           "displacement_y_tank"},
           fem_from_tlsph};
 }
 

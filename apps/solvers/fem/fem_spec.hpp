@@ -12,17 +12,22 @@
 namespace fsi::app::fem_plugin {
 
 struct MeshSpec {
-  std::string kind; ///< rectangle | gmsh
+  std::string kind; ///< rectangle | gmsh (2-D); box | gmsh (3-D)
   Vec2 origin = Vec2::Zero();
-  double width = 0.0, height = 0.0;
+  Vec3 origin3 = Vec3::Zero();      ///< box: the corner with the smallest coordinates
+  double width = 0.0, height = 0.0; ///< along x, y
+  double depth = 0.0;               ///< box: along z
   int elements_x = 0, elements_y = 0;
+  int elements_z = 0;               ///< box: hexahedral cells along z (each split into 6 T10)
   std::string diagonals = "rising"; ///< rising | mirrored (fem::Diagonals)
   std::filesystem::path file;
 };
 
 struct PointLoadSpec {
-  std::string boundary;      ///< boundary tag whose nodes share the force equally
-  Vec2 force = Vec2::Zero(); ///< N (per unit thickness) in total
+  std::string boundary;       ///< boundary tag the load is spread over
+  Vec2 force = Vec2::Zero();  ///< N (per unit thickness) in total
+  Vec3 force3 = Vec3::Zero(); ///< 3-D: N in total
+  double pressure = 0.0;      ///< 3-D: Pa against the outward normal
 };
 
 struct StructureSpec final : SolverSpec {

@@ -87,6 +87,8 @@ std::shared_ptr<const SolverSpec> read_tlsph(Section& s) {
   auto spec = std::make_shared<TlsphSpec>();
   TlsphSpec& t = *spec;
   const bool doc = s.context().documenting();
+  if (!doc && s.context().dimension == 3)
+    s.fail("type", "tlsph is 2-D only in scenes for now (3-D: type fem)");
   read_region(s.required_block("region", "the solid: a rectangle (min, max), a polygon or a Gmsh "
                                          "mesh (file)"),
               t);

@@ -1,0 +1,136 @@
+// 3-D scenes (dimension: 3, issue 44): the key and its errors, 3-D points and vectors, a fluid
+// refused, the fem plug-in's box and its T10 mesh; each error one line naming file, line, key.
+#include "fem/fem_model_t10.hpp"
+#include "fem/fem_spec.hpp"
+#include "fsi/core/error.hpp"
+#include "fsi_app/cli.hpp"
+#include "fsi_app/scene.hpp"
+#include "structure_fem/gmsh_reader.hpp"
+
+#include <catch2/catch.hpp>
+#include <sstream>
+
+using namespace fsi::app;
+
+namespace {
+
+// A 2 x 1 x 1 box of cells (12 T10) clamped on its left face, a probe at its tip.
+const std::string box_scene = R"(dimension: 3
+gravity: [0.0, -9.81, 0.0]
+time: {end: 0.002, dt: 0.001}
+output:
+  interval: 0.001
+  probes:
+    - {name: tip_z, quantity: displacement_z, structure: beam, point: [1.0, 0.1, 0.1]}
+structures:
+  - name: beam
+    mesh: {kind: box, origin: [0, 0, 0], width: 1.0, height: 0.1, depth: 0.1,
+           elements_x: 2, elements_y: 1, elements_z: 1}
+    material: {youngs_modulus: 1.0e7, poisson_ratio: 0.3, density: 1000.0}
+    clamped: [left]
+    loads: [{boundary: right, force: [0, 0, -1.0]}]
+)";
+
+Scene parsed(const std::vector<std::string>& overrides = {}) {
+  return parse_scene(box_scene, "b.yaml", overrides);
+}
+
+} // namespace
+
+TEST_CASE("apps: a 3-D scene reads its points as [x, y, z]", "[apps][scene][3d]") {
+  const Scene s = parsed();
+  CHECK(s.dimension == 3);
+  CHECK(s.gravity3 == fsi::Vec3(0.0, -9.81, 0.0));
+  REQUIRE(s.output.probes[0].point3);
+  CHECK(*s.output.probes[0].point3 == fsi::Vec3(1.0, 0.1, 0.1));
+  const auto& fe = s.structures[0].as<fem_plugin::StructureSpec>();
+  CHECK(fe.mesh.depth == 0.1);
+  CHECK(fe.mesh.elements_z == 1);
+  CHECK(fe.loads[0].force3 == fsi::Vec3(0.0, 0.0, -1.0));
+  CHECK(fe.options.linear_solver.kind == fsi::fem::LinearSolverKind::cholmod); // 3-D default
+  CHECK(load_scene(FSI_TEST_DATA "/valid_structure.yaml", {}).dimension == 2); // the default
+}
+
+TEST_CASE("apps: bad 3-D keys name file, line and key", "[apps][scene][3d]") {
+  // (override, the whole message after "b.yaml: --set OVERRIDE: ")
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"dimension=4", "dimension: must be in [2, 3], got 4"},
+      {"gravity=[0, -9.81]", "gravity: expected [x, y, z]: the scene is 3-D (dimension: 3)"},
+      {"fluid.type=emps",
+       "fluid: 3-D fluids are not yet available (dimension: 3 takes structures only)"},
+      {"structures[0].material.plane=strain",
+       "structures[0].material.plane: a 3-D solid has the full 3-D law; plane is 2-D only"},
+      {"structures[0].mesh.kind=rectangle",
+       "structures[0].mesh.kind: a 3-D scene's mesh is a box or gmsh (rectangle is 2-D)"},
+      {"structures[0].clamped=[x_min]", "structures[0].clamped: unknown boundary tag 'x_min' (a "
+                                        "box has left, right, bottom, top, back, front)"},
+      {"structures[0].type=tlsph",
+       "structures[0].type: tlsph is 2-D only in scenes for now (3-D: type fem)"},
+  };
+  for (const auto& [set, what] : cases) {
+    INFO(set);
+    CHECK_THROWS_WITH(parsed({set}), Catch::Matchers::Equals("b.yaml: --set " + set + ": " + what));
+  }
+  // 2-D again, the scene's 3-D gravity is refused at its own line.
+  CHECK_THROWS_WITH(parsed({"dimension=2"}),
+                    Catch::Matchers::Equals("b.yaml:2: gravity: expected [x, y]: the scene is 2-D "
+                                            "(give dimension: 3 for [x, y, z])"));
+  CHECK_THROWS_WITH(parse_scene("time: {end: 1, dt: 1}\noutput:\n  interval: 1\n  probes:\n"
+                                "    - {name: z, quantity: displacement_z, structure: b}\n",
+                                "t.yaml", {}),
+                    Catch::Matchers::Equals("t.yaml:5: output.probes[0].quantity: displacement_z "
+                                            "needs a 3-D scene (dimension: 3)"));
+}
+
+TEST_CASE("apps: fsi check refuses a bad 3-D key with exit status 2", "[apps][scene][3d]") {
+  std::ostringstream out, err;
+  const std::string scene = FSI_SOURCE_DIR "/data/scenes/cantilever_3d.yaml";
+  CHECK(run_cli({"check", scene, "--set", "structures[0].mesh.origin=[0, 0]"}, out, err, false) ==
+        2);
+  CHECK(err.str() == scene + ": --set structures[0].mesh.origin=[0, 0]: structures[0].mesh.origin: "
+                             "expected [x, y, z]: the scene is 3-D (dimension: 3)\n");
+}
+
+TEST_CASE("apps: the 3-D box scene builds its T10 mesh and probes the tip", "[apps][scene][3d]") {
+  const Scene s = parsed();
+  const auto part = find_structure_plugin("fem")->build(s, 0);
+  const auto& model = dynamic_cast<const fem_plugin::FemModelT10&>(*part);
+  CHECK(model.structure().mesh().num_elements() == 12);     // 6 per cell
+  CHECK(model.structure().mesh().num_nodes() == 5 * 3 * 3); // half-spacing lattice
+  CHECK(model.structure().mesh().node_set("left").size() == 3 * 3);
+  // The tip load of -1 N along z: after a step the tip at (1, 0.1, 0.1) (node 44) moves down z.
+  auto& moved = *part;
+  moved.advance(0.0, 1e-3);
+  const double tip_z = *model.probe(s.output.probes[0]);
+  CHECK(tip_z == model.structure().displacement()[3 * 44 + 2]);
+  CHECK(tip_z < -1e-9);
+}
+
+TEST_CASE("apps: a 3-D scene reads a Gmsh T10 mesh with its physical surfaces",
+          "[apps][scene][3d]") {
+  // The unit cube of tests/structure_fem/data/gmsh (surfaces "clamped" and "loaded").
+  const std::string cube = FSI_SOURCE_DIR "/tests/structure_fem/data/gmsh/cube_41.msh";
+  const std::string text = "dimension: 3\ntime: {end: 0.002, dt: 0.001}\noutput: {interval: "
+                           "0.001}\nstructures:\n  - name: cube\n    mesh: {kind: gmsh, file: " +
+                           cube +
+                           "}\n    material: {youngs_modulus: 1.0e6, poisson_ratio: 0.3, "
+                           "density: 1000.0}\n    clamped: [clamped]\n    loads: [{boundary: "
+                           "loaded, pressure: 1.0e3}]\n";
+  const Scene s = parse_scene(text, "g.yaml", {});
+  const auto part = find_structure_plugin("fem")->build(s, 0);
+  const auto& model = dynamic_cast<const fem_plugin::FemModelT10&>(*part);
+  const fsi::fem::TetMesh mesh = fsi::fem::read_gmsh_t10(cube);
+  CHECK(model.structure().mesh().num_elements() == mesh.num_elements());
+  CHECK(model.structure().mesh().num_nodes() == mesh.num_nodes());
+  // The pressure pushes the loaded face in: the external forces sum to -p A n (A = 1 m^2).
+  const fsi::fem::Vector& f = model.structure().external_forces();
+  const fsi::Vec3 total(f(Eigen::seqN(0, f.size() / 3, 3)).sum(),
+                        f(Eigen::seqN(1, f.size() / 3, 3)).sum(),
+                        f(Eigen::seqN(2, f.size() / 3, 3)).sum());
+  CHECK(total.norm() == Approx(1.0e3).epsilon(1e-12));
+  const Scene bad = parse_scene(text, "g.yaml", {"structures[0].clamped=[nope]"});
+  CHECK_THROWS_WITH(find_structure_plugin("fem")->validate(bad, 0),
+                    Catch::Matchers::Equals("g.yaml:5: structures[0].mesh: " + cube +
+                                            ": missing physical group \"nope\" (the file names: "
+                                            "clamped, loaded, solid)"));
+}
