@@ -8,8 +8,10 @@
 #include "step_timer.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <sstream>
 
 namespace fsi::emps {
@@ -24,141 +26,168 @@ std::size_t first_index(std::size_t n, const auto& bad) {
       [](std::size_t a, std::size_t b) { return std::min(a, b); });
 }
 
-std::string where(const Particles& p, std::size_t i, long step, double t) {
+template <int D> std::string where(const BasicParticles<D>& p, std::size_t i, long step, double t) {
   std::ostringstream out;
-  out << "particle " << p.id[i] << " at (" << p.x[i] << ", " << p.y[i] << ") m, step " << step
-      << ", t = " << t << " s";
+  out << "particle " << p.id[i] << " at (";
+  for (int a = 0; a < D; ++a) out << (a ? ", " : "") << p.position[a][i];
+  out << ") m, step " << step << ", t = " << t << " s";
   return out.str();
 }
 
-void validate(FluidOptions o) {
+template <int D> const BasicFluidOptions<D>& validated(const BasicFluidOptions<D>& options) {
+  BasicFluidOptions<D> o = options;
   RangeChecker ranges("fluid.");
   visit_options(o, ranges); // the declared ranges of every key
   auto fail = [](const std::string& what) { throw InputError("fluid: " + what); };
-  if (!(o.domain_max.x() > o.domain_min.x() && o.domain_max.y() > o.domain_min.y()))
-    fail("the domain box is empty");
+  if (!(o.domain_max.array() > o.domain_min.array()).all()) fail("the domain box is empty");
   if (!(o.skin > 0 && o.skin < 1)) fail("skin must be in (0, 1)");
+  return options;
+}
+
+/// |v_i|^2 summed over the axes in order.
+template <int D> double norm2(const BasicParticles<D>& p, std::size_t i) {
+  double s = p.velocity[0][i] * p.velocity[0][i];
+  for (int a = 1; a < D; ++a) s += p.velocity[a][i] * p.velocity[a][i];
+  return s;
 }
 
 } // namespace
 
-EmpsFluid::EmpsFluid(const FluidOptions& options, const std::vector<Vec2>& positions,
-                     erp::WallSet& walls)
-    : options_((validate(options), options)),
-      locator_(erp::make_wall_locator(walls, options.r_e())), r_e_(options.r_e()),
-      n0_(erp::lattice_n0(options.l0, r_e_, particles::MpsWeight(r_e_))),
-      lambda0_(erp::lattice_lambda0(options.l0, r_e_, particles::MpsWeight(r_e_))), w_e_(r_e_),
-      re2_(r_e_ * r_e_), grid_(options.domain_min, options.domain_max, r_e_ * (1.0 + options.skin)),
-      walls_(options, n0_, walls, particles_, grid_, hits_) {
-  locator_->set_corner_faces(options.wall.corner_faces);
+PlaneWalls::PlaneWalls(const FluidOptions& options, double n0, erp::WallSet& walls,
+                       const Particles& particles, const particles::CellGrid& grid)
+    : locator(erp::make_wall_locator(walls, options.r_e())),
+      terms(options, n0, walls, particles, grid, hits) {
+  locator->set_corner_faces(options.wall.corner_faces);
+}
+
+template <int D>
+BasicEmpsFluid<D>::BasicEmpsFluid(const Options& options, const std::vector<Vec>& positions,
+                                  erp::WallSet& walls) requires(D == 2)
+    : options_(validated(options)), walls_(options_, n0_, walls, particles_, grid_) {
+  start(positions);
+}
+
+template <int D>
+BasicEmpsFluid<D>::BasicEmpsFluid(const Options& options,
+                                  const std::vector<Vec>& positions) requires(D == 3)
+    : options_(validated(options)) {
+  start(positions);
+}
+
+template <int D> void BasicEmpsFluid<D>::start(const std::vector<Vec>& positions) {
   const std::size_t n = positions.size();
   particles_.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
-    particles_.x[i] = positions[i].x();
-    particles_.y[i] = positions[i].y();
+    for (int a = 0; a < D; ++a) particles_.position[a][i] = positions[i][a];
     particles_.id[i] = static_cast<std::uint32_t>(i);
   }
-  const double reach = (1.0 + options.skin) * options.re_over_l0;
-  capacity_ = static_cast<std::size_t>(std::ceil(2.0 * M_PI * reach * reach)) + 16;
+  // Row capacity: twice the lattice sites within (1 + skin) r_e, and a margin.
+  const double reach = (1.0 + options_.skin) * options_.re_over_l0;
+  const double sites = D == 2 ? std::numbers::pi * reach * reach
+                              : 4.0 / 3.0 * std::numbers::pi * reach * reach * reach;
+  capacity_ = static_cast<std::size_t>(std::ceil(2.0 * sites)) + 16;
   remove_outside();
-  // pnd, pressure and free-surface flags of the initial state (for output at t = 0).
   refresh_neighbours(true, 0, 0.0);
-  query_walls();
+  if constexpr (D == 2) query_walls();
   density_and_pressure();
 }
 
-EmpsFluid::~EmpsFluid() = default;
-
 // Initial damping phase (quiet hydrostatic starts): v <- v exp(-kappa dt) with a rate
 // kappa = 20/T_d (1 - t/T_d) that fades to zero at T_d, so the run continues undamped.
-void EmpsFluid::damp(double t, double dt) {
+template <int D> void BasicEmpsFluid<D>::damp(double t, double dt) {
   const double T = options_.damping_time;
   if (T <= 0 || t >= T) return;
   const double factor = std::exp(-20.0 / T * (1.0 - t / T) * dt);
-  Particles& p = particles_;
-  parallel_for(p.size(), [&](std::size_t i) {
-    p.vx[i] *= factor;
-    p.vy[i] *= factor;
+  const std::array<double*, D> v = components(particles_.velocity);
+  parallel_for(particles_.size(), [&](std::size_t i) {
+    for (std::size_t a = 0; a < D; ++a) v[a][i] *= factor;
   });
 }
 
-void EmpsFluid::refresh_neighbours(bool allow_reorder, long step, double t) {
+template <int D>
+void BasicEmpsFluid<D>::refresh_neighbours(bool allow_reorder, long step, double t) {
   Timer timer(times_.neighbours);
-  Particles& p = particles_;
+  ParticleSet& p = particles_;
   const std::size_t n = p.size();
-  if (neighbours_.valid(p.x.data(), p.y.data(), n, 0.5 * options_.skin * r_e_)) return;
-  grid_.bin(p.x.data(), p.y.data(), n);
+  if (neighbours_.valid(p.position.coords(), n, 0.5 * options_.skin * r_e_)) return;
+  grid_.bin(p.position.coords(), n);
   if (allow_reorder && builds_ % std::max(1, options_.reorder_interval) == 0) {
     p.permute(grid_.order(), scratch_);
     ++layout_;
-    grid_.bin(p.x.data(), p.y.data(), n);
+    grid_.bin(p.position.coords(), n);
   }
   ++builds_;
-  if (!neighbours_.build(grid_, p.x.data(), p.y.data(), n, r_e_ * (1.0 + options_.skin), capacity_,
+  if (!neighbours_.build(grid_, p.position.coords(), n, r_e_ * (1.0 + options_.skin), capacity_,
                          options_.vector_kernels))
     throw RunError("fluid: more than " + std::to_string(capacity_) + " neighbours at " +
                    where(p, neighbours_.overflow(), step, t) +
                    " (particles clustered: the step is likely unstable)");
 }
 
-void EmpsFluid::query_walls() {
+template <int D> void BasicEmpsFluid<D>::query_walls() requires(D == 2) {
   Timer timer(times_.walls);
-  locator_->query(std::span<const double>(particles_.x), std::span<const double>(particles_.y),
-                  hits_);
-  hits_layout_ = layout_;
+  walls_.locator->query(std::span<const double>(particles_.x),
+                        std::span<const double>(particles_.y), walls_.hits);
+  walls_.hits_layout = layout_;
 }
 
-void EmpsFluid::advance(double t, double dt) {
-  Particles& p = particles_;
-  {
+template <int D> void BasicEmpsFluid<D>::advance(double t, double dt) {
+  ParticleSet& p = particles_;
+  if constexpr (D == 2) {
     Timer timer(times_.walls);
-    locator_->update();
+    walls_.locator->update();
   }
-  const Vec2 g = options_.gravity;
+  const Vec g = options_.gravity;
   refresh_neighbours(true, step_ + 1, t);
   const std::size_t n = p.size();
   // The viscous loop writes every particle's viscous wall forces; without it they are zero.
   const bool viscous = options_.viscous_loop();
-  for (auto& v : visc_wall_) {
-    if (viscous)
-      v.resize(n);
-    else
-      v.assign(n, Vec2::Zero());
+  if constexpr (D == 2) {
+    for (auto& v : walls_.viscous) {
+      if (viscous)
+        v.resize(n);
+      else
+        v.assign(n, Vec2::Zero());
+    }
+    walls_.forces.resize(n);
   }
-  wall_forces_.resize(n);
   if (viscous) {
     // The wall hits of the last step's x* serve x^n (which differs by dt^2 |grad p| / rho, and
     // they see the walls at t^n) unless particles were reordered or removed since.
-    if (hits_layout_ != layout_) query_walls();
+    if constexpr (D == 2)
+      if (walls_.hits_layout != layout_) query_walls();
     viscosity();
   }
   {
     Timer timer(times_.other);
+    const std::array<double*, D> x = components(p.position), v = components(p.velocity);
+    const double* visc = scratch_.data();
     parallel_for(n, [&](std::size_t i) { // v* = v + dt (nu <lap v> + g), x* = x + dt v* (eq. 13)
-      if (viscous) {
-        p.vx[i] += dt * scratch_[2 * i];
-        p.vy[i] += dt * scratch_[2 * i + 1];
+      for (std::size_t a = 0; a < D; ++a) {
+        if (viscous) v[a][i] += dt * visc[D * i + a];
+        v[a][i] += dt * g[static_cast<Eigen::Index>(a)];
+        x[a][i] += dt * v[a][i];
       }
-      p.vx[i] += dt * g.x();
-      p.vy[i] += dt * g.y();
-      p.x[i] += dt * p.vx[i];
-      p.y[i] += dt * p.vy[i];
     });
   }
   check_finite(step_ + 1, t + dt); // v*, x* (before they are binned)
   refresh_neighbours(false, step_ + 1, t + dt);
-  query_walls();
-  const std::size_t crossed = first_index(n, [&](std::size_t i) { return hits_.crossed[i] != 0; });
-  if (crossed != none)
-    throw RunError("fluid: " + where(p, crossed, step_ + 1, t + dt) + " is behind wall segment " +
-                   std::to_string(hits_.face[0].segment[crossed]) +
-                   " (try a smaller time step or a larger alpha_rep)");
+  if constexpr (D == 2) {
+    query_walls();
+    const erp::WallHits& hits = walls_.hits;
+    const std::size_t crossed = first_index(n, [&](std::size_t i) { return hits.crossed[i] != 0; });
+    if (crossed != none)
+      throw RunError("fluid: " + where(p, crossed, step_ + 1, t + dt) + " is behind wall segment " +
+                     std::to_string(hits.face[0].segment[crossed]) +
+                     " (try a smaller time step or a larger alpha_rep)");
+  }
   density_and_pressure();
   pressure_gradient(dt);
-  if (options_.wall.gap_courant > 0) {
-    if (dt >= gap_dt_) ++gap_limited_steps_;
-    gap_dt_ = wall_gap_dt();
-  }
+  if constexpr (D == 2)
+    if (options_.wall.gap_courant > 0) {
+      if (dt >= gap_dt_) ++gap_limited_steps_;
+      gap_dt_ = wall_gap_dt();
+    }
   ++step_;
   Timer timer(times_.other);
   damp(t, dt);
@@ -166,24 +195,27 @@ void EmpsFluid::advance(double t, double dt) {
   remove_outside();
 }
 
-void EmpsFluid::check_finite(long step, double t) const {
-  const Particles& p = particles_;
+template <int D> void BasicEmpsFluid<D>::check_finite(long step, double t) const {
+  const ParticleSet& p = particles_;
   const std::size_t bad = first_index(p.size(), [&](std::size_t i) {
-    return !std::isfinite(p.x[i] + p.y[i] + p.vx[i] + p.vy[i] + p.p[i]);
+    double s = p.p[i];
+    for (int a = 0; a < D; ++a) s += p.position[a][i] + p.velocity[a][i];
+    return !std::isfinite(s);
   });
   if (bad != none)
     throw RunError("fluid: non-finite position, velocity or pressure at " + where(p, bad, step, t));
 }
 
-void EmpsFluid::remove_outside() {
-  Particles& p = particles_;
-  const Vec2 lo = options_.domain_min, hi = options_.domain_max;
+template <int D> void BasicEmpsFluid<D>::remove_outside() {
+  ParticleSet& p = particles_;
+  const Vec lo = options_.domain_min, hi = options_.domain_max;
   keep_.resize(p.size());
   const std::size_t outside = parallel_reduce(
       p.size(), std::size_t{0},
       [&](std::size_t i) {
-        const bool in =
-            p.x[i] >= lo.x() && p.x[i] <= hi.x() && p.y[i] >= lo.y() && p.y[i] <= hi.y();
+        bool in = true;
+        for (int a = 0; a < D; ++a)
+          in = in && p.position[a][i] >= lo[a] && p.position[a][i] <= hi[a];
         keep_[i] = in;
         return std::size_t{in ? 0u : 1u};
       },
@@ -194,40 +226,37 @@ void EmpsFluid::remove_outside() {
   neighbours_.invalidate();
 }
 
-double EmpsFluid::kinetic_energy() const {
-  const Particles& p = particles_;
+template <int D> double BasicEmpsFluid<D>::kinetic_energy() const {
   const double m = options_.density * options_.volume();
   return parallel_reduce(
-      p.size(), 0.0,
-      [&](std::size_t i) { return 0.5 * m * (p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i]); },
+      particles_.size(), 0.0, [&](std::size_t i) { return 0.5 * m * norm2(particles_, i); },
       [](double a, double b) { return a + b; });
 }
 
-double EmpsFluid::max_speed() const {
-  const Particles& p = particles_;
+template <int D> double BasicEmpsFluid<D>::max_speed() const {
   return std::sqrt(parallel_reduce(
-      p.size(), 0.0, [&](std::size_t i) { return p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i]; },
+      particles_.size(), 0.0, [&](std::size_t i) { return norm2(particles_, i); },
       [](double a, double b) { return std::max(a, b); }));
 }
 
-void EmpsFluid::set_velocities(const std::vector<Vec2>& v) {
+template <int D> void BasicEmpsFluid<D>::set_velocities(const std::vector<Vec>& v) {
   if (v.size() != particles_.size())
     throw InputError("fluid: " + std::to_string(v.size()) + " initial velocities for " +
                      std::to_string(particles_.size()) + " particles");
   for (std::size_t i = 0; i < v.size(); ++i)
-    particles_.vx[i] = v[i].x(), particles_.vy[i] = v[i].y();
+    for (int a = 0; a < D; ++a) particles_.velocity[a][i] = v[i][a];
 }
 
 // The wall-gap limit of the next step (WallTerms::gap_dt), with the step's last position
 // correction (scratch_ still holds it).
-double EmpsFluid::wall_gap_dt() const {
+template <int D> double BasicEmpsFluid<D>::wall_gap_dt() const requires(D == 2) {
   return parallel_reduce(
       particles_.size(), std::numeric_limits<double>::infinity(),
-      [&](std::size_t i) { return walls_.gap_dt(i, scratch_[2 * i], scratch_[2 * i + 1]); },
+      [&](std::size_t i) { return walls_.terms.gap_dt(i, scratch_[2 * i], scratch_[2 * i + 1]); },
       [](double a, double b) { return std::min(a, b); });
 }
 
-double EmpsFluid::stable_dt(double courant) const {
+template <int D> double BasicEmpsFluid<D>::stable_dt(double courant) const {
   double dt = courant * options_.l0 / (options_.sound_speed + max_speed());
   const double nu =
       options_.viscosity + options_.pair_viscosity_alpha() * options_.sound_speed * options_.l0;
@@ -235,5 +264,18 @@ double EmpsFluid::stable_dt(double courant) const {
   if (options_.wall.gap_courant > 0) dt = std::min(dt, gap_dt_);
   return dt;
 }
+
+template BasicEmpsFluid<2>::BasicEmpsFluid(const Options&, const std::vector<Vec>&, erp::WallSet&);
+template BasicEmpsFluid<3>::BasicEmpsFluid(const Options&, const std::vector<Vec>&);
+template void BasicEmpsFluid<2>::advance(double, double);
+template void BasicEmpsFluid<3>::advance(double, double);
+template void BasicEmpsFluid<2>::set_velocities(const std::vector<Vec>&);
+template void BasicEmpsFluid<3>::set_velocities(const std::vector<Vec>&);
+template double BasicEmpsFluid<2>::stable_dt(double) const;
+template double BasicEmpsFluid<3>::stable_dt(double) const;
+template double BasicEmpsFluid<2>::kinetic_energy() const;
+template double BasicEmpsFluid<3>::kinetic_energy() const;
+template double BasicEmpsFluid<2>::max_speed() const;
+template double BasicEmpsFluid<3>::max_speed() const;
 
 } // namespace fsi::emps

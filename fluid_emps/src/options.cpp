@@ -66,7 +66,7 @@ void visit_options(WallOptions& o, OptionVisitor& v) {
 
 } // namespace
 
-void apply_wall_preset(FluidOptions& o, WallModel model) {
+template <int D> void apply_wall_preset(BasicFluidOptions<D>& o, WallModel model) {
   const double alpha_rep = o.wall.contact.alpha_rep;
   o.wall = WallOptions{}; // the paper's terms
   o.wall.model = model;
@@ -80,7 +80,7 @@ void apply_wall_preset(FluidOptions& o, WallModel model) {
   o.artificial_viscosity = 0.2;
 }
 
-void visit_options(FluidOptions& o, OptionVisitor& v) {
+template <int D> void visit_options(BasicFluidOptions<D>& o, OptionVisitor& v) {
   particles::visit_fluid_keys(o.density, o.viscosity, o.l0, o.sound_speed, o.damping_time, v);
   v.real("re_over_l0", o.re_over_l0, Range::closed(2.0, 5.0), "effective radius r_e / l0");
   v.real("beta", o.beta, Range::left_open(0.0, 1.5), "free-surface threshold, eq. 17");
@@ -99,5 +99,10 @@ void visit_options(FluidOptions& o, OptionVisitor& v) {
          "(damps acoustic noise; not in the paper, 0 = off)");
   visit_options(o.wall, v);
 }
+
+template void apply_wall_preset<2>(FluidOptions&, WallModel);
+template void apply_wall_preset<3>(FluidOptions3&, WallModel);
+template void visit_options<2>(FluidOptions&, OptionVisitor&);
+template void visit_options<3>(FluidOptions3&, OptionVisitor&);
 
 } // namespace fsi::emps

@@ -2,6 +2,7 @@
 
 #include "particles/simd.hpp"
 
+#include <array>
 #include <cmath>
 
 #ifdef FSI_HAVE_AVX512
@@ -11,64 +12,70 @@
 namespace fsi::emps {
 namespace {
 
-PndSum pnd_scalar(const PairRow& r, const double* x, const double* y) {
+// x_j - x_i and r_ij^2 (summed over the axes in order: in 2-D dx dx + dy dy).
+template <int D> struct Offset {
+  std::array<double, D> d;
+  double r2;
+};
+
+template <int D> double dot(const std::array<double, D>& a, const std::array<double, D>& b) {
+  double s = a[0] * b[0];
+  for (std::size_t k = 1; k < D; ++k) s += a[k] * b[k];
+  return s;
+}
+
+template <int D> Offset<D> offset(const BasicPairRow<D>& r, const Coords<D>& x, std::uint32_t j) {
+  Offset<D> o;
+  for (std::size_t a = 0; a < D; ++a) o.d[a] = x[a][j] - r.xi[a];
+  o.r2 = dot<D>(o.d, o.d);
+  return o;
+}
+
+template <int D> PndSum pnd_scalar(const BasicPairRow<D>& r, const Coords<D>& x) {
   PndSum out;
   for (std::uint32_t k = 0; k < r.count; ++k) {
-    const std::uint32_t j = r.j[k];
-    const double dx = x[j] - r.xi, dy = y[j] - r.yi, r2 = dx * dx + dy * dy;
-    if (r2 >= r.re2) continue;
-    const double s = 1.0 - std::sqrt(r2) * r.inv_re;
+    const Offset<D> o = offset<D>(r, x, r.j[k]);
+    if (o.r2 >= r.re2) continue;
+    const double s = 1.0 - std::sqrt(o.r2) * r.inv_re;
     out.pnd += s * s;
     ++out.within;
   }
   return out;
 }
 
-VecSum gradient_scalar(const PairRow& r, const double* x, const double* y, const double* p,
-                       double p_i) {
-  VecSum out;
+template <int D>
+VecSum<D> gradient_scalar(const BasicPairRow<D>& r, const Coords<D>& x, const double* p,
+                          double p_i) {
+  VecSum<D> out{};
   for (std::uint32_t k = 0; k < r.count; ++k) {
     const std::uint32_t j = r.j[k];
-    const double dx = x[j] - r.xi, dy = y[j] - r.yi, r2 = dx * dx + dy * dy;
-    if (r2 >= r.re2 || r2 == 0.0) continue;
-    const double s = 1.0 - std::sqrt(r2) * r.inv_re;
-    const double f = (p[j] + p_i) * s * s / r2;
-    out.x += f * dx;
-    out.y += f * dy;
+    const Offset<D> o = offset<D>(r, x, j);
+    if (o.r2 >= r.re2 || o.r2 == 0.0) continue;
+    const double s = 1.0 - std::sqrt(o.r2) * r.inv_re;
+    const double f = (p[j] + p_i) * s * s / o.r2;
+    for (std::size_t a = 0; a < D; ++a) out[a] += f * o.d[a];
   }
   return out;
 }
 
-VecSum laplacian_scalar(const PairRow& r, const double* x, const double* y, const double* vx,
-                        const double* vy, double vxi, double vyi) {
-  VecSum out;
+// The Laplacian sum, and with `closing_pairs` the closing-pair sum.
+template <bool closing_pairs, int D>
+ViscousSum<D> viscous_scalar(const BasicPairRow<D>& r, const Coords<D>& x, const Coords<D>& v,
+                             const VecSum<D>& v_i) {
+  ViscousSum<D> out;
   for (std::uint32_t k = 0; k < r.count; ++k) {
     const std::uint32_t j = r.j[k];
-    const double dx = x[j] - r.xi, dy = y[j] - r.yi, r2 = dx * dx + dy * dy;
-    if (r2 >= r.re2) continue;
-    const double s = 1.0 - std::sqrt(r2) * r.inv_re, w = s * s;
-    out.x += (vx[j] - vxi) * w;
-    out.y += (vy[j] - vyi) * w;
-  }
-  return out;
-}
-
-ViscousSum viscous_scalar(const PairRow& r, const double* x, const double* y, const double* vx,
-                          const double* vy, double vxi, double vyi) {
-  ViscousSum out;
-  for (std::uint32_t k = 0; k < r.count; ++k) {
-    const std::uint32_t j = r.j[k];
-    const double dx = x[j] - r.xi, dy = y[j] - r.yi, r2 = dx * dx + dy * dy;
-    if (r2 >= r.re2) continue;
-    const double s = 1.0 - std::sqrt(r2) * r.inv_re, w = s * s;
-    const double dvx = vx[j] - vxi, dvy = vy[j] - vyi;
-    out.laplacian.x += dvx * w;
-    out.laplacian.y += dvy * w;
-    const double closing = dvx * dx + dvy * dy;
-    if (closing < 0 && r2 > 0) {
-      const double f = closing * w / r2;
-      out.closing.x += f * dx;
-      out.closing.y += f * dy;
+    const Offset<D> o = offset<D>(r, x, j);
+    if (o.r2 >= r.re2) continue;
+    const double s = 1.0 - std::sqrt(o.r2) * r.inv_re, w = s * s;
+    std::array<double, D> dv;
+    for (std::size_t a = 0; a < D; ++a) dv[a] = v[a][j] - v_i[a];
+    for (std::size_t a = 0; a < D; ++a) out.laplacian[a] += dv[a] * w;
+    if constexpr (!closing_pairs) continue;
+    const double closing = dot<D>(dv, o.d);
+    if (closing < 0 && o.r2 > 0) {
+      const double f = closing * w / o.r2;
+      for (std::size_t a = 0; a < D; ++a) out.closing[a] += f * o.d[a];
     }
   }
   return out;
@@ -84,15 +91,16 @@ struct Lanes {
   __m512d dx, dy, r2;
 };
 
-FSI_TARGET_AVX512 inline Lanes lanes(const PairRow& r, std::uint32_t k, const double* x,
-                                     const double* y) {
+FSI_TARGET_AVX512 inline Lanes lanes(const PairRow& r, std::uint32_t k, const Coords<2>& x) {
   Lanes l;
   const std::uint32_t left = r.count - k;
   l.live = left >= 8 ? __mmask8(0xFF) : __mmask8((1u << left) - 1u);
   l.j = _mm256_maskz_loadu_epi32(l.live, r.j + k);
   const __m512d zero = _mm512_setzero_pd();
-  l.dx = _mm512_sub_pd(_mm512_mask_i32gather_pd(zero, l.live, l.j, x, 8), _mm512_set1_pd(r.xi));
-  l.dy = _mm512_sub_pd(_mm512_mask_i32gather_pd(zero, l.live, l.j, y, 8), _mm512_set1_pd(r.yi));
+  l.dx =
+      _mm512_sub_pd(_mm512_mask_i32gather_pd(zero, l.live, l.j, x[0], 8), _mm512_set1_pd(r.xi[0]));
+  l.dy =
+      _mm512_sub_pd(_mm512_mask_i32gather_pd(zero, l.live, l.j, x[1], 8), _mm512_set1_pd(r.xi[1]));
   l.r2 = _mm512_fmadd_pd(l.dx, l.dx, _mm512_mul_pd(l.dy, l.dy));
   l.inside = _mm512_mask_cmp_pd_mask(l.live, l.r2, _mm512_set1_pd(r.re2), _CMP_LT_OQ);
   return l;
@@ -118,23 +126,23 @@ FSI_TARGET_AVX512 inline __m512d difference(const Lanes& l, const double* v, dou
                        _mm512_set1_pd(v_i));
 }
 
-FSI_TARGET_AVX512 PndSum pnd_avx512(const PairRow& r, const double* x, const double* y) {
+FSI_TARGET_AVX512 PndSum pnd_avx512(const PairRow& r, const Coords<2>& x) {
   __m512d pnd = _mm512_setzero_pd();
   std::uint32_t within = 0;
   for (std::uint32_t k = 0; k < r.count; k += 8) {
-    const Lanes l = lanes(r, k, x, y);
+    const Lanes l = lanes(r, k, x);
     pnd = _mm512_mask_add_pd(pnd, l.inside, pnd, weight(l, r));
     within += static_cast<std::uint32_t>(__builtin_popcount(l.inside));
   }
   return {lane_sum(pnd), within};
 }
 
-FSI_TARGET_AVX512 VecSum gradient_avx512(const PairRow& r, const double* x, const double* y,
-                                         const double* p, double p_i) {
+FSI_TARGET_AVX512 VecSum<2> gradient_avx512(const PairRow& r, const Coords<2>& x, const double* p,
+                                            double p_i) {
   __m512d gx = _mm512_setzero_pd(), gy = _mm512_setzero_pd();
   const __m512d zero = _mm512_setzero_pd();
   for (std::uint32_t k = 0; k < r.count; k += 8) {
-    Lanes l = lanes(r, k, x, y);
+    Lanes l = lanes(r, k, x);
     l.inside = _mm512_mask_cmp_pd_mask(l.inside, l.r2, zero, _CMP_NEQ_OQ);
     const __m512d pj = _mm512_mask_i32gather_pd(zero, l.inside, l.j, p, 8);
     const __m512d f = _mm512_maskz_div_pd(
@@ -145,30 +153,28 @@ FSI_TARGET_AVX512 VecSum gradient_avx512(const PairRow& r, const double* x, cons
   return {lane_sum(gx), lane_sum(gy)};
 }
 
-FSI_TARGET_AVX512 VecSum laplacian_avx512(const PairRow& r, const double* x, const double* y,
-                                          const double* vx, const double* vy, double vxi,
-                                          double vyi) {
+FSI_TARGET_AVX512 VecSum<2> laplacian_avx512(const PairRow& r, const Coords<2>& x,
+                                             const Coords<2>& v, const VecSum<2>& v_i) {
   __m512d sx = _mm512_setzero_pd(), sy = _mm512_setzero_pd();
   for (std::uint32_t k = 0; k < r.count; k += 8) {
-    const Lanes l = lanes(r, k, x, y);
+    const Lanes l = lanes(r, k, x);
     const __m512d w = weight(l, r);
-    const __m512d dvx = difference(l, vx, vxi), dvy = difference(l, vy, vyi);
+    const __m512d dvx = difference(l, v[0], v_i[0]), dvy = difference(l, v[1], v_i[1]);
     sx = _mm512_mask3_fmadd_pd(dvx, w, sx, l.inside);
     sy = _mm512_mask3_fmadd_pd(dvy, w, sy, l.inside);
   }
   return {lane_sum(sx), lane_sum(sy)};
 }
 
-FSI_TARGET_AVX512 ViscousSum viscous_avx512(const PairRow& r, const double* x, const double* y,
-                                            const double* vx, const double* vy, double vxi,
-                                            double vyi) {
+FSI_TARGET_AVX512 ViscousSum<2> viscous_avx512(const PairRow& r, const Coords<2>& x,
+                                               const Coords<2>& v, const VecSum<2>& v_i) {
   __m512d sx = _mm512_setzero_pd(), sy = _mm512_setzero_pd();
   __m512d ax = _mm512_setzero_pd(), ay = _mm512_setzero_pd();
   const __m512d zero = _mm512_setzero_pd();
   for (std::uint32_t k = 0; k < r.count; k += 8) {
-    const Lanes l = lanes(r, k, x, y);
+    const Lanes l = lanes(r, k, x);
     const __m512d w = weight(l, r);
-    const __m512d dvx = difference(l, vx, vxi), dvy = difference(l, vy, vyi);
+    const __m512d dvx = difference(l, v[0], v_i[0]), dvy = difference(l, v[1], v_i[1]);
     sx = _mm512_mask3_fmadd_pd(dvx, w, sx, l.inside);
     sy = _mm512_mask3_fmadd_pd(dvy, w, sy, l.inside);
     const __m512d closing = _mm512_fmadd_pd(dvx, l.dx, _mm512_mul_pd(dvy, l.dy));
@@ -184,39 +190,58 @@ FSI_TARGET_AVX512 ViscousSum viscous_avx512(const PairRow& r, const double* x, c
 
 } // namespace
 
-PndSum pnd_sum(const PairRow& row, const double* x, const double* y, bool vector) {
+template <int D> PndSum pnd_sum(const BasicPairRow<D>& row, const Coords<D>& x, bool vector) {
 #ifdef FSI_HAVE_AVX512
-  if (vector && particles::avx512_available()) return pnd_avx512(row, x, y);
+  if constexpr (D == 2)
+    if (vector && particles::avx512_available()) return pnd_avx512(row, x);
 #endif
   (void)vector;
-  return pnd_scalar(row, x, y);
+  return pnd_scalar<D>(row, x);
 }
 
-VecSum gradient_sum(const PairRow& row, const double* x, const double* y, const double* p,
-                    double p_i, bool vector) {
+template <int D>
+VecSum<D> gradient_sum(const BasicPairRow<D>& row, const Coords<D>& x, const double* p, double p_i,
+                       bool vector) {
 #ifdef FSI_HAVE_AVX512
-  if (vector && particles::avx512_available()) return gradient_avx512(row, x, y, p, p_i);
+  if constexpr (D == 2)
+    if (vector && particles::avx512_available()) return gradient_avx512(row, x, p, p_i);
 #endif
   (void)vector;
-  return gradient_scalar(row, x, y, p, p_i);
+  return gradient_scalar<D>(row, x, p, p_i);
 }
 
-VecSum laplacian_sum(const PairRow& row, const double* x, const double* y, const double* vx,
-                     const double* vy, double vxi, double vyi, bool vector) {
+template <int D>
+VecSum<D> laplacian_sum(const BasicPairRow<D>& row, const Coords<D>& x, const Coords<D>& v,
+                        const VecSum<D>& v_i, bool vector) {
 #ifdef FSI_HAVE_AVX512
-  if (vector && particles::avx512_available()) return laplacian_avx512(row, x, y, vx, vy, vxi, vyi);
+  if constexpr (D == 2)
+    if (vector && particles::avx512_available()) return laplacian_avx512(row, x, v, v_i);
 #endif
   (void)vector;
-  return laplacian_scalar(row, x, y, vx, vy, vxi, vyi);
+  return viscous_scalar<false, D>(row, x, v, v_i).laplacian;
 }
 
-ViscousSum viscous_sum(const PairRow& row, const double* x, const double* y, const double* vx,
-                       const double* vy, double vxi, double vyi, bool vector) {
+template <int D>
+ViscousSum<D> viscous_sum(const BasicPairRow<D>& row, const Coords<D>& x, const Coords<D>& v,
+                          const VecSum<D>& v_i, bool vector) {
 #ifdef FSI_HAVE_AVX512
-  if (vector && particles::avx512_available()) return viscous_avx512(row, x, y, vx, vy, vxi, vyi);
+  if constexpr (D == 2)
+    if (vector && particles::avx512_available()) return viscous_avx512(row, x, v, v_i);
 #endif
   (void)vector;
-  return viscous_scalar(row, x, y, vx, vy, vxi, vyi);
+  return viscous_scalar<true, D>(row, x, v, v_i);
 }
+
+#define FSI_EMPS_PAIR_SUMS(D)                                                                      \
+  template PndSum pnd_sum<D>(const BasicPairRow<D>&, const Coords<D>&, bool);                      \
+  template VecSum<D> gradient_sum<D>(const BasicPairRow<D>&, const Coords<D>&, const double*,      \
+                                     double, bool);                                                \
+  template VecSum<D> laplacian_sum<D>(const BasicPairRow<D>&, const Coords<D>&, const Coords<D>&,  \
+                                      const VecSum<D>&, bool);                                     \
+  template ViscousSum<D> viscous_sum<D>(const BasicPairRow<D>&, const Coords<D>&,                  \
+                                        const Coords<D>&, const VecSum<D>&, bool);
+FSI_EMPS_PAIR_SUMS(2)
+FSI_EMPS_PAIR_SUMS(3)
+#undef FSI_EMPS_PAIR_SUMS
 
 } // namespace fsi::emps

@@ -9,19 +9,21 @@
 
 namespace fsi::emps {
 
-// n*_i = sum_j w_ij + the wall part (eqs. 9, 20; WallTerms::pnd); p_i = c^2 rho/n0 (n*_i - n0),
-// 0 on the free surface n*_i < beta n0 (eqs. 15, 17).
-void EmpsFluid::density_and_pressure() {
+// n*_i = sum_j w_ij + the wall part (eqs. 9, 20; WallTerms::pnd, 2-D); p_i = c^2 rho/n0 (n*_i -
+// n0), 0 on the free surface n*_i < beta n0 (eqs. 15, 17).
+template <int D> void BasicEmpsFluid<D>::density_and_pressure() {
   Timer timer(times_.density);
-  Particles& p = particles_;
+  ParticleSet& p = particles_;
   const std::size_t n = p.size();
   const double stiffness = options_.sound_speed * options_.sound_speed * options_.density / n0_;
   const double surface = options_.beta * n0_;
+  const Coords<D> x = p.position.coords();
   const std::size_t pairs = parallel_reduce_balanced(
       n, std::size_t{0},
       [&](std::size_t i) {
-        const PndSum sum = pnd_sum(pair_row(i), p.x.data(), p.y.data(), options_.vector_kernels);
-        const double pnd = walls_.pnd(i, sum.pnd);
+        const PndSum sum = pnd_sum<D>(pair_row(i), x, options_.vector_kernels);
+        double pnd = sum.pnd;
+        if constexpr (D == 2) pnd = walls_.terms.pnd(i, sum.pnd);
         p.pnd[i] = pnd;
         const bool free = pnd < surface;
         p.surface[i] = free;
@@ -32,10 +34,11 @@ void EmpsFluid::density_and_pressure() {
   mean_neighbours_ = n ? static_cast<double>(pairs) / static_cast<double>(n) : 0.0;
 }
 
-WallForceParts EmpsFluid::wall_force_parts(int first, int last) const {
+template <int D>
+WallForceParts BasicEmpsFluid<D>::wall_force_parts(int first, int last) const requires(D == 2) {
   WallForceParts out;
-  for (std::size_t i = 0; i < wall_forces_.size(); ++i)
-    for (const FaceForces& f : wall_forces_.face) {
+  for (std::size_t i = 0; i < walls_.forces.size(); ++i)
+    for (const FaceForces& f : walls_.forces.face) {
       if (f.segment[i] < first || f.segment[i] >= last) continue;
       out.pressure -= f.f[i] - f.f_contact[i] - f.f_viscous[i];
       out.repulsive -= f.f_contact[i];
@@ -45,16 +48,15 @@ WallForceParts EmpsFluid::wall_force_parts(int first, int last) const {
 }
 
 // Fluid-fluid part of <grad p>_i (eq. 10) without the d/n0 factor: sum over the neighbours of
-// (p_j + p_i) (x_j - x_i) / r_ij^2 w_ij; with `shepard`, also the neighbours' mean pressure
-// sum p_j w_ij / sum w_ij into it (0 without neighbours).
-Vec2 EmpsFluid::fluid_gradient(std::size_t i, double* shepard) const {
-  const Particles& p = particles_;
-  const double xi = p.x[i], yi = p.y[i], p_i = p.p[i];
-  if (!shepard) {
-    const VecSum g =
-        gradient_sum(pair_row(i), p.x.data(), p.y.data(), p.p.data(), p_i, options_.vector_kernels);
-    return Vec2(g.x, g.y);
-  }
+// (p_j + p_i) (x_j - x_i) / r_ij^2 w_ij; with `shepard` (2-D, for the walls), also the
+// neighbours' mean pressure sum p_j w_ij / sum w_ij into it (0 without neighbours).
+template <int D> VecSum<D> BasicEmpsFluid<D>::fluid_gradient(std::size_t i, double* shepard) const {
+  const ParticleSet& p = particles_;
+  const double p_i = p.p[i];
+  if (!shepard)
+    return gradient_sum<D>(pair_row(i), p.position.coords(), p.p.data(), p_i,
+                           options_.vector_kernels);
+  const double xi = p.x[i], yi = p.y[i];
   double gx = 0, gy = 0, pw = 0, ws = 0;
   const std::uint32_t* row = neighbours_.row(i);
   for (std::uint32_t k = 0, c = neighbours_.count(i); k < c; ++k) {
@@ -68,57 +70,78 @@ Vec2 EmpsFluid::fluid_gradient(std::size_t i, double* shepard) const {
     pw += p.p[j] * w, ws += w;
   }
   *shepard = ws > 0 ? pw / ws : 0.0;
-  return Vec2(gx, gy);
+  return {gx, gy};
 }
 
 // v^{n+1} = v* - dt/rho <grad p>^ERP, x^{n+1} = x* + dt (v^{n+1} - v*) (eqs. 10, 14, 25-27),
-// and the wall force of eq. 52 on each face.
-void EmpsFluid::pressure_gradient(double dt) {
+// and in 2-D the wall force of eq. 52 on each face.
+template <int D> void BasicEmpsFluid<D>::pressure_gradient(double dt) {
   Timer timer(times_.pressure_gradient);
-  Particles& p = particles_;
+  ParticleSet& p = particles_;
   const std::size_t n = p.size();
-  const double c_grad = dim / n0_;
+  const double c_grad = D / n0_;
   const double inv_rho = 1.0 / options_.density, V = options_.volume();
   const bool neighbours = options_.wall.mirror.pressure == WallPressure::neighbours;
-  scratch_.resize(2 * n);
+  scratch_.resize(D * n);
+  double* dx = scratch_.data();
+  const std::array<double*, D> v = components(p.velocity);
   parallel_for_balanced(n, [&](std::size_t i) {
-    // p_i' (eq. 26, or WallPressure::neighbours for a free-surface particle at a wall)
-    double p_mirror = p.p[i];
-    const bool mean = neighbours && p.surface[i] && hits_.face[0].segment[i] >= 0;
-    const Vec2 fluid = fluid_gradient(i, mean ? &p_mirror : nullptr);
-    // Each face's wall part of <grad p>_i: the mirror pressure term and the contact term.
-    std::array<Vec2, erp::max_faces> wall, contact;
-    wall.fill(Vec2::Zero());
-    contact.fill(Vec2::Zero());
-    for (std::size_t k = 0; k < erp::max_faces; ++k) {
-      if (hits_.face[k].segment[i] < 0) continue;
-      contact[k] = walls_.contact(i, k, dt);
-      wall[k] = walls_.mirror_pressure(i, k, p_mirror) + contact[k];
+    VecD<D> grad;
+    if constexpr (D == 2) {
+      // p_i' (eq. 26, or WallPressure::neighbours for a free-surface particle at a wall)
+      const erp::WallHits& hits = walls_.hits;
+      double p_mirror = p.p[i];
+      const bool mean = neighbours && p.surface[i] && hits.face[0].segment[i] >= 0;
+      const VecSum<2> fluid = fluid_gradient(i, mean ? &p_mirror : nullptr);
+      // Each face's wall part of <grad p>_i: the mirror pressure term and the contact term.
+      std::array<Vec2, erp::max_faces> wall, contact;
+      wall.fill(Vec2::Zero());
+      contact.fill(Vec2::Zero());
+      for (std::size_t k = 0; k < erp::max_faces; ++k) {
+        if (hits.face[k].segment[i] < 0) continue;
+        contact[k] = walls_.terms.contact(i, k, dt);
+        wall[k] = walls_.terms.mirror_pressure(i, k, p_mirror) + contact[k];
+      }
+      grad = c_grad * Vec2(fluid[0], fluid[1]);
+      for (const Vec2& wk : wall) grad += wk;
+      // eq. 52: f_wall = V (-(R_ref <grad p>_i' + f_rep) + mu R <lap v>_i'), per face
+      for (std::size_t k = 0; k < erp::max_faces; ++k) {
+        const erp::FaceHits& h = hits.face[k];
+        FaceForces& f = walls_.forces.face[k];
+        const std::vector<Vec2>& visc = walls_.viscous[k];
+        const int s = h.segment[i];
+        f.segment[i] = s;
+        f.t[i] = s >= 0 ? h.t[i] : 0.0;
+        f.x_wall[i] = s >= 0 ? h.x_wall[i] : Vec2::Zero();
+        f.f[i] = s >= 0 ? Vec2(-V * wall[k] + visc[i]) : Vec2::Zero();
+        f.f_contact[i] = -V * contact[k];
+        f.f_viscous[i] = s >= 0 ? visc[i] : Vec2::Zero();
+      }
+    } else {
+      const VecSum<D> fluid = fluid_gradient(i, nullptr);
+      for (int a = 0; a < D; ++a) grad[a] = c_grad * fluid[static_cast<std::size_t>(a)];
     }
-    Vec2 grad = c_grad * fluid;
-    for (const Vec2& wk : wall) grad += wk;
-    const Vec2 dv = -dt * inv_rho * grad;
-    p.vx[i] += dv.x();
-    p.vy[i] += dv.y();
-    scratch_[2 * i] = dt * dv.x();
-    scratch_[2 * i + 1] = dt * dv.y();
-    // eq. 52: f_wall = V (-(R_ref <grad p>_i' + f_rep) + mu R <lap v>_i'), per face
-    for (std::size_t k = 0; k < erp::max_faces; ++k) {
-      const erp::FaceHits& h = hits_.face[k];
-      FaceForces& f = wall_forces_.face[k];
-      const int s = h.segment[i];
-      f.segment[i] = s;
-      f.t[i] = s >= 0 ? h.t[i] : 0.0;
-      f.x_wall[i] = s >= 0 ? h.x_wall[i] : Vec2::Zero();
-      f.f[i] = s >= 0 ? Vec2(-V * wall[k] + visc_wall_[k][i]) : Vec2::Zero();
-      f.f_contact[i] = -V * contact[k];
-      f.f_viscous[i] = s >= 0 ? visc_wall_[k][i] : Vec2::Zero();
+    const VecD<D> dv = -dt * inv_rho * grad;
+    for (std::size_t a = 0; a < D; ++a) {
+      v[a][i] += dv[static_cast<Eigen::Index>(a)];
+      dx[D * i + a] = dt * dv[static_cast<Eigen::Index>(a)];
     }
   });
+  const std::array<double*, D> x = components(p.position);
   parallel_for(n, [&](std::size_t i) {
-    p.x[i] += scratch_[2 * i];
-    p.y[i] += scratch_[2 * i + 1];
+    for (std::size_t a = 0; a < D; ++a) x[a][i] += dx[D * i + a];
   });
 }
+
+template <int D> const WallForces& BasicEmpsFluid<D>::wall_forces() const requires(D == 2) {
+  return walls_.forces;
+}
+
+template const WallForces& BasicEmpsFluid<2>::wall_forces() const;
+template WallForceParts BasicEmpsFluid<2>::wall_force_parts(int, int) const;
+template void BasicEmpsFluid<2>::density_and_pressure();
+template void BasicEmpsFluid<3>::density_and_pressure();
+template void BasicEmpsFluid<2>::pressure_gradient(double);
+template void BasicEmpsFluid<3>::pressure_gradient(double);
 
 } // namespace fsi::emps

@@ -10,17 +10,18 @@
 
 namespace fsi::emps {
 
-// nu <lap v>^ERP into scratch_ (eqs. 11, 24; advance adds it and g to v, eq. 13); visc_wall_
-// keeps each face's viscous wall force (with wall_approach_viscosity alpha_w, also alpha_w c l0
-// times the mirror closing-pair sum of WallTerms::mirror_viscous, a wall force).
+// nu <lap v>^ERP into scratch_ (eqs. 11, 24; advance adds it and g to v, eq. 13); in 2-D the
+// walls' viscous array keeps each face's viscous wall force (with wall_approach_viscosity
+// alpha_w, also alpha_w c l0 times the mirror closing-pair sum of WallTerms::mirror_viscous, a
+// wall force).
 // With artificial_viscosity alpha, closing pairs also feel alpha c l0 times the eq. 11 operator
 // restricted to their line of centres (Monaghan's artificial viscosity in MPS form; not in the
 // paper, pairwise antisymmetric so momentum is kept).
-void EmpsFluid::viscosity() {
+template <int D> void BasicEmpsFluid<D>::viscosity() {
   Timer timer(times_.viscosity);
-  Particles& p = particles_;
+  ParticleSet& p = particles_;
   const std::size_t n = p.size();
-  const double c_lap = 2.0 * dim / (lambda0_ * n0_);
+  const double c_lap = 2.0 * D / (lambda0_ * n0_);
   const double nu = options_.viscosity, mu_V = options_.density * nu * options_.volume();
   const double nu_art = options_.artificial_viscosity * options_.sound_speed * options_.l0;
   const WallContactOptions& contact = options_.wall.contact;
@@ -31,23 +32,23 @@ void EmpsFluid::viscosity() {
       options_.wall.mirror.approach_viscosity * options_.sound_speed * options_.l0;
   const bool approach = nu_approach > 0;
   const double rho_V = options_.density * options_.volume();
-  const std::vector<int>& nearest = hits_.face[0].segment;
-  scratch_.resize(2 * n);
+  const Coords<D> x = p.position.coords(), v = p.velocity.coords();
+  scratch_.resize(D * n);
+  double* out = scratch_.data();
   // The closing-pair sum only when alpha > 0.
   // near_wall: its part on pairs with a particle within r_e of a wall (WallContact::viscous).
   const auto sweep = [&](auto artificial, auto near_wall) {
     parallel_for_balanced(n, [&](std::size_t i) {
-      const double xi = p.x[i], yi = p.y[i], vxi = p.vx[i], vyi = p.vy[i];
-      double sx = 0, sy = 0, ax = 0, ay = 0, bx = 0, by = 0;
+      VecSum<D> v_i, s{}, a_art{}, b{};
+      for (std::size_t a = 0; a < D; ++a) v_i[a] = v[a][i];
       if constexpr (!decltype(artificial)::value) { // eq. 11's fluid part alone (pair_sums)
-        const VecSum lap = laplacian_sum(pair_row(i), p.x.data(), p.y.data(), p.vx.data(),
-                                         p.vy.data(), vxi, vyi, options_.vector_kernels);
-        sx = lap.x, sy = lap.y;
+        s = laplacian_sum<D>(pair_row(i), x, v, v_i, options_.vector_kernels);
       } else if constexpr (!decltype(near_wall)::value) { // and the closing pairs' (pair_sums)
-        const ViscousSum v = viscous_sum(pair_row(i), p.x.data(), p.y.data(), p.vx.data(),
-                                         p.vy.data(), vxi, vyi, options_.vector_kernels);
-        sx = v.laplacian.x, sy = v.laplacian.y, ax = v.closing.x, ay = v.closing.y;
-      } else { // and the closing pairs' part near a wall apart (WallContact::viscous)
+        const ViscousSum<D> sum = viscous_sum<D>(pair_row(i), x, v, v_i, options_.vector_kernels);
+        s = sum.laplacian, a_art = sum.closing;
+      } else if constexpr (D == 2) { // and the closing pairs' part near a wall apart (2-D)
+        const std::vector<int>& nearest = walls_.hits.face[0].segment;
+        const double xi = p.x[i], yi = p.y[i], vxi = v_i[0], vyi = v_i[1];
         const bool wall_i = nearest[i] >= 0;
         const std::uint32_t* row = neighbours_.row(i);
         for (std::uint32_t k = 0, c = neighbours_.count(i); k < c; ++k) {
@@ -56,56 +57,60 @@ void EmpsFluid::viscosity() {
           if (r2 >= re2_) continue;
           const double w = w_e_.inside(std::sqrt(r2));
           const double dvx = p.vx[j] - vxi, dvy = p.vy[j] - vyi;
-          sx += dvx * w;
-          sy += dvy * w;
+          s[0] += dvx * w;
+          s[1] += dvy * w;
           const double closing = dvx * dx + dvy * dy; // < 0: the pair closes in
           if (closing < 0 && r2 > 0) {
-            const double s = closing * w / r2; // ((v_j - v_i) . e) e w
-            ax += s * dx;
-            ay += s * dy;
-            if (wall_i || nearest[j] >= 0) bx += s * dx, by += s * dy;
+            const double f = closing * w / r2; // ((v_j - v_i) . e) e w
+            a_art[0] += f * dx;
+            a_art[1] += f * dy;
+            if (wall_i || nearest[j] >= 0) b[0] += f * dx, b[1] += f * dy;
           }
         }
       }
-      // The wall's part on each face (eq. 24, the approach viscosity).
-      std::array<Vec2, erp::max_faces> m, a;
-      m.fill(Vec2::Zero());
-      a.fill(Vec2::Zero());
-      for (std::size_t k = 0; k < erp::max_faces; ++k) {
-        if (!((nu > 0 || approach) && hits_.face[k].segment[i] >= 0)) continue;
-        const MirrorViscous mirror = walls_.mirror_viscous(i, k, approach);
-        m[k] = c_lap * mirror.laplacian;
-        a[k] = nu_approach * c_lap * mirror.approach;
+      VecSum<D> lap;
+      for (std::size_t a = 0; a < D; ++a) lap[a] = c_lap * s[a];
+      // The wall's part on each face (eq. 24, the approach viscosity; 2-D).
+      std::array<Vec2, erp::max_faces> m, a_wall;
+      if constexpr (D == 2) {
+        m.fill(Vec2::Zero());
+        a_wall.fill(Vec2::Zero());
+        for (std::size_t k = 0; k < erp::max_faces; ++k) {
+          if (!((nu > 0 || approach) && walls_.hits.face[k].segment[i] >= 0)) continue;
+          const MirrorViscous mirror = walls_.terms.mirror_viscous(i, k, approach);
+          m[k] = c_lap * mirror.laplacian;
+          a_wall[k] = nu_approach * c_lap * mirror.approach;
+        }
+        for (const Vec2& mk : m) lap[0] += mk.x(), lap[1] += mk.y();
       }
-      double lx = c_lap * sx, ly = c_lap * sy;
-      for (const Vec2& mk : m) lx += mk.x(), ly += mk.y();
-      scratch_[2 * i] = nu * lx;
-      scratch_[2 * i + 1] = nu * ly;
-      if constexpr (decltype(artificial)::value) {
-        scratch_[2 * i] += nu_art * c_lap * ax;
-        scratch_[2 * i + 1] += nu_art * c_lap * ay;
+      for (std::size_t a = 0; a < D; ++a) {
+        out[D * i + a] = nu * lap[a];
+        if constexpr (decltype(artificial)::value) out[D * i + a] += nu_art * c_lap * a_art[a];
+        if constexpr (decltype(near_wall)::value) out[D * i + a] += nu_wall * c_lap * b[a];
       }
-      if constexpr (decltype(near_wall)::value) {
-        scratch_[2 * i] += nu_wall * c_lap * bx;
-        scratch_[2 * i + 1] += nu_wall * c_lap * by;
-      }
-      for (std::size_t k = 0; k < erp::max_faces; ++k)
-        visc_wall_[k][i] = mu_V * m[k]; // V_i mu R <lap v>_i' (eq. 52, viscous wall part)
-      if (approach) {
-        Vec2 a_sum = a[0];
-        for (std::size_t k = 1; k < erp::max_faces; ++k) a_sum += a[k];
-        scratch_[2 * i] += a_sum.x();
-        scratch_[2 * i + 1] += a_sum.y();
-        for (std::size_t k = 0; k < erp::max_faces; ++k) visc_wall_[k][i] += rho_V * a[k];
+      if constexpr (D == 2) {
+        for (std::size_t k = 0; k < erp::max_faces; ++k)
+          walls_.viscous[k][i] = mu_V * m[k]; // V_i mu R <lap v>_i' (eq. 52, viscous wall part)
+        if (approach) {
+          Vec2 a_sum = a_wall[0];
+          for (std::size_t k = 1; k < erp::max_faces; ++k) a_sum += a_wall[k];
+          out[2 * i] += a_sum.x();
+          out[2 * i + 1] += a_sum.y();
+          for (std::size_t k = 0; k < erp::max_faces; ++k)
+            walls_.viscous[k][i] += rho_V * a_wall[k];
+        }
       }
     });
   };
-  if (nu_wall > 0)
-    sweep(std::true_type{}, std::true_type{});
-  else if (nu_art > 0)
+  if constexpr (D == 2)
+    if (nu_wall > 0) return sweep(std::true_type{}, std::true_type{});
+  if (nu_art > 0)
     sweep(std::true_type{}, std::false_type{});
   else
     sweep(std::false_type{}, std::false_type{});
 }
+
+template void BasicEmpsFluid<2>::viscosity();
+template void BasicEmpsFluid<3>::viscosity();
 
 } // namespace fsi::emps

@@ -7,6 +7,7 @@
 #include "geometry_erp/fill.hpp"
 #include "geometry_erp/wall_weight.hpp"
 #include "particles/kernels.hpp"
+#include "test_support.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -22,24 +23,12 @@ using Catch::Matchers::WithinRel;
 namespace {
 
 emps::FluidOptions water(double l0) {
-  emps::FluidOptions o;
-  o.density = 1000.0;
-  o.l0 = l0;
-  o.sound_speed = 20.0;
-  o.domain_min = {-1.0, -1.0};
-  o.domain_max = {2.0, 2.0};
-  return o;
+  return emps::test::water<2>(l0, -1.0, 2.0);
 }
 
 /// The walls of an open tank [0, width] x [0, height]: left, bottom and right, fluid inside.
 std::vector<Vec2> open_tank(double width, double height) {
   return {{0.0, height}, {0.0, 0.0}, {width, 0.0}, {width, height}};
-}
-
-Vec2 momentum(const emps::Particles& p) {
-  Vec2 m = Vec2::Zero();
-  for (std::size_t i = 0; i < p.size(); ++i) m += Vec2(p.vx[i], p.vy[i]);
-  return m;
 }
 
 } // namespace
@@ -171,24 +160,11 @@ TEST_CASE("emps: without gravity and walls, linear momentum is conserved to 1e-1
   emps::EmpsFluid fluid(water(l0), positions, walls);
   const emps::Particles& p0 = fluid.particles();
   std::vector<Vec2> v(p0.size());
-  double scale = 0.0;
-  for (std::size_t i = 0; i < p0.size(); ++i) {
+  for (std::size_t i = 0; i < p0.size(); ++i)
     v[i] = Vec2(1.0 + -4.0 * (p0.x[i] - 0.15), -0.5 + 4.0 * (p0.y[i] - 0.15));
-    scale += v[i].norm();
-  }
-  fluid.set_velocities(v);
-  Vec2 before = momentum(fluid.particles());
-  double worst = 0.0;
-  int pressurised = 0;
-  for (int k = 0; k < 300; ++k) {
-    fluid.advance(k * 1e-4, 1e-4);
-    const Vec2 after = momentum(fluid.particles());
-    worst = std::max(worst, (after - before).norm() / scale);
-    before = after;
-    for (double pi : fluid.particles().p) pressurised += pi > 0.0;
-  }
-  CHECK(pressurised > 10000); // the test exercised the pressure gradient
-  CHECK(worst < 1e-10);
+  const emps::test::MomentumDrift drift = emps::test::momentum_drift(fluid, v, 300, 1e-4);
+  CHECK(drift.pressurised > 10000); // the test exercised the pressure gradient
+  CHECK(drift.worst < 1e-10);
 }
 
 TEST_CASE("emps: what the fluid's momentum loses to the walls, the walls receive (eq. 52)",
@@ -237,9 +213,9 @@ TEST_CASE("emps: what the fluid's momentum loses to the walls, the walls receive
   double worst = 0.0, worst_split = 0.0, repulsive = 0.0;
   const double weight = static_cast<double>(positions.size()) * m * options.gravity.norm();
   for (int k = 0; k < 400; ++k) {
-    const Vec2 before = m * momentum(fluid.particles());
+    const Vec2 before = m * emps::test::momentum(fluid.particles());
     fluid.advance(k * dt, dt);
-    const Vec2 after = m * momentum(fluid.particles());
+    const Vec2 after = m * emps::test::momentum(fluid.particles());
     const emps::WallForces& w = fluid.wall_forces();
     Vec2 f = Vec2::Zero();
     for (std::size_t i = 0; i < w.size(); ++i) f += w.face[0].f[i] + w.face[1].f[i];

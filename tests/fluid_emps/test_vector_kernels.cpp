@@ -55,20 +55,19 @@ TEST_CASE("emps pair sums: the AVX-512 and scalar forms equal the sums written o
       if (closing < 0) ax += closing * w * dx / r, ay += closing * w * dy / r;
     }
     closing_sums += std::hypot(ax, ay);
-    const emps::PairRow pr{row.data(), c, x[i], y[i], r_e * r_e, 1.0 / r_e};
+    const emps::PairRow pr{row.data(), c, {x[i], y[i]}, r_e * r_e, 1.0 / r_e};
+    const emps::Coords<2> xy{x.data(), y.data()}, v{vx.data(), vy.data()};
     for (const bool vector : {false, true}) {
-      const emps::PndSum d = emps::pnd_sum(pr, x.data(), y.data(), vector);
-      const emps::VecSum g = emps::gradient_sum(pr, x.data(), y.data(), p.data(), p[i], vector);
-      const emps::VecSum l =
-          emps::laplacian_sum(pr, x.data(), y.data(), vx.data(), vy.data(), vx[i], vy[i], vector);
-      const emps::ViscousSum a =
-          emps::viscous_sum(pr, x.data(), y.data(), vx.data(), vy.data(), vx[i], vy[i], vector);
+      const emps::PndSum d = emps::pnd_sum<2>(pr, xy, vector);
+      const emps::VecSum<2> g = emps::gradient_sum<2>(pr, xy, p.data(), p[i], vector);
+      const emps::VecSum<2> l = emps::laplacian_sum<2>(pr, xy, v, {vx[i], vy[i]}, vector);
+      const emps::ViscousSum<2> a = emps::viscous_sum<2>(pr, xy, v, {vx[i], vy[i]}, vector);
       REQUIRE(d.within == within);
       // errors relative to the sums' scales: n0 ~ 4, |p| w / r ~ 1e4 / l0, |v| w ~ 1
-      worst = std::max({worst, std::abs(d.pnd - pnd) / 4.0,
-                        std::hypot(g.x - gx, g.y - gy) / (1e4 / l0), std::hypot(l.x - lx, l.y - ly),
-                        std::hypot(a.laplacian.x - lx, a.laplacian.y - ly),
-                        std::hypot(a.closing.x - ax, a.closing.y - ay)});
+      worst = std::max(
+          {worst, std::abs(d.pnd - pnd) / 4.0, std::hypot(g[0] - gx, g[1] - gy) / (1e4 / l0),
+           std::hypot(l[0] - lx, l[1] - ly), std::hypot(a.laplacian[0] - lx, a.laplacian[1] - ly),
+           std::hypot(a.closing[0] - ax, a.closing[1] - ay)});
     }
   }
   for (int k = 0; k < 8; ++k) CHECK(tail_lengths[k]); // every row length modulo 8 occurred

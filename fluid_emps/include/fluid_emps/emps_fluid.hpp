@@ -10,12 +10,18 @@
 //
 // Walls: the caller owns the WallSet and moves its nodes (rigid motion, FE interface) to their
 // state at t + dt before calling advance(); the fluid refits its wall index each step.
+//
+// Written once for D = 2 and 3 (docs/architecture.md, "Two and three dimensions"): the
+// fluid-fluid terms, the time integration, the diagnostics and the state are D-generic; the ERP
+// walls (WallSet segments, mirror particles, the wall terms and forces) are 2-D only so far, and
+// the 3-D fluid has no walls yet (#43): particles leaving the domain box are removed.
 #include "fluid_emps/options.hpp"
 #include "fluid_emps/pair_sums.hpp"
 #include "fluid_emps/particles.hpp"
 #include "fluid_emps/wall_terms.hpp"
 #include "geometry_erp/wall_locator.hpp"
 #include "geometry_erp/wall_set.hpp"
+#include "geometry_erp/wall_weight.hpp"
 #include "particles/cell_grid.hpp"
 #include "particles/kernels.hpp"
 #include "particles/neighbor_list.hpp"
@@ -24,6 +30,7 @@
 #include <limits>
 #include <memory>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace fsi {
@@ -73,13 +80,36 @@ struct StepTimes {
   double neighbours = 0, walls = 0, viscosity = 0, density = 0, pressure_gradient = 0, other = 0;
 };
 
-class EmpsFluid {
+/// The 2-D fluid's walls: the wall index, its hits, the wall terms and the wall forces.
+struct PlaneWalls {
+  PlaneWalls(const FluidOptions& options, double n0, erp::WallSet& walls,
+             const Particles& particles, const particles::CellGrid& grid);
+  std::unique_ptr<erp::WallLocator> locator;
+  erp::WallHits hits;
+  WallTerms terms; ///< the wall terms over the fluid's particles, grid and `hits`
+  WallForces forces;
+  std::array<std::vector<Vec2>, erp::max_faces> viscous; ///< viscous wall force of each face
+  long hits_layout = -1; ///< the fluid's layout when `hits` were computed (-1: stale)
+};
+
+/// The fluid's walls in D dimensions: none in 3-D yet (#43).
+struct NoWalls {};
+template <int D> using EmpsWalls = std::conditional_t<D == 2, PlaneWalls, NoWalls>;
+
+template <int D> class BasicEmpsFluid {
 public:
+  using Vec = VecD<D>;
+  using Options = BasicFluidOptions<D>;
+  using ParticleSet = BasicParticles<D>;
+
   /// Particles start at rest at `positions`. Throws fsi::InputError on invalid options.
-  EmpsFluid(const FluidOptions& options, const std::vector<Vec2>& positions, erp::WallSet& walls);
+  BasicEmpsFluid(const Options& options, const std::vector<Vec>& positions,
+                 erp::WallSet& walls) requires(D == 2);
+  /// Without walls (3-D, until #43).
+  BasicEmpsFluid(const Options& options, const std::vector<Vec>& positions) requires(D == 3);
   /// Initial velocities, one per particle in the current order (before the first advance()).
-  void set_velocities(const std::vector<Vec2>& v);
-  ~EmpsFluid();
+  void set_velocities(const std::vector<Vec>& v);
+  ~BasicEmpsFluid() = default;
 
   /// Advances from t to t + dt. Throws fsi::RunError on a non-finite field, a particle behind a
   /// wall or a neighbour-row overflow, naming the particle, the step and the time.
@@ -91,12 +121,12 @@ public:
   /// Steps whose dt the wall-gap limit set.
   long gap_limited_steps() const { return gap_limited_steps_; }
 
-  const Particles& particles() const { return particles_; }
-  const WallForces& wall_forces() const { return wall_forces_; }
+  const ParticleSet& particles() const { return particles_; }
+  const WallForces& wall_forces() const requires(D == 2);
   /// The last step's force on segments [first, last) of the WallSet, by part (sequential sum:
   /// the same for every thread count).
-  WallForceParts wall_force_parts(int first, int last) const;
-  const FluidOptions& options() const { return options_; }
+  WallForceParts wall_force_parts(int first, int last) const requires(D == 2);
+  const Options& options() const { return options_; }
   double n0() const { return n0_; }
   double lambda0() const { return lambda0_; }
   long steps() const { return step_; }
@@ -127,46 +157,53 @@ public:
   void read_state(const StateArchive& archive, const std::string& prefix);
 
 private:
+  /// The wall hits' part of the checkpoint (2-D).
+  void write_hits(StateArchive& archive, const std::string& prefix) const requires(D == 2);
+  void read_hits(const StateArchive& archive, const std::string& prefix) requires(D == 2);
+  /// Places the particles at `positions` and computes pnd, pressure and the free-surface flags
+  /// of the initial state (for output at t = 0).
+  void start(const std::vector<Vec>& positions);
   /// `step` and `t` name the step in progress in messages.
   void refresh_neighbours(bool allow_reorder, long step, double t);
-  void query_walls();
+  void query_walls() requires(D == 2);
   void viscosity();
   void density_and_pressure();
   void pressure_gradient(double dt);
   /// Particle i's neighbour-list row for the pair sums (pair_sums.hpp).
-  PairRow pair_row(std::size_t i) const {
-    return {neighbours_.row(i), neighbours_.count(i), particles_.x[i], particles_.y[i], re2_,
-            w_e_.inv_re};
+  BasicPairRow<D> pair_row(std::size_t i) const {
+    BasicPairRow<D> row{neighbours_.row(i), neighbours_.count(i), {}, re2_, w_e_.inv_re};
+    for (int a = 0; a < D; ++a) row.xi[static_cast<std::size_t>(a)] = particles_.position[a][i];
+    return row;
   }
   /// The fluid-fluid part of the pressure gradient on particle i (eq. 10).
-  Vec2 fluid_gradient(std::size_t i, double* shepard) const;
+  VecSum<D> fluid_gradient(std::size_t i, double* shepard) const;
   void check_finite(long step, double t) const;
   void remove_outside();
-  double wall_gap_dt() const;
+  double wall_gap_dt() const requires(D == 2);
   void damp(double t, double dt);
 
-  FluidOptions options_;
-  std::unique_ptr<erp::WallLocator> locator_;
-  double r_e_, n0_, lambda0_;
-  particles::MpsWeight w_e_; ///< w(r) of eq. 8 at r_e
-  double re2_;               ///< r_e^2 (the pair loops test r^2 < r_e^2)
-  Particles particles_;
-  particles::CellGrid grid_;
-  particles::NeighborList neighbours_;
-  erp::WallHits hits_;
-  WallTerms walls_; ///< the wall terms over particles_, grid_ and hits_
-  WallForces wall_forces_;
-  std::vector<double> scratch_;                             // per-particle work array
-  std::array<std::vector<Vec2>, erp::max_faces> visc_wall_; // viscous wall force of each face
+  Options options_; // validated by the constructors before anything below reads it
+  double r_e_ = options_.r_e();
+  double n0_ = erp::lattice_n0<D>(options_.l0, r_e_, particles::MpsWeight(r_e_));
+  double lambda0_ = erp::lattice_lambda0<D>(options_.l0, r_e_, particles::MpsWeight(r_e_));
+  particles::MpsWeight w_e_{r_e_}; ///< w(r) of eq. 8 at r_e
+  double re2_ = r_e_ * r_e_;       ///< r_e^2 (the pair loops test r^2 < r_e^2)
+  ParticleSet particles_;
+  particles::BasicCellGrid<D> grid_{options_.domain_min, options_.domain_max,
+                                    r_e_*(1.0 + options_.skin)};
+  particles::BasicNeighborList<D> neighbours_;
+  EmpsWalls<D> walls_;
+  std::vector<double> scratch_; // per-particle work array, D values a particle
   std::vector<std::uint8_t> keep_;
   std::size_t capacity_;
   long step_ = 0, layout_ = 0, builds_ = 0;
-  long hits_layout_ = -1; // layout_ when hits_ were computed (-1: stale)
   double gap_dt_ = std::numeric_limits<double>::infinity(); // wall-gap limit for the next step
   long gap_limited_steps_ = 0;
   std::size_t removed_ = 0;
   double mean_neighbours_ = 0.0;
   StepTimes times_;
 };
+using EmpsFluid = BasicEmpsFluid<2>;
+using EmpsFluid3 = BasicEmpsFluid<3>;
 
 } // namespace fsi::emps

@@ -88,7 +88,7 @@ struct WallOptions {
   double gap_courant = 0.0;
 };
 
-struct FluidOptions {
+template <int D> struct BasicFluidOptions {
   double density = 1000.0;  ///< rho, kg/m^3
   double viscosity = 0.0;   ///< kinematic nu, m^2/s; 0 skips the viscous loop entirely
   double l0 = 0.0;          ///< initial particle spacing, m
@@ -98,15 +98,21 @@ struct FluidOptions {
   /// alpha of an artificial viscosity alpha c l0 on closing pairs (not in the paper; 0: off).
   double artificial_viscosity = 0.0;
   WallOptions wall;
-  Vec2 gravity = Vec2::Zero();
+  VecD<D> gravity = VecD<D>::Zero();
   double damping_time = 0.0; ///< T_d: velocities damped at rate 20/T_d (1 - t/T_d) for t < T_d
-  Vec2 domain_min = Vec2::Zero(), domain_max = Vec2::Zero(); ///< outside: removed and counted
+  VecD<D> domain_min = VecD<D>::Zero(), domain_max = VecD<D>::Zero(); ///< outside: removed
   int reorder_interval = 1;   ///< neighbour-list builds between reorderings of particles by cell
   double skin = 0.15;         ///< neighbour-list margin, fraction of r_e
   bool vector_kernels = true; ///< AVX-512 pair sums and list build where the CPU has them
 
   double r_e() const { return re_over_l0 * l0; }
-  double volume() const { return l0 * l0; } ///< V_i = l0^d (eq. 43)
+  /// V_i = l0^d (eq. 43)
+  double volume() const {
+    if constexpr (D == 2)
+      return l0 * l0;
+    else
+      return l0 * l0 * l0;
+  }
   /// alpha of every closing-pair viscosity alpha c l0 the step applies (artificial, approach,
   /// near-wall contact): the viscous time-step limit counts their sum.
   double pair_viscosity_alpha() const {
@@ -116,13 +122,15 @@ struct FluidOptions {
   /// Whether the step runs its viscous loop (eqs. 11, 24, and the closing-pair viscosities).
   bool viscous_loop() const { return viscosity > 0 || pair_viscosity_alpha() > 0; }
 };
+using FluidOptions = BasicFluidOptions<2>;
+using FluidOptions3 = BasicFluidOptions<3>;
 
 /// The options a user sets, each once: key, member, range, doc; the member's initial value is the
 /// default (density, l0 and sound_speed have none). Gravity, domain, reordering, the list skin and
 /// the vector kernels are set by the caller. A visitor that changes `wall_model` (a reader) sets
 /// its preset (apply_wall_preset) before it visits the keys the preset covers, which override it.
-void visit_options(FluidOptions& options, OptionVisitor& visitor);
+template <int D> void visit_options(BasicFluidOptions<D>& options, OptionVisitor& visitor);
 /// Sets every wall term but alpha_rep, and the artificial viscosity, to the preset `model`'s.
-void apply_wall_preset(FluidOptions& options, WallModel model);
+template <int D> void apply_wall_preset(BasicFluidOptions<D>& options, WallModel model);
 
 } // namespace fsi::emps

@@ -1,0 +1,53 @@
+#pragma once
+// What the 2-D and 3-D fluid tests share: water at rest in a domain box, and the momentum check
+// of the fluid-fluid terms, which are antisymmetric in pairs (eqs. 10, 11, the closing-pair
+// viscosity), so that without gravity and walls sum_i v_i changes by round-off only.
+#include "fluid_emps/emps_fluid.hpp"
+
+#include <algorithm>
+
+namespace fsi::emps::test {
+
+/// Water at l0 with c = 20 m/s in the domain box [lo, hi]^D.
+template <int D> BasicFluidOptions<D> water(double l0, double lo, double hi) {
+  BasicFluidOptions<D> o;
+  o.density = 1000.0;
+  o.l0 = l0;
+  o.sound_speed = 20.0;
+  o.domain_min = VecD<D>::Constant(lo);
+  o.domain_max = VecD<D>::Constant(hi);
+  return o;
+}
+
+template <int D> VecD<D> momentum(const BasicParticles<D>& p) {
+  VecD<D> m = VecD<D>::Zero();
+  for (std::size_t i = 0; i < p.size(); ++i)
+    for (int a = 0; a < D; ++a) m[a] += p.velocity[a][i];
+  return m;
+}
+
+struct MomentumDrift {
+  double worst = 0.0;   ///< largest |change of sum_i v_i| of a step / sum_i |v_i(0)|
+  long pressurised = 0; ///< particle-steps with p > 0 (the pressure gradient took part)
+};
+
+/// Sets the initial velocities v and advances `steps` steps of dt from t = 0.
+template <int D>
+MomentumDrift momentum_drift(BasicEmpsFluid<D>& fluid, const std::vector<VecD<D>>& v, int steps,
+                             double dt) {
+  double scale = 0.0;
+  for (const VecD<D>& vi : v) scale += vi.norm();
+  fluid.set_velocities(v);
+  MomentumDrift out;
+  VecD<D> before = momentum(fluid.particles());
+  for (int k = 0; k < steps; ++k) {
+    fluid.advance(k * dt, dt);
+    const VecD<D> after = momentum(fluid.particles());
+    out.worst = std::max(out.worst, (after - before).norm() / scale);
+    before = after;
+    for (double pi : fluid.particles().p) out.pressurised += pi > 0.0;
+  }
+  return out;
+}
+
+} // namespace fsi::emps::test
