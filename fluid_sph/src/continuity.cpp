@@ -22,7 +22,7 @@ template <int D> void BasicSphFluid<D>::second_half(double dt) {
     wa[c] = walls_.a[c].data();
   }
   parallel_for(f.size(), [&](std::size_t i) {
-    for (int c = 0; c < D; ++c) {
+    FSI_UNROLL for (int c = 0; c < D; ++c) {
       v[c][i] += a[c][i] * dt;
       x[c][i] += v[c][i] * half;
     }
@@ -30,35 +30,41 @@ template <int D> void BasicSphFluid<D>::second_half(double dt) {
   const double inv_rho0c0 = 1.0 / (options_.rho0 * options_.c0);
   const double c0 = options_.c0, four_h = 4.0 * h_;
   const double *p = f.p.data(), *vol = f.vol.data(), *wvol = walls_.vol.data();
+  const std::uint32_t *pstart = pstart_.data(), *pj = pj_.data();
+  const std::uint32_t *wstart = wstart_.data(), *wj = wj_.data();
+  const double *pdw = pdw_.data(), *wdw = wdw_.data(), *wr = wr_.data();
+  double *rho = f.rho.data(), *drho = f.drho.data();
+  // Everything by value: the loop reads no member through this and no array through a reference.
   const double worst = parallel_reduce(
       f.size(), 0.0,
-      [&](std::size_t i) {
+      [=](std::size_t i) {
         const double p_i = p[i];
         double v_i[D], a_i[D], ap_i[D];
-        for (int c = 0; c < D; ++c) v_i[c] = v[c][i], a_i[c] = a[c][i], ap_i[c] = ap[c][i];
+        FSI_UNROLL for (int c = 0; c < D; ++c) v_i[c] = v[c][i], a_i[c] = a[c][i],
+                                               ap_i[c] = ap[c][i];
         double s = 0.0;
         // Continuity (eqs. 3, 5): rho_i sum [(v_i - v_j) . e_ij + (p_i - p_j) / (rho0 c0)] dW V_j.
-        for (std::uint32_t k = pstart_[i]; k < pstart_[i + 1]; ++k) {
-          const std::uint32_t j = pj_[k];
+        for (std::uint32_t k = pstart[i]; k < pstart[i + 1]; ++k) {
+          const std::uint32_t j = pj[k];
           double dv[D], e_k[D];
-          for (int c = 0; c < D; ++c) dv[c] = v_i[c] - v[c][j], e_k[c] = e[c][k];
+          FSI_UNROLL for (int c = 0; c < D; ++c) dv[c] = v_i[c] - v[c][j], e_k[c] = e[c][k];
           const double u = dot<D>(dv, e_k);
-          s += (u + (p_i - p[j]) * inv_rho0c0) * pdw_[k] * vol[j];
+          s += (u + (p_i - p[j]) * inv_rho0c0) * pdw[k] * vol[j];
         }
         // Walls: v_d = 2 v_w - v_i, so v_i - v_d = 2 (v_i - v_w); the pressure term with the
         // dummy pressure p_d of eq. 16 (the reference code's wall density diffusion).
-        const double rho_i = f.rho[i];
-        for (std::uint32_t k = wstart_[i]; k < wstart_[i + 1]; ++k) {
-          const std::uint32_t w = wj_[k];
+        const double rho_i = rho[i];
+        for (std::uint32_t k = wstart[i]; k < wstart[i + 1]; ++k) {
+          const std::uint32_t w = wj[k];
           double dv[D], e_k[D], da[D];
-          for (int c = 0; c < D; ++c)
-            dv[c] = v_i[c] - wv[c][w], e_k[c] = we[c][k], da[c] = ap_i[c] - wa[c][w];
+          FSI_UNROLL for (int c = 0; c < D; ++c) dv[c] = v_i[c] - wv[c][w], e_k[c] = we[c][k],
+                                                 da[c] = ap_i[c] - wa[c][w];
           const double u = dot<D>(dv, e_k);
-          const double p_id = -dummy_jump<D>(rho_i, wr_[k], da, e_k);
-          s += (2.0 * u + p_id * inv_rho0c0) * wdw_[k] * wvol[w];
+          const double p_id = -dummy_jump<D>(rho_i, wr[k], da, e_k);
+          s += (2.0 * u + p_id * inv_rho0c0) * wdw[k] * wvol[w];
         }
-        f.drho[i] = f.rho[i] * s;
-        f.rho[i] += f.drho[i] * half;
+        drho[i] = rho[i] * s;
+        rho[i] += drho[i] * half;
         // Acoustic criterion: max(c0 + |v|, sqrt(4 h |a|)).
         const double speed = std::sqrt(dot<D>(v_i, v_i)), acc = std::sqrt(dot<D>(a_i, a_i));
         return std::max(c0 + speed, std::sqrt(four_h * acc));

@@ -44,32 +44,41 @@ template <int D> void BasicSphFluid<D>::correction_matrices() {
   for (int c = 0; c < D; ++c) e[c] = pe_[c].data(), we[c] = we_[c].data();
   std::array<double*, S> b;
   for (int s = 0; s < S; ++s) b[s] = f.b[s]->data();
-  parallel_for(f.size(), [&](std::size_t i) {
+  const std::uint32_t *pstart = pstart_.data(), *pj = pj_.data();
+  const std::uint32_t *wstart = wstart_.data(), *wj = wj_.data();
+  const double *pdw = pdw_.data(), *pr = pr_.data(), *wdw = wdw_.data(), *wr = wr_.data();
+  const double *vol = f.vol.data(), *wvol = walls_.vol.data();
+  double* det_a = f.det_a.data();
+  // Everything by value: the loop reads no member through this and no array through a reference.
+  parallel_for(f.size(), [=](std::size_t i) {
     // A_i = -sum_j r_ij (x) grad W_ij V_j = -sum_j r dW e (x) e V_j (eq. 19), symmetric.
     double A[S] = {};
-    for (std::uint32_t k = pstart_[i]; k < pstart_[i + 1]; ++k) {
-      const double s = -pr_[k] * pdw_[k] * f.vol[pj_[k]];
-      for (int r = 0; r < D; ++r)
-        for (int c = r; c < D; ++c) A[sym<D>(r, c)] += s * e[r][k] * e[c][k];
+    for (std::uint32_t k = pstart[i]; k < pstart[i + 1]; ++k) {
+      const double s = -pr[k] * pdw[k] * vol[pj[k]];
+      FSI_UNROLL for (int r = 0; r < D; ++r) {
+        FSI_UNROLL for (int c = r; c < D; ++c) A[sym<D>(r, c)] += s * e[r][k] * e[c][k];
+      }
     }
-    for (std::uint32_t k = wstart_[i]; k < wstart_[i + 1]; ++k) {
-      const double s = -wr_[k] * wdw_[k] * walls_.vol[wj_[k]];
-      for (int r = 0; r < D; ++r)
-        for (int c = r; c < D; ++c) A[sym<D>(r, c)] += s * we[r][k] * we[c][k];
+    for (std::uint32_t k = wstart[i]; k < wstart[i + 1]; ++k) {
+      const double s = -wr[k] * wdw[k] * wvol[wj[k]];
+      FSI_UNROLL for (int r = 0; r < D; ++r) {
+        FSI_UNROLL for (int c = r; c < D; ++c) A[sym<D>(r, c)] += s * we[r][k] * we[c][k];
+      }
     }
     double det;
     if constexpr (D == 2) {
       det = A[0] * A[2] - A[1] * A[1];
     } else {
       MatD<D> a;
-      for (int r = 0; r < D; ++r)
-        for (int c = 0; c < D; ++c) a(r, c) = A[sym<D>(r, c)];
+      FSI_UNROLL for (int r = 0; r < D; ++r) {
+        FSI_UNROLL for (int c = 0; c < D; ++c) a(r, c) = A[sym<D>(r, c)];
+      }
       det = a.determinant();
     }
-    f.det_a[i] = det;
+    det_a[i] = det;
     double B[S];
-    for (int s = 0; s < S; ++s) B[s] = 0.0;
-    for (int c = 0; c < D; ++c) B[sym<D>(c, c)] = 1.0;
+    FSI_UNROLL for (int s = 0; s < S; ++s) B[s] = 0.0;
+    FSI_UNROLL for (int c = 0; c < D; ++c) B[sym<D>(c, c)] = 1.0;
     if (on) {
       double Binv[S];
       regularised_inverse<D>(A, Binv);
@@ -77,12 +86,13 @@ template <int D> void BasicSphFluid<D>::correction_matrices() {
       const double d = std::max(det, 0.0), kappa = std::max(alpha - d, 0.0);
       if (!(d + kappa <= 0.0)) { // else B = I
         const double w1 = d / (d + kappa), w2 = kappa / (d + kappa);
-        for (int r = 0; r < D; ++r)
-          for (int c = r; c < D; ++c)
-            B[sym<D>(r, c)] = r == c ? w1 * Binv[sym<D>(r, c)] + w2 : w1 * Binv[sym<D>(r, c)];
+        FSI_UNROLL for (int r = 0; r < D; ++r) {
+          FSI_UNROLL for (int c = r; c < D; ++c) B[sym<D>(r, c)] =
+              r == c ? w1 * Binv[sym<D>(r, c)] + w2 : w1 * Binv[sym<D>(r, c)];
+        }
       }
     }
-    for (int s = 0; s < S; ++s) b[s][i] = B[s];
+    FSI_UNROLL for (int s = 0; s < S; ++s) b[s][i] = B[s];
   });
 }
 
@@ -90,16 +100,16 @@ template <int D>
 auto BasicSphFluid<D>::rkgc_gradient(std::size_t i, const std::vector<double>& psi) const -> Vec {
   const auto& f = fluid_;
   double b_i[S];
-  for (int s = 0; s < S; ++s) b_i[s] = (*f.b[s])[i];
+  FSI_UNROLL for (int s = 0; s < S; ++s) b_i[s] = (*f.b[s])[i];
   Vec g = Vec::Zero();
   for (std::uint32_t k = pstart_[i]; k < pstart_[i + 1]; ++k) {
     const std::uint32_t j = pj_[k];
     const double dWV = pdw_[k] * f.vol[j];
     double gk[D], b_j[S];
-    for (int c = 0; c < D; ++c) gk[c] = dWV * pe_[c][k];
-    for (int s = 0; s < S; ++s) b_j[s] = (*f.b[s])[j];
-    for (int c = 0; c < D; ++c)
-      g[c] += psi[i] * sym_row<D>(b_j, c, gk) + psi[j] * sym_row<D>(b_i, c, gk);
+    FSI_UNROLL for (int c = 0; c < D; ++c) gk[c] = dWV * pe_[c][k];
+    FSI_UNROLL for (int s = 0; s < S; ++s) b_j[s] = (*f.b[s])[j];
+    FSI_UNROLL for (int c = 0; c < D; ++c) g[c] +=
+        psi[i] * sym_row<D>(b_j, c, gk) + psi[j] * sym_row<D>(b_i, c, gk);
   }
   return g;
 }
@@ -112,7 +122,7 @@ auto BasicSphFluid<D>::plain_difference_gradient(std::size_t i,
     const std::uint32_t j = pj_[k];
     const double s = (psi[j] - psi[i]) * pdw_[k] * fluid_.vol[j];
     Vec e;
-    for (int c = 0; c < D; ++c) e[c] = pe_[c][k];
+    FSI_UNROLL for (int c = 0; c < D; ++c) e[c] = pe_[c][k];
     g += s * e;
   }
   return g;
@@ -123,9 +133,9 @@ auto BasicSphFluid<D>::corrected_difference_gradient(std::size_t i,
                                                      const std::vector<double>& psi) const -> Vec {
   const Vec g = plain_difference_gradient(i, psi);
   double b_i[S];
-  for (int s = 0; s < S; ++s) b_i[s] = (*fluid_.b[s])[i];
+  FSI_UNROLL for (int s = 0; s < S; ++s) b_i[s] = (*fluid_.b[s])[i];
   Vec out;
-  for (int c = 0; c < D; ++c) out[c] = sym_row<D>(b_i, c, g);
+  FSI_UNROLL for (int c = 0; c < D; ++c) out[c] = sym_row<D>(b_i, c, g);
   return out;
 }
 

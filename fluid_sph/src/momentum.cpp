@@ -30,40 +30,47 @@ template <int D> void BasicSphFluid<D>::first_half(double dt) {
   const double rho0c0 = rho0 * options_.c0, inv_c0 = 1.0 / options_.c0, inv_m = 1.0 / mass_;
   const bool lim = options_.riemann_limiter;
   const double rho0c0_pairs = options_.pair_dissipation ? rho0c0 : 0.0;
-  const double *p = f.p.data(), *vol = f.vol.data(), *wvol = walls_.vol.data();
-  parallel_for(f.size(), [&](std::size_t i) {
+  const double *p = f.p.data(), *vol = f.vol.data(), *wvol = walls_.vol.data(), *rho = f.rho.data();
+  const std::uint32_t *pstart = pstart_.data(), *pj = pj_.data();
+  const std::uint32_t *wstart = wstart_.data(), *wj = wj_.data();
+  const double *pdw = pdw_.data(), *wdw = wdw_.data(), *wr = wr_.data();
+  std::array<const double*, D> we;
+  for (int c = 0; c < D; ++c) we[c] = we_[c].data();
+  // Everything by value: the loop reads no member through this and no array through a reference.
+  parallel_for(f.size(), [=](std::size_t i) {
     const double p_i = p[i];
     double v_i[D], b_i[S], F[D] = {};
-    for (int c = 0; c < D; ++c) v_i[c] = v[c][i];
-    for (int s = 0; s < S; ++s) b_i[s] = b[s][i];
-    for (std::uint32_t k = pstart_[i]; k < pstart_[i + 1]; ++k) {
-      const std::uint32_t j = pj_[k];
-      const double dWV = pdw_[k] * vol[j], p_j = p[j];
+    FSI_UNROLL for (int c = 0; c < D; ++c) v_i[c] = v[c][i];
+    FSI_UNROLL for (int s = 0; s < S; ++s) b_i[s] = b[s][i];
+    for (std::uint32_t k = pstart[i]; k < pstart[i + 1]; ++k) {
+      const std::uint32_t j = pj[k];
+      const double dWV = pdw[k] * vol[j], p_j = p[j];
       double g[D], b_j[S], dv[D], e_k[D];
-      for (int s = 0; s < S; ++s) b_j[s] = b[s][j];
-      for (int c = 0; c < D; ++c) e_k[c] = e[c][k], g[c] = dWV * e_k[c], dv[c] = v_i[c] - v[c][j];
+      FSI_UNROLL for (int s = 0; s < S; ++s) b_j[s] = b[s][j];
+      FSI_UNROLL for (int c = 0; c < D; ++c) e_k[c] = e[c][k], g[c] = dWV * e_k[c],
+                                             dv[c] = v_i[c] - v[c][j];
       // (p_i B_j + p_j B_i) grad W_ij V_j (eqs. 18, 20).
-      for (int c = 0; c < D; ++c) F[c] -= p_i * sym_row<D>(b_j, c, g) + p_j * sym_row<D>(b_i, c, g);
+      FSI_UNROLL for (int c = 0; c < D; ++c) F[c] -=
+          p_i * sym_row<D>(b_j, c, g) + p_j * sym_row<D>(b_i, c, g);
       // Riemann dissipation: -2 (P* - p_bar) grad W = beta rho0 c0 u grad W (eq. 5).
       const double u = dot<D>(dv, e_k);
       const double d = rho0c0_pairs * limiter(u, inv_c0, lim) * u;
-      for (int c = 0; c < D; ++c) F[c] += d * g[c];
+      FSI_UNROLL for (int c = 0; c < D; ++c) F[c] += d * g[c];
     }
     // Walls (eqs. 15-17): dummy pressure p_d = p_i + rho_i r max(0, (a_prior - a_w) . (-e_ia)).
-    const double rho_i = f.rho[i];
-    for (std::uint32_t k = wstart_[i]; k < wstart_[i + 1]; ++k) {
-      const std::uint32_t w = wj_[k];
-      WallPair<D> q{p_i, rho_i, wr_[k], {},     {},     wdw_[k] * wvol[w],
-                    b_i, {},    {},     rho0c0, inv_c0, lim};
-      for (int c = 0; c < D; ++c) {
-        q.da[c] = ap[c][i] - wa[c][w], q.e[c] = we_[c][k];
+    const double rho_i = rho[i];
+    for (std::uint32_t k = wstart[i]; k < wstart[i + 1]; ++k) {
+      const std::uint32_t w = wj[k];
+      WallPair<D> q{p_i, rho_i, wr[k], {}, {}, wdw[k] * wvol[w], b_i, {}, {}, rho0c0, inv_c0, lim};
+      FSI_UNROLL for (int c = 0; c < D; ++c) {
+        q.da[c] = ap[c][i] - wa[c][w], q.e[c] = we[c][k];
         q.dv[c] = v_i[c] - wv[c][w], q.n[c] = wn[c][w];
       }
       const auto t = wall_term(q);
-      for (int c = 0; c < D; ++c) F[c] += t[c];
+      FSI_UNROLL for (int c = 0; c < D; ++c) F[c] += t[c];
     }
     const double s = vol[i] * inv_m;
-    for (int c = 0; c < D; ++c) a[c][i] = F[c] * s + ap[c][i];
+    FSI_UNROLL for (int c = 0; c < D; ++c) a[c][i] = F[c] * s + ap[c][i];
   });
 }
 

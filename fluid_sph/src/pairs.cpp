@@ -21,7 +21,7 @@ inline void store_pair(std::uint32_t k, std::uint32_t j, const double* d, const 
                        std::vector<double>& dw, std::vector<double>& rs) {
   const double r = std::sqrt(dot<D>(d, d));
   js[k] = j;
-  for (int c = 0; c < D; ++c) e[c][k] = d[c] / r;
+  FSI_UNROLL for (int c = 0; c < D; ++c) e[c][k] = d[c] / r;
   dw[k] = kernel.dW(r);
   rs[k] = r;
 }
@@ -50,16 +50,16 @@ template <int D> void BasicSphFluid<D>::build_pairs(bool guard) {
   // d = x_i - x_j - s (the image shift s of a periodic neighbour) and |d|^2.
   const auto offset = [](const Vec& x_i, const double* x_j, const std::array<double, D>& s,
                          double* d) {
-    for (int c = 0; c < D; ++c) d[c] = x_i[c] - x_j[c] - s[c];
+    FSI_UNROLL for (int c = 0; c < D; ++c) d[c] = x_i[c] - x_j[c] - s[c];
     return dot<D>(d, d);
   };
   const auto at = [](const particles::Coords<D>& x, std::size_t j, double* out) {
-    for (int c = 0; c < D; ++c) out[c] = x[c][j];
+    FSI_UNROLL for (int c = 0; c < D; ++c) out[c] = x[c][j];
   };
   count_.resize(2 * n);
   parallel_for_balanced(n, [&](std::size_t i) {
     Vec x_i;
-    for (int c = 0; c < D; ++c) x_i[c] = xb[c][i];
+    FSI_UNROLL for (int c = 0; c < D; ++c) x_i[c] = xb[c][i];
     std::uint32_t c = 0, cw = 0;
     grid_.for_each_near(x_i, [&](std::uint32_t j, const std::array<double, D>& s) {
       double d[D], x_j[D];
@@ -117,7 +117,7 @@ template <int D> void BasicSphFluid<D>::build_pairs(bool guard) {
       n, none,
       [&](std::size_t i) {
         Vec x_i;
-        for (int c = 0; c < D; ++c) x_i[c] = xb[c][i];
+        FSI_UNROLL for (int c = 0; c < D; ++c) x_i[c] = xb[c][i];
         std::uint32_t k = pstart_[i];
         grid_.for_each_near(x_i, [&](std::uint32_t j, const std::array<double, D>& s) {
           double d[D], x_j[D];
@@ -144,7 +144,7 @@ template <int D> void BasicSphFluid<D>::build_pairs(bool guard) {
           if (wr_[k] > within) continue;
           const std::uint32_t a = wj_[k];
           double e_k[D], n_a[D];
-          for (int c = 0; c < D; ++c) e_k[c] = we_[c][k], n_a[c] = walls_.n[c][a];
+          FSI_UNROLL for (int c = 0; c < D; ++c) e_k[c] = we_[c][k], n_a[c] = walls_.n[c][a];
           const double sine = walls_.corner[a];
           const double p = wr_[k] * dot<D>(e_k, n_a) - walls_.depth[a];
           const double q = off_normal<D>(wr_[k], e_k, n_a);

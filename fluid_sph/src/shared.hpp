@@ -3,6 +3,7 @@
 // of messages and the D-component arithmetic of the pair loops, each written so that D = 2 is the
 // 2-D code's expression term by term (first term first: the 2-D results bitwise unchanged).
 #include "fsi/core/format.hpp"
+#include "fsi/core/unroll.hpp"
 
 #include <cmath>
 #include <cstddef>
@@ -27,14 +28,14 @@ template <int D> constexpr int sym(int r, int c) {
 /// a . b of D components: a_0 b_0 + a_1 b_1 (+ a_2 b_2).
 template <int D, class A, class B> inline double dot(const A& a, const B& b) {
   double s = a[0] * b[0];
-  for (int c = 1; c < D; ++c) s += a[c] * b[c];
+  FSI_UNROLL for (int c = 1; c < D; ++c) s += a[c] * b[c];
   return s;
 }
 
 /// Row r of the symmetric matrix b (upper triangle, sym) times g: sum_c b_rc g_c.
 template <int D, class G> inline double sym_row(const double* b, int r, const G& g) {
   double s = b[sym<D>(r, 0)] * g[0];
-  for (int c = 1; c < D; ++c) s += b[sym<D>(r, c)] * g[c];
+  FSI_UNROLL for (int c = 1; c < D; ++c) s += b[sym<D>(r, c)] * g[c];
   return s;
 }
 

@@ -18,24 +18,25 @@ template <int D> void BasicSphFluid<D>::transport_shift() {
     // Delta r_i = 0.2 h^2 (-sum_j (B_i + B_j) grad W_ij V_j - sum_a 2 B_i grad W_ia V_a)
     // (eq. 24 in the reference code's sign, method notes).
     double sum[D] = {}, b_i[S];
-    for (int s = 0; s < S; ++s) b_i[s] = b[s][i];
+    FSI_UNROLL for (int s = 0; s < S; ++s) b_i[s] = b[s][i];
     for (std::uint32_t k = pstart_[i]; k < pstart_[i + 1]; ++k) {
       const std::uint32_t j = pj_[k];
       double g[D], b_ij[S];
-      for (int c = 0; c < D; ++c) g[c] = pdw_[k] * f.vol[j] * pe_[c][k];
-      for (int s = 0; s < S; ++s) b_ij[s] = b_i[s] + b[s][j];
-      for (int c = 0; c < D; ++c) sum[c] += sym_row<D>(b_ij, c, g);
+      FSI_UNROLL for (int c = 0; c < D; ++c) g[c] = pdw_[k] * f.vol[j] * pe_[c][k];
+      FSI_UNROLL for (int s = 0; s < S; ++s) b_ij[s] = b_i[s] + b[s][j];
+      FSI_UNROLL for (int c = 0; c < D; ++c) sum[c] += sym_row<D>(b_ij, c, g);
     }
     for (std::uint32_t k = wstart_[i]; k < wstart_[i + 1]; ++k) {
       const double vw = walls_.vol[wj_[k]];
       double g[D];
-      for (int c = 0; c < D; ++c) g[c] = wdw_[k] * vw * we_[c][k];
-      for (int c = 0; c < D; ++c) sum[c] += 2.0 * sym_row<D>(b_i, c, g);
+      FSI_UNROLL for (int c = 0; c < D; ++c) g[c] = wdw_[k] * vw * we_[c][k];
+      FSI_UNROLL for (int c = 0; c < D; ++c) sum[c] += 2.0 * sym_row<D>(b_i, c, g);
     }
-    for (int c = 0; c < D; ++c) dx[D * i + static_cast<std::size_t>(c)] = -coefficient * sum[c];
+    FSI_UNROLL for (int c = 0; c < D; ++c) dx[D * i + static_cast<std::size_t>(c)] =
+        -coefficient * sum[c];
   });
   parallel_for(f.size(), [&](std::size_t i) {
-    for (int c = 0; c < D; ++c) f.x[c][i] += dx[D * i + static_cast<std::size_t>(c)];
+    FSI_UNROLL for (int c = 0; c < D; ++c) f.x[c][i] += dx[D * i + static_cast<std::size_t>(c)];
   });
 }
 

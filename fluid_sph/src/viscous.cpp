@@ -19,21 +19,21 @@ template <int D> void BasicSphFluid<D>::prior_acceleration() {
       // Viscous force 2 mu V_i sum_j V_j (v_i - v_j) dW / (r + 0.01 h) (eq. 3); no-slip walls
       // with the dummy velocity 2 v_w - v_i (eqs. 15, 17).
       double v_i[D];
-      for (int c = 0; c < D; ++c) v_i[c] = f.v[c][i];
+      FSI_UNROLL for (int c = 0; c < D; ++c) v_i[c] = f.v[c][i];
       for (std::uint32_t k = pstart_[i]; k < pstart_[i + 1]; ++k) {
         const std::uint32_t j = pj_[k];
         const double s = pdw_[k] * f.vol[j] / (pr_[k] + reg);
-        for (int c = 0; c < D; ++c) F[c] += (v_i[c] - f.v[c][j]) * s;
+        FSI_UNROLL for (int c = 0; c < D; ++c) F[c] += (v_i[c] - f.v[c][j]) * s;
       }
       for (std::uint32_t k = wstart_[i]; k < wstart_[i + 1]; ++k) {
         const std::uint32_t a = wj_[k];
         const double s = wall_viscous_weight(wdw_[k], walls_.vol[a], wr_[k], reg);
-        for (int c = 0; c < D; ++c) F[c] += (v_i[c] - walls_.v[c][a]) * s;
+        FSI_UNROLL for (int c = 0; c < D; ++c) F[c] += (v_i[c] - walls_.v[c][a]) * s;
       }
       const double scale = 2.0 * mu * f.vol[i] * inv_m;
-      for (int c = 0; c < D; ++c) F[c] *= scale;
+      FSI_UNROLL for (int c = 0; c < D; ++c) F[c] *= scale;
     }
-    for (int c = 0; c < D; ++c) f.ap[c][i] = g[c] + F[c];
+    FSI_UNROLL for (int c = 0; c < D; ++c) f.ap[c][i] = g[c] + F[c];
   });
   if (tracked_ < walls_.size()) wall_viscous_reaction();
 }
