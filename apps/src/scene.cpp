@@ -83,16 +83,18 @@ ProbeSpec read_probe(Section s) {
   p.line = s.line();
   p.key = s.path();
   p.name = s.text("name", "column name in probes.csv (letters, digits, _)");
-  p.quantity = s.choice("quantity", probe_quantities(), "",
-                        "what is sampled: a node's displacement; a node's displacement in the "
-                        "frame of the wall its structure is clamped to (clamped_motion: the "
-                        "rigid motion undone, x and y along the tank's axes); the surge front "
-                        "(largest x of particles with pnd >= n0/2, i.e. not spray); the pressure "
-                        "at a point (MPS-weighted mean within r_e); mean_pressure, the plain mean "
-                        "over the particles inside the box min..max; mean_speed and "
-                        "kinetic_energy (J per m of depth) of all particles; wall_force_x|y, "
-                        "the fluid's force on the coupled structure (on all walls without one), "
-                        "N/m, of the last step");
+  p.quantity =
+      s.choice("quantity", probe_quantities(), "",
+               "what is sampled: a node's displacement; a node's displacement in the "
+               "frame of the wall its structure is clamped to (clamped_motion: the "
+               "rigid motion undone, x and y along the tank's axes); the surge front "
+               "(largest x of particles with pnd >= n0/2, i.e. not spray); the pressure "
+               "at a point (MPS-weighted mean within r_e); mean_pressure, the plain mean "
+               "over the particles inside the box min..max; mean_speed and "
+               "kinetic_energy (J per m of depth; 3-D: J) of all particles; velocity_x|y|z, "
+               "the kernel-weighted velocity at a point (type sph); wall_force_x|y, "
+               "the fluid's force on the coupled structure (on all walls without one), "
+               "N/m, of the last step");
   p.structure = s.text("structure", "", "structure name, for displacement probes");
   p.node = s.optional_integer("node", Range::non_negative(), "FE node index (or give point)");
   const std::string point_doc = "reference position of the FE node or the TL-SPH point, or the "
@@ -124,9 +126,11 @@ ProbeSpec read_probe(Section s) {
     if (on_structure && p.structure.empty()) s.fail("structure", "required key missing");
     if (p.interpolate && !on_structure)
       s.fail("interpolate", "only a structure's displacement probes interpolate");
-    if (p.quantity == "displacement_z" && s.context().dimension != 3)
-      s.fail("quantity", "displacement_z needs a 3-D scene (dimension: 3)");
-    if (p.quantity == "pressure" && !p.point) s.fail("point", "required key missing");
+    if ((p.quantity == "displacement_z" || p.quantity == "velocity_z") &&
+        s.context().dimension != 3)
+      s.fail("quantity", p.quantity + " needs a 3-D scene (dimension: 3)");
+    const bool at_point = p.quantity == "pressure" || p.quantity.starts_with("velocity_");
+    if (at_point && !p.point && !p.point3) s.fail("point", "required key missing");
     if (p.quantity == "mean_pressure") {
       if (!p.box_min) s.fail("min", "required key missing");
       if (!p.box_max) s.fail("max", "required key missing");
@@ -406,7 +410,8 @@ void read_solver_block(Section& s, const std::vector<Plugin>& plugins, Block& bl
 int read_dimension(Section& top) {
   return top.integer("dimension", 2, Range::closed(2, 3),
                      "2 or 3: every point and vector of the scene has this many coordinates; "
-                     "3 takes structures only (type fem, T10 elements) for now");
+                     "3 takes structures of type fem (T10 elements) or a fluid of type sph "
+                     "(boxes in an open box tank), not yet both");
 }
 
 Scene read_scene(Section top) {
@@ -424,8 +429,6 @@ Scene read_scene(Section top) {
   scene.output = read_output(top.required_block("output", "what is written, and how often"),
                              scene.time.end, probe_sections);
   auto fluid_section = top.block("fluid", "the fluid; absent: no fluid");
-  if (fluid_section && scene.dimension == 3)
-    top.fail("fluid", "3-D fluids are not yet available (dimension: 3 takes structures only)");
   if (fluid_section) {
     scene.fluid.emplace();
     read_solver_block(*fluid_section, fluid_plugins(), *scene.fluid, "fluid");
@@ -433,10 +436,13 @@ Scene read_scene(Section top) {
   }
   for (auto& w : top.list("walls", "polygon walls (ERP), static or with prescribed motion")) {
     if (scene.dimension == 3)
-      top.fail("walls", "3-D walls are not yet available (dimension: 3 takes structures only)");
+      top.fail("walls", "3-D wall polylines are not yet available (a 3-D SPH fluid takes "
+                        "fluid.tank)");
     scene.walls.push_back(read_wall(w));
   }
   auto structure_sections = top.list("structures", "the structures");
+  if (scene.dimension == 3 && scene.fluid && !structure_sections.empty())
+    top.fail("structures", "a structure beside a 3-D fluid (coupled) is not yet available");
   for (auto& st : structure_sections) {
     StructureBlock& b = scene.structures.emplace_back();
     b.key = st.path();
@@ -524,9 +530,11 @@ std::string scene_reference() {
       << "What does not translate (FE `loads`, a slanted clamped side, a TL-SPH polygon) is an\n"
       << "error naming the key (apps/solvers/structure_geometry.hpp).\n\n"
       << "A scene of `dimension: 3` reads every point and vector as [x, y, z] (y up, as in 2-D)\n"
-      << "and takes structures of type fem only (T10 elements; mesh kind box or gmsh, linear\n"
-      << "solver cholmod by default, no `plane`, loads on faces as a total force or a pressure);\n"
-      << "a fluid, walls or a TL-SPH structure in 3-D are refused for now.\n\n"
+      << "and takes structures of type fem (T10 elements; mesh kind box or gmsh, linear\n"
+      << "solver cholmod by default, no `plane`, loads on faces as a total force or a pressure)\n"
+      << "or a fluid of type sph (`regions` and `domain` as boxes `{min, max}` in [x, y, z], the\n"
+      << "walls an open box tank `fluid.tank`); not yet both together, nor wall polylines, the\n"
+      << "sph `inflow` and `interface_*` keys, another fluid type or a TL-SPH structure.\n\n"
       << "| key | type | default | allowed | meaning |\n|---|---|---|---|---|\n";
   for (const auto& k : *ctx.collector)
     out << "| `" << k.path << "` | " << k.type << " | " << k.fallback << " | " << k.range << " | "

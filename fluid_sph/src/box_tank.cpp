@@ -30,16 +30,20 @@ std::vector<Vec3> fill_box(const Vec3& lo, const Vec3& hi, double dp) {
   return out;
 }
 
-std::vector<WallPoint3> box_walls(const Vec3& lo, const Vec3& hi, double dp, int layers) {
-  if (!(dp > 0.0) || layers < 1 || !((hi - lo).minCoeff() > 0.0))
-    throw InputError("fluid_sph: box_walls needs dp > 0, layers >= 1 and hi > lo");
+std::vector<WallPoint3> box_walls(const Vec3& lo, const Vec3& hi, double dp, int layers, int open) {
+  if (!(dp > 0.0) || layers < 1 || !((hi - lo).minCoeff() > 0.0) || open < 0 || open > 2)
+    throw InputError("fluid_sph: box_walls needs dp > 0, layers >= 1, hi > lo and open in 0-2");
   const double depth = layers * dp;
-  const long ni = layers_in(lo.x(), hi.x(), dp), nj = layers_in(lo.y(), hi.y(), dp),
-             nk = layers_in(lo.z(), hi.z(), dp);
+  // Lattice index ranges: `layers` beyond both faces, none beyond the open one.
+  long first[3], last[3];
+  for (int c = 0; c < 3; ++c) {
+    first[c] = -layers;
+    last[c] = layers_in(lo[c], hi[c], dp) + (c == open ? 0 : layers);
+  }
   std::vector<WallPoint3> out;
-  for (long k = -layers; k < nk; ++k)
-    for (long j = -layers; j < nj + layers; ++j)
-      for (long i = -layers; i < ni + layers; ++i) {
+  for (long k = first[2]; k < last[2]; ++k)
+    for (long j = first[1]; j < last[1]; ++j)
+      for (long i = first[0]; i < last[0]; ++i) {
         const Vec3 q = lo + dp * Vec3(static_cast<double>(i) + 0.5, static_cast<double>(j) + 0.5,
                                       static_cast<double>(k) + 0.5);
         // The nearest point of the tank's solid outside: q clamped into [lo, hi] (no lid).

@@ -36,9 +36,10 @@ template <int D> auto BasicSphFluid<D>::momentum() const -> Vec {
   return mass_ * m;
 }
 
-template <int D> double BasicSphFluid<D>::pressure_at(const Vec& point) const {
-  double sw = 0.0, swp = 0.0;
-  const double c2 = options_.c0 * options_.c0;
+template <int D>
+template <class Value>
+double BasicSphFluid<D>::shepard(const Vec& point, Value value) const {
+  double sw = 0.0, swv = 0.0;
   const Vec period = options_.domain_max - options_.domain_min;
   const std::array<bool, D> periodic = options_.periodic();
   for (std::size_t i = 0; i < fluid_.size(); ++i) {
@@ -49,9 +50,20 @@ template <int D> double BasicSphFluid<D>::pressure_at(const Vec& point) const {
     }
     const double w = kernel_.W(std::sqrt(dot<D>(d, d))) * fluid_.vol[i];
     sw += w;
-    swp += w * c2 * (fluid_.rho[i] - options_.rho0);
+    swv += w * value(i);
   }
-  return sw > 0.0 ? swp / sw : 0.0;
+  return sw > 0.0 ? swv / sw : 0.0;
+}
+
+template <int D> double BasicSphFluid<D>::pressure_at(const Vec& point) const {
+  const double c2 = options_.c0 * options_.c0;
+  return shepard(point, [&](std::size_t i) { return c2 * (fluid_.rho[i] - options_.rho0); });
+}
+
+template <int D> auto BasicSphFluid<D>::velocity_at(const Vec& point) const -> Vec {
+  Vec v;
+  for (int c = 0; c < D; ++c) v[c] = shepard(point, [&](std::size_t i) { return fluid_.v[c][i]; });
+  return v;
 }
 
 template <int D> double BasicSphFluid<D>::surge_front() const {
@@ -74,6 +86,8 @@ template auto BasicSphFluid<2>::momentum() const -> Vec;
 template auto BasicSphFluid<3>::momentum() const -> Vec;
 template double BasicSphFluid<2>::pressure_at(const Vec&) const;
 template double BasicSphFluid<3>::pressure_at(const Vec&) const;
+template auto BasicSphFluid<2>::velocity_at(const Vec&) const -> Vec;
+template auto BasicSphFluid<3>::velocity_at(const Vec&) const -> Vec;
 template double BasicSphFluid<2>::surge_front() const;
 template double BasicSphFluid<3>::surge_front() const;
 

@@ -9,7 +9,7 @@
 
 namespace fsi::sph {
 
-void visit_options(SphOptions& o, OptionVisitor& v) {
+template <int D> void visit_options(BasicSphOptions<D>& o, OptionVisitor& v) {
   particles::visit_fluid_keys(o.rho0, o.viscosity, o.dp, o.c0, o.damping_time, v);
   v.real("h_over_dp", o.h_over_dp, Range::closed(1.0, 2.0),
          "smoothing length h / dp (Wendland C2, support 2h)");
@@ -45,6 +45,9 @@ void visit_options(SphOptions& o, OptionVisitor& v) {
          "> 0: every acoustic step is fixed_dt, s, and the advection step Dt a whole number of "
          "them (a hydrostatic case); 0: both steps by the dual criteria");
 }
+
+template void visit_options<2>(SphOptions&, OptionVisitor&);
+template void visit_options<3>(SphOptions3&, OptionVisitor&);
 
 std::string to_string(Correction c) {
   return c == Correction::none ? "none" : "rkgc";

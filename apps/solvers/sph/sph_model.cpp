@@ -275,6 +275,8 @@ std::optional<double> SphModel::probe(const ProbeSpec& probe) const {
   const sph::FluidParticles& p = fluid_->particles();
   if (probe.quantity == "surge_front") return fluid_->surge_front();
   if (probe.quantity == "pressure") return fluid_->pressure_at(*probe.point);
+  if (probe.quantity == "velocity_x") return fluid_->velocity_at(*probe.point).x();
+  if (probe.quantity == "velocity_y") return fluid_->velocity_at(*probe.point).y();
   if (probe.quantity == "kinetic_energy") return fluid_->kinetic_energy(); // J per m of depth
   if (probe.quantity == "mean_speed") {
     double speeds = 0.0;

@@ -3,6 +3,7 @@
 #include "sph/sph_plugin.hpp"
 
 #include "sph/sph_model.hpp"
+#include "sph/sph_model3.hpp"
 
 #include "fsi/core/error.hpp"
 #include "fsi_app/fluid_regions.hpp"
@@ -14,6 +15,7 @@ namespace {
 // Against the scene: the regions and the fluid probes lie in the domain (given or derived), a
 // wall_force probe gives the total only.
 void check(const Scene& scene, Section& s, std::vector<Section>& probes) {
+  if (scene.dimension == 3) return check3(scene, s, probes);
   const SphSpec& f = scene.fluid->as<SphSpec>();
   const sph::SphOptions o = sph_options(scene);
   check_in_domain(scene, s, probes, f.area, {o.domain_min, o.domain_max});
@@ -33,6 +35,7 @@ void check(const Scene& scene, Section& s, std::vector<Section>& probes) {
 // for iterative coupling), about 21 pairs of 36 B (index, e_ij, dW_ij, r_ij), the cell grid's
 // 8 B, sort scratch 8 B and output buffers 32 B; the walls are not counted (a few % more).
 Footprint footprint(const Scene& scene) {
+  if (scene.dimension == 3) return footprint3(scene);
   const SphSpec& f = scene.fluid->as<SphSpec>();
   const sph::SphOptions o = sph_options(scene);
   const auto particles = static_cast<double>(sph::FluidParticles().fields.bytes_per_particle());
@@ -43,6 +46,7 @@ Footprint footprint(const Scene& scene) {
 // The options the fluid accepts, the interfaces' boundary points, the regions filled.
 void validate(const Scene& scene, const std::vector<InterfaceMesh>& interfaces,
               const std::vector<Polygon>& solid) {
+  if (scene.dimension == 3) return validate3(scene);
   const SphSpec& f = scene.fluid->as<SphSpec>();
   try {
     sph_options(scene).validate();
@@ -58,16 +62,20 @@ void validate(const Scene& scene, const std::vector<InterfaceMesh>& interfaces,
 } // namespace
 
 FluidPlugin plugin() {
-  return {
-      "sph",
-      "weakly compressible Riemann-SPH with RKGC, dual-criteria steps (RKGC paper)",
-      read_sph,
-      check,
-      make_fluid_part<SphModel>,
-      validate,
-      footprint,
-      {"velocity", "pressure", "density", "wkgc_indicator"},
-      {"surge_front", "pressure", "kinetic_energy", "mean_speed", "wall_force_x", "wall_force_y"}};
+  return {"sph",
+          "weakly compressible Riemann-SPH with RKGC, dual-criteria steps (RKGC paper)",
+          read_sph,
+          check,
+          [](const Scene& scene, const std::vector<InterfaceMesh>& interfaces,
+             const std::vector<Polygon>& solid) -> std::unique_ptr<FluidPart> {
+            if (scene.dimension == 3) return std::make_unique<SphModel3>(scene);
+            return make_fluid_part<SphModel>(scene, interfaces, solid);
+          },
+          validate,
+          footprint,
+          {"velocity", "pressure", "density", "wkgc_indicator"},
+          {"surge_front", "pressure", "velocity_x", "velocity_y", "velocity_z", "kinetic_energy",
+           "mean_speed", "wall_force_x", "wall_force_y"}};
 }
 
 } // namespace fsi::app::sph_plugin

@@ -26,6 +26,11 @@ void refuse_foreign_keys(Section& s) {
 std::shared_ptr<const SolverSpec> read_sph(Section& s) {
   const bool doc = s.context().documenting();
   if (!doc) refuse_foreign_keys(s);
+  if (!doc && s.context().dimension == 3) return read_sph3(s);
+  if (doc)
+    read_tank(s);
+  else if (s.has("tank"))
+    s.fail("tank", "is a key of 3-D scenes (dimension: 3); in 2-D the tank is a wall polyline");
   auto spec = std::make_shared<SphSpec>();
   SphSpec& f = *spec;
   OptionReader reader(s);

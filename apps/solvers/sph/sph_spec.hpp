@@ -8,6 +8,7 @@
 #include "fsi_app/scene_reader.hpp"
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,8 +22,29 @@ struct SphSpec final : SolverSpec {
   ParticleArea area; ///< without a domain: walls and regions with a margin of 8 l0
 };
 
-/// Reads the keys of the fluid block (type excepted) into an SphSpec. A key of another fluid
-/// type is an error naming it and that type.
+/// An axis-aligned box [min, max], m, and the line of its block.
+struct Box3 {
+  Vec3 min = Vec3::Zero(), max = Vec3::Zero();
+  int line = 0;
+};
+
+/// The fluid block of a 3-D scene (dimension: 3): boxes of water in an open box tank (y up).
+struct SphSpec3 final : SolverSpec {
+  sph::SphOptions3 options;   ///< the same keys as in 2-D (visit_options)
+  std::optional<Box3> tank;   ///< the tank's inside, open at max.y; absent: no walls
+  std::vector<Box3> regions;  ///< boxes filled at spacing l0 (l0/2 from their faces)
+  std::optional<Box3> domain; ///< particles leaving it are removed; absent: tank and regions
+};
+
+/// Reads the keys of the fluid block (type excepted) into an SphSpec (in a 3-D scene, an
+/// SphSpec3). A key of another fluid type is an error naming it and that type.
 std::shared_ptr<const SolverSpec> read_sph(Section& s);
+
+/// The 3-D block's own keys (tank, regions and domain as boxes); the 2-D-only keys (inflow,
+/// interface_*) are refused by name. sph_scene3.cpp.
+std::shared_ptr<const SolverSpec> read_sph3(Section& s);
+
+/// The `tank` block: documented in either dimension, read in 3-D.
+std::optional<Box3> read_tank(Section& s);
 
 } // namespace fsi::app::sph_plugin

@@ -110,7 +110,9 @@ using SphOptions3 = BasicSphOptions<3>;
 std::string to_string(Correction c);
 
 /// The keys a user sets, each once (density, l0 and sound_speed are required;
-/// fsi/core/options.hpp).
-void visit_options(SphOptions& options, OptionVisitor& visitor);
+/// fsi/core/options.hpp), the same in 2-D and 3-D.
+template <int D> void visit_options(BasicSphOptions<D>& options, OptionVisitor& visitor);
+extern template void visit_options<2>(SphOptions&, OptionVisitor&);
+extern template void visit_options<3>(SphOptions3&, OptionVisitor&);
 
 } // namespace fsi::sph

@@ -212,6 +212,8 @@ public:
   Vec momentum() const;
   /// Kernel-weighted (Shepard) pressure at a point, from the fluid particles within 2h; 0 if none.
   double pressure_at(const Vec& point) const;
+  /// Kernel-weighted (Shepard) velocity at a point, as pressure_at; 0 if no particle is near.
+  Vec velocity_at(const Vec& point) const;
   /// Largest x of the bulk fluid (neighbours' kernel sum >= half the lattice's, W(0) left out
   /// as MPS's pnd leaves out i): the surge front of a dam break.
   double surge_front() const;
@@ -259,6 +261,9 @@ private:
   void reinitialise_density();
   /// sum_j W_ij over fluid i's fluid and wall neighbours and itself, at the last list build.
   double kernel_sum(std::size_t i) const;
+  /// sum_i W(point - x_i) V_i value(i) / sum_i W(point - x_i) V_i over the fluid particles (the
+  /// periodic image nearest), 0 if none is within 2h: the probes' Shepard mean.
+  template <class Value> double shepard(const Vec& point, Value value) const;
   void correction_matrices();
   void prior_acceleration();
   void transport_shift();
@@ -305,9 +310,11 @@ std::vector<Vec2> fill_rectangle(const Vec2& lo, const Vec2& hi, double dp);
 /// Lattice points lo + (i + 1/2, j + 1/2, k + 1/2) dp inside the box [lo, hi].
 std::vector<Vec3> fill_box(const Vec3& lo, const Vec3& hi, double dp);
 /// The dummies of an open box tank [lo, hi] (no lid): the lattice points lo + (i + 1/2) dp within
-/// `layers` dp outside its floor and four sides, below hi.z, with the normal of the nearest face
-/// (on an edge or corner the normalised sum of the faces' normals, as at a polyline's vertex) and
-/// the depth behind the nearest feature along it.
-std::vector<WallPoint3> box_walls(const Vec3& lo, const Vec3& hi, double dp, int layers = 4);
+/// `layers` dp outside its floor and four sides, below hi along the open axis, with the normal of
+/// the nearest face (on an edge or corner the normalised sum of the faces' normals, as at a
+/// polyline's vertex) and the depth behind the nearest feature along it. `open`: the axis whose hi
+/// face is open (2: z, 1: y for a scene's tank, y up).
+std::vector<WallPoint3> box_walls(const Vec3& lo, const Vec3& hi, double dp, int layers = 4,
+                                  int open = 2);
 
 } // namespace fsi::sph

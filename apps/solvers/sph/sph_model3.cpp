@@ -1,0 +1,206 @@
+#include "sph/sph_model3.hpp"
+
+#include "fsi/core/error.hpp"
+#include "fsi/core/format.hpp"
+#include "fsi/core/state_archive.hpp"
+
+#include <cmath>
+#include <limits>
+
+namespace fsi::app::sph_plugin {
+
+namespace {
+
+bool inside(const Vec3& p, const Vec3& lo, const Vec3& hi) {
+  return (p - lo).minCoeff() >= 0.0 && (hi - p).minCoeff() >= 0.0;
+}
+
+// The box around the tank and the regions.
+std::pair<Vec3, Vec3> bounds(const SphSpec3& f) {
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  if (f.tank) lo = f.tank->min, hi = f.tank->max;
+  for (const Box3& r : f.regions) lo = lo.cwiseMin(r.min), hi = hi.cwiseMax(r.max);
+  return {lo, hi};
+}
+
+bool velocity_probe(const std::string& q) {
+  return q == "velocity_x" || q == "velocity_y" || q == "velocity_z";
+}
+
+} // namespace
+
+sph::SphOptions3 sph_options3(const Scene& scene) {
+  const SphSpec3& f = scene.fluid->as<SphSpec3>();
+  sph::SphOptions3 o = f.options;
+  o.gravity = scene.gravity3;
+  if (f.domain) {
+    o.domain_min = f.domain->min, o.domain_max = f.domain->max;
+  } else {
+    const auto [lo, hi] = bounds(f);
+    o.domain_min = lo - Vec3::Constant(8.0 * o.dp), o.domain_max = hi + Vec3::Constant(8.0 * o.dp);
+  }
+  return o;
+}
+
+std::vector<Vec3> fill_regions3(const SphSpec3& f) {
+  std::vector<Vec3> out;
+  for (std::size_t i = 0; i < f.regions.size(); ++i)
+    for (const Vec3& p : sph::fill_box(f.regions[i].min, f.regions[i].max, f.options.dp)) {
+      bool earlier = false;
+      for (std::size_t j = 0; j < i; ++j)
+        earlier = earlier || inside(p, f.regions[j].min, f.regions[j].max);
+      if (!earlier) out.push_back(p);
+    }
+  return out;
+}
+
+void check3(const Scene& scene, Section& s, std::vector<Section>& probes) {
+  const SphSpec3& f = scene.fluid->as<SphSpec3>();
+  const sph::SphOptions3 o = sph_options3(scene);
+  for (std::size_t i = 0; i < f.regions.size(); ++i) {
+    const Box3& r = f.regions[i];
+    if (!inside(r.min, o.domain_min, o.domain_max) || !inside(r.max, o.domain_min, o.domain_max))
+      s.fail("domain", "fluid region " + std::to_string(i) + " reaches outside the domain");
+    if (f.tank &&
+        (!inside(r.min, f.tank->min, f.tank->max) || !inside(r.max, f.tank->min, f.tank->max)))
+      s.fail("regions", "fluid region " + std::to_string(i) + " reaches outside the tank");
+  }
+  for (std::size_t i = 0; i < scene.output.probes.size(); ++i) {
+    const ProbeSpec& p = scene.output.probes[i];
+    if (p.quantity == "wall_force_x" || p.quantity == "wall_force_y")
+      probes[i].fail("quantity", p.quantity + " is not yet available in a 3-D scene");
+    if (p.point3 && !inside(*p.point3, o.domain_min, o.domain_max))
+      probes[i].fail("point", "the point is outside the fluid domain");
+  }
+  try {
+    o.validate();
+  } catch (const InputError& e) {
+    s.fail("", e.what());
+  }
+}
+
+// Per fluid particle as in 2-D (sph_plugin.cpp) with 3-D pairs: about 74 of 44 B (index, e_ij,
+// dW_ij, r_ij), the particles twice, grid 8 B, sort 8 B, output 56 B; the tank's dummies not
+// counted.
+Footprint footprint3(const Scene& scene) {
+  const SphSpec3& f = scene.fluid->as<SphSpec3>();
+  const sph::SphOptions3 o = sph_options3(scene);
+  const auto particle =
+      static_cast<double>(sph::BasicFluidParticles<3>().fields.bytes_per_particle());
+  Footprint e;
+  for (const Box3& r : f.regions) e.count += (r.max - r.min).prod() / std::pow(o.dp, 3);
+  double cells = 1.0;
+  for (int c = 0; c < 3; ++c)
+    cells *= std::ceil((o.domain_max[c] - o.domain_min[c]) / (2.0 * o.h())) + 2.0;
+  e.bytes = e.count * (2 * particle + 74 * 44 + 8 + 8 + 56) + cells * 8.0;
+  e.key = "l0";
+  e.counts = significant(e.count, 3) + " particles (fluid region volume / l0^3) and " +
+             significant(cells, 3) + " cells";
+  if (e.count > std::numeric_limits<std::uint32_t>::max())
+    e.overflows.emplace_back("l0", significant(e.count, 3) +
+                                       " particles: more than the 2^32 particle indices hold");
+  if (cells > std::numeric_limits<int>::max())
+    e.overflows.emplace_back("l0", significant(cells, 3) +
+                                       " cells over the fluid domain: more than 2^31");
+  return e;
+}
+
+void validate3(const Scene& scene) {
+  const SphSpec3& f = scene.fluid->as<SphSpec3>();
+  try {
+    sph_options3(scene).validate();
+  } catch (const InputError& e) {
+    fail_at(scene, scene.fluid->line, "fluid", e.what());
+  }
+  if (fill_regions3(f).empty())
+    fail_at(scene, f.regions.front().line, "fluid.regions", "no particle fits the regions");
+}
+
+SphModel3::SphModel3(const Scene& scene) {
+  const SphSpec3& f = scene.fluid->as<SphSpec3>();
+  validate3(scene);
+  const std::vector<Vec3> positions = fill_regions3(f);
+  initial_count_ = positions.size();
+  const std::vector<sph::WallPoint3> walls =
+      f.tank ? sph::box_walls(f.tank->min, f.tank->max, f.options.dp, 4, 1)
+             : std::vector<sph::WallPoint3>{};
+  try {
+    fluid_ = std::make_unique<sph::SphFluid3>(sph_options3(scene), positions, walls);
+  } catch (const InputError& e) {
+    fail_at(scene, scene.fluid->line, "fluid", e.what());
+  }
+}
+
+SphModel3::~SphModel3() = default;
+
+coupling::FluidSolver& SphModel3::coupling_solver() {
+  throw RunError("fluid_sph: a 3-D fluid is not coupled to structures (not yet available)");
+}
+
+void SphModel3::advance(double time, double dt) {
+  fluid_->advance_to(time + dt);
+}
+
+std::optional<double> SphModel3::stable_dt(double) const {
+  return fluid_->advection_dt();
+}
+
+void SphModel3::write_frame(FieldsFile& file, const std::vector<std::string>& fields) const {
+  const auto& p = fluid_->particles();
+  const std::size_t n = p.size();
+  xyz_.resize(3 * n);
+  v_.resize(3 * n);
+  for (std::size_t i = 0; i < n; ++i)
+    for (int c = 0; c < 3; ++c) xyz_[3 * i + c] = p.x[c][i], v_[3 * i + c] = p.v[c][i];
+  file.write_grid("particles", xyz_,
+                  select_fields(fields, {{"velocity", 3, v_.data()},
+                                         {"pressure", 1, p.p.data()},
+                                         {"density", 1, p.rho.data()},
+                                         {"wkgc_indicator", 1, p.det_a.data()}}),
+                  3);
+}
+
+std::optional<double> SphModel3::probe(const ProbeSpec& probe) const {
+  const auto& p = fluid_->particles();
+  if (probe.quantity == "surge_front") return fluid_->surge_front();
+  if (probe.quantity == "pressure") return fluid_->pressure_at(*probe.point3);
+  if (velocity_probe(probe.quantity))
+    return fluid_->velocity_at(*probe.point3)[probe.quantity.back() - 'x'];
+  if (probe.quantity == "kinetic_energy") return fluid_->kinetic_energy(); // J
+  if (probe.quantity == "mean_speed") {
+    double speeds = 0.0;
+    for (std::size_t i = 0; i < p.size(); ++i)
+      speeds += std::sqrt(p.v[0][i] * p.v[0][i] + p.v[1][i] * p.v[1][i] + p.v[2][i] * p.v[2][i]);
+    return p.size() ? speeds / static_cast<double>(p.size()) : 0.0;
+  }
+  return std::nullopt;
+}
+
+void SphModel3::report(JsonObject& run) const {
+  JsonObject f;
+  f.add("particles_initial", static_cast<long long>(initial_count_))
+      .add("particles", static_cast<long long>(fluid_->particles().size()))
+      .add("removed_particles", static_cast<long long>(fluid_->removed()))
+      .add("wall_particles", static_cast<long long>(fluid_->walls().size()))
+      .add("mean_neighbours", fluid_->mean_neighbours())
+      .add("acoustic_steps", static_cast<long long>(fluid_->steps()))
+      .add("advection_steps", static_cast<long long>(fluid_->advection_steps()));
+  run.add("fluid", f);
+}
+
+// The particle-loss guard's domain is 2-D: its x and y extent (the message's).
+std::optional<ParticleCount> SphModel3::particle_count() const {
+  const auto& o = fluid_->options();
+  return ParticleCount{fluid_->particles().size(),
+                       {o.domain_min.head<2>(), o.domain_max.head<2>()}};
+}
+
+void SphModel3::write_state(StateArchive& archive) const {
+  fluid_->write_state(archive, "fluid/");
+}
+
+void SphModel3::read_state(const StateArchive& archive) {
+  fluid_->read_state(archive, "fluid/");
+}
+
+} // namespace fsi::app::sph_plugin
