@@ -406,7 +406,8 @@ void read_solver_block(Section& s, const std::vector<Plugin>& plugins, Block& bl
 int read_dimension(Section& top) {
   return top.integer("dimension", 2, Range::closed(2, 3),
                      "2 or 3: every point and vector of the scene has this many coordinates; "
-                     "3 takes structures only (type fem, T10 elements) for now");
+                     "3 takes structures only (type fem, T10 elements; type tlsph, a box of "
+                     "particles) for now");
 }
 
 Scene read_scene(Section top) {
@@ -524,9 +525,11 @@ std::string scene_reference() {
       << "What does not translate (FE `loads`, a slanted clamped side, a TL-SPH polygon) is an\n"
       << "error naming the key (apps/solvers/structure_geometry.hpp).\n\n"
       << "A scene of `dimension: 3` reads every point and vector as [x, y, z] (y up, as in 2-D)\n"
-      << "and takes structures of type fem only (T10 elements; mesh kind box or gmsh, linear\n"
-      << "solver cholmod by default, no `plane`, loads on faces as a total force or a pressure);\n"
-      << "a fluid, walls or a TL-SPH structure in 3-D are refused for now.\n\n"
+      << "and takes structures only: type fem (T10 elements; mesh kind box or gmsh, linear\n"
+      << "solver cholmod by default, no `plane`, loads on faces as a total force or a pressure)\n"
+      << "or tlsph (a box `region: {min, max}` of particles, fixed clamped boxes; an FE box\n"
+      << "mesh is read as that box, its clamped sides continued 4 rows outwards as in 2-D; no\n"
+      << "polygon, Gmsh region or interface); a fluid or walls in 3-D are refused for now.\n\n"
       << "| key | type | default | allowed | meaning |\n|---|---|---|---|---|\n";
   for (const auto& k : *ctx.collector)
     out << "| `" << k.path << "` | " << k.type << " | " << k.fallback << " | " << k.range << " | "
