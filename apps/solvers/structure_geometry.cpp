@@ -1,5 +1,6 @@
 #include "structure_geometry.hpp"
 
+#include "fem/fem_model_t10.hpp"
 #include "fem/fem_spec.hpp"
 #include "fsi/core/error.hpp"
 #include "fsi_app/solver_plugin.hpp"
@@ -47,6 +48,14 @@ YAML::Node point(const Vec2& p) {
   YAML::Node n(YAML::NodeType::Sequence);
   n.push_back(p.x());
   n.push_back(p.y());
+  return n;
+}
+
+YAML::Node point3(const Vec3& p) {
+  YAML::Node n(YAML::NodeType::Sequence);
+  n.push_back(p.x());
+  n.push_back(p.y());
+  n.push_back(p.z());
   return n;
 }
 
@@ -144,12 +153,67 @@ Outline outline_of(const fem_plugin::MeshSpec& m, const Section& fe) {
   }
 }
 
+// The TL-SPH dp: the entry's, or the mesh's node spacing (then added as a key).
+double particle_spacing(const YAML::Node& entry, double mesh_spacing, int mesh_line,
+                        std::vector<KeyValue>& added) {
+  int dp_line = 0;
+  double dp = mesh_spacing;
+  const YAML::Node dp_given = given(entry, "tlsph", "dp", dp_line);
+  if (!dp_given.IsDefined())
+    added.emplace_back(key_at("dp", mesh_line), dp);
+  else if (!YAML::convert<double>::decode(dp_given, dp) || !(dp > 0.0))
+    dp = mesh_spacing; // the TL-SPH reader names the bad dp
+  return dp;
+}
+
+// 3-D: the T10 box as a TL-SPH box (nodes dp apart), each clamped side continued outwards by
+// kClampRows dp into a clamped box spanning the region across.
+std::vector<KeyValue> box_region(const YAML::Node& entry, const fem_plugin::StructureSpec& fe,
+                                 const Section& fe_keys, int mesh_line) {
+  const fem_plugin::MeshSpec& m = fe.mesh;
+  if (m.kind != "box")
+    fe_keys.fail("mesh", "a Gmsh T10 mesh does not translate to a 3-D TL-SPH solid (a box does; "
+                         "or give the TL-SPH region in a tlsph block)");
+  const Vec3 size(m.width, m.height, m.depth);
+  const Vec3 cells(m.elements_x, m.elements_y, m.elements_z);
+  std::vector<KeyValue> added;
+  const double dp =
+      particle_spacing(entry, (size.array() / (2.0 * cells.array())).minCoeff(), mesh_line, added);
+  const auto& sides = fem_plugin::box_sides();
+  Vec3 lo = m.origin3, hi = m.origin3 + size;
+  for (const auto& tag : fe.clamped) {
+    const auto k = std::find(sides.begin(), sides.end(), tag) - sides.begin();
+    if (k == static_cast<std::ptrdiff_t>(sides.size()))
+      fe_keys.fail("clamped", "no side of the box is tagged '" + tag +
+                                  "' (left, right, bottom, top, back, front)");
+    if (k % 2)
+      hi[k / 2] += kClampRows * dp;
+    else
+      lo[k / 2] -= kClampRows * dp;
+  }
+  int clamped_line = 0;
+  given(entry, "fem", "clamped", clamped_line);
+  YAML::Node boxes(YAML::NodeType::Sequence);
+  for (const auto& tag : fe.clamped) {
+    const auto k = std::find(sides.begin(), sides.end(), tag) - sides.begin();
+    Vec3 bmin = lo, bmax = hi; // the support: the rows beyond the side's face
+    if (k % 2)
+      bmin[k / 2] = m.origin3[k / 2] + size[k / 2];
+    else
+      bmax[k / 2] = m.origin3[k / 2];
+    boxes.push_back(map_at(clamped_line, {{"min", point3(bmin)}, {"max", point3(bmax)}}));
+  }
+  added.emplace_back(key_at("region", mesh_line),
+                     map_at(mesh_line, {{"min", point3(lo)}, {"max", point3(hi)}}));
+  if (boxes.size() > 0) added.emplace_back(key_at("clamped", clamped_line), boxes);
+  return added;
+}
+
 } // namespace
 
 void tlsph_from_fem(Section& s) {
-  if (s.context().dimension == 3) return; // TL-SPH is refused in 3-D scenes (read_tlsph)
   const YAML::Node& entry = s.node();
-  int mesh_line = 0, clamped_line = 0, dp_line = 0;
+  int mesh_line = 0, clamped_line = 0;
   if (given(entry, "tlsph", "region") || !given(entry, "fem", "mesh", mesh_line).IsDefined())
     return;
   std::shared_ptr<const SolverSpec> spec;
@@ -158,14 +222,15 @@ void tlsph_from_fem(Section& s) {
   if (!fe.loads.empty())
     fe_keys.fail("loads", "a TL-SPH solid takes no constant loads: with loads the entry is of "
                           "type fem only");
+  const std::set<std::string> moved =
+      only_in(declared_keys(fem_plugin::read_structure), declared_keys(tlsph_plugin::read_tlsph));
+  if (s.context().dimension == 3) {
+    s.rebind(adopted(s, "tlsph", "fem", moved, box_region(entry, fe, fe_keys, mesh_line)));
+    return;
+  }
   const Outline o = outline_of(fe.mesh, fe_keys);
-  double dp = o.spacing;
-  const YAML::Node dp_given = given(entry, "tlsph", "dp", dp_line);
   std::vector<KeyValue> added;
-  if (!dp_given.IsDefined())
-    added.emplace_back(key_at("dp", mesh_line), dp);
-  else if (!YAML::convert<double>::decode(dp_given, dp) || !(dp > 0.0))
-    dp = o.spacing; // the TL-SPH reader names the bad dp
+  const double dp = particle_spacing(entry, o.spacing, mesh_line, added);
   // Each clamped side continued outwards by kClampRows dp into a box, the support.
   given(entry, "fem", "clamped", clamped_line);
   std::vector<Vec2> points;
@@ -203,10 +268,7 @@ void tlsph_from_fem(Section& s) {
   added.emplace_back(key_at("region", mesh_line),
                      map_at(mesh_line, {{"polygon", polygon}, {"tags", names}}));
   if (boxes.size() > 0) added.emplace_back(key_at("clamped", clamped_line), boxes);
-  s.rebind(adopted(
-      s, "tlsph", "fem",
-      only_in(declared_keys(fem_plugin::read_structure), declared_keys(tlsph_plugin::read_tlsph)),
-      added));
+  s.rebind(adopted(s, "tlsph", "fem", moved, added));
 }
 
 void fem_from_tlsph(Section& s) {

@@ -22,6 +22,9 @@ constexpr int kClampRows = 4;
 /// keys TL-SPH has none of (mesh, newmark, newton, linear_solver) move to the `fem` block, checked
 /// and set aside. InputError naming the FE key for what does not translate: `loads`, a clamped
 /// side that is not one straight side along an axis, a mesh whose boundary is not one loop.
+/// 3-D: a T10 `box` mesh becomes the TL-SPH box `region: {min, max}` (dp unless given, the
+/// smallest of width / (2 elements_x), height / (2 elements_y), depth / (2 elements_z)), each
+/// clamped side continued kClampRows dp outwards into a clamped box; a Gmsh mesh is refused.
 void tlsph_from_fem(Section& s);
 
 /// adopt of type fem. With no `mesh` (in the entry or its `fem` block) but a TL-SPH rectangle

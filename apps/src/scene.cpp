@@ -410,8 +410,9 @@ void read_solver_block(Section& s, const std::vector<Plugin>& plugins, Block& bl
 int read_dimension(Section& top) {
   return top.integer("dimension", 2, Range::closed(2, 3),
                      "2 or 3: every point and vector of the scene has this many coordinates; "
-                     "3 takes structures of type fem (T10 elements) or a fluid of type sph "
-                     "(boxes in an open box tank), not yet both");
+                     "3 takes structures of type fem (T10 elements) or tlsph (a box of "
+                     "particles), or a fluid of type sph (boxes in an open box tank), not yet "
+                     "a fluid and a structure together");
 }
 
 Scene read_scene(Section top) {
@@ -532,9 +533,12 @@ std::string scene_reference() {
       << "A scene of `dimension: 3` reads every point and vector as [x, y, z] (y up, as in 2-D)\n"
       << "and takes structures of type fem (T10 elements; mesh kind box or gmsh, linear\n"
       << "solver cholmod by default, no `plane`, loads on faces as a total force or a pressure)\n"
-      << "or a fluid of type sph (`regions` and `domain` as boxes `{min, max}` in [x, y, z], the\n"
-      << "walls an open box tank `fluid.tank`); not yet both together, nor wall polylines, the\n"
-      << "sph `inflow` and `interface_*` keys, another fluid type or a TL-SPH structure.\n\n"
+      << "or tlsph (a box `region: {min, max}` of particles, fixed clamped boxes; an FE box\n"
+      << "mesh is read as that box, its clamped sides continued 4 rows outwards as in 2-D; no\n"
+      << "polygon, Gmsh region or interface), or a fluid of type sph (`regions` and `domain` as\n"
+      << "boxes `{min, max}` in [x, y, z], the walls an open box tank `fluid.tank`); not yet a\n"
+      << "fluid and a structure together, nor wall polylines, the sph `inflow` and `interface_*`\n"
+      << "keys or another fluid type.\n\n"
       << "| key | type | default | allowed | meaning |\n|---|---|---|---|---|\n";
   for (const auto& k : *ctx.collector)
     out << "| `" << k.path << "` | " << k.type << " | " << k.fallback << " | " << k.range << " | "

@@ -22,6 +22,17 @@ Box read_box(Section s, const std::string& what) {
   return b;
 }
 
+// A 3-D scene's box: corners [x, y, z] (read outside documentation mode).
+Box3 read_box3(Section s, const std::string& what) {
+  const auto lo = s.optional_vec3("min", "smallest corner of " + what + ", m");
+  const auto hi = s.optional_vec3("max", "largest corner, m");
+  if (!lo) s.fail("min", "required key missing");
+  if (!hi) s.fail("max", "required key missing");
+  if (!((*hi - *lo).minCoeff() > 0.0)) s.fail("max", "must exceed min along x, y and z");
+  s.finish();
+  return {*lo, *hi};
+}
+
 // "a, b, c": the distinct names, sorted.
 std::string listed(std::vector<std::string> names) {
   std::sort(names.begin(), names.end());
@@ -35,6 +46,12 @@ std::string listed(std::vector<std::string> names) {
 // per edge (default: every edge "boundary") or a Gmsh mesh's boundary (tlsph_mesh_outline.hpp).
 void read_region(Section s, TlsphSpec& t) {
   const bool doc = s.context().documenting();
+  if (!doc && s.context().dimension == 3) { // a box, filled by tlsph::fill_box
+    for (const char* key : {"polygon", "file", "tags"})
+      if (s.has(key)) s.fail(key, "is 2-D only (a 3-D region is a box: min, max)");
+    t.box = read_box3(s, "the box filled with particles at dp from it");
+    return;
+  }
   if (doc || s.has("file")) {
     const auto file = s.file(
         "file", "Gmsh .msh of the region, as the fem type's mesh.file (format 4.1 ASCII or "
@@ -69,7 +86,8 @@ void read_region(Section s, TlsphSpec& t) {
   }
   if (doc || (!s.has("polygon") && !s.has("file"))) {
     const Vec2 lo = s.vec2("min", "lower-left corner of a rectangle filled with particles at dp "
-                                  "from it; sides tagged bottom, right, top, left, m");
+                                  "from it; sides tagged bottom, right, top, left, m (3-D: "
+                                  "[x, y, z], a box's smallest corner)");
     const Vec2 hi = s.vec2("max", "upper-right corner, m");
     if (!doc && (hi.x() <= lo.x() || hi.y() <= lo.y()))
       s.fail("max", "must lie above and right of min");
@@ -87,8 +105,7 @@ std::shared_ptr<const SolverSpec> read_tlsph(Section& s) {
   auto spec = std::make_shared<TlsphSpec>();
   TlsphSpec& t = *spec;
   const bool doc = s.context().documenting();
-  if (!doc && s.context().dimension == 3)
-    s.fail("type", "tlsph is 2-D only in scenes for now (3-D: type fem)");
+  const bool three_d = !doc && s.context().dimension == 3;
   read_region(s.required_block("region", "the solid: a rectangle (min, max), a polygon or a Gmsh "
                                          "mesh (file)"),
               t);
@@ -100,14 +117,28 @@ std::shared_ptr<const SolverSpec> read_tlsph(Section& s) {
                                      "are the clamp, a support beyond the body (fixed: the body "
                                      "is clamped at the box's face, so the region extends 2 or "
                                      "more rows into the box; or they follow clamped_motion)"))
-    t.clamped.push_back(read_box(box, "a clamped box"));
+    if (three_d)
+      t.clamped3.push_back(read_box3(box, "a clamped box"));
+    else
+      t.clamped.push_back(read_box(box, "a clamped box"));
   t.clamped_motion = s.text("clamped_motion", "",
                             "name of a wall with a motion: the clamped particles follow its rigid "
                             "motion; empty: they stay fixed");
   t.options.interface_tags =
       s.names("interface", {},
               "region edge tags wetted by the fluid (a rectangle: bottom, right, top, left)");
-  if (!doc) {
+  if (three_d) { // a 3-D solid stands alone: no walls, no fluid
+    if (!t.clamped_motion.empty())
+      s.fail("clamped_motion", "is 2-D only (3-D scenes: fixed clamps)");
+    if (!t.options.interface_tags.empty())
+      s.fail("interface", "is 2-D only (a 3-D TL-SPH solid has no coupling interface yet)");
+    if (t.options.interface_particles)
+      s.fail("interface_particles", "is 2-D only (a 3-D TL-SPH solid is not coupled yet)");
+    const Vec3 size = t.box.max - t.box.min;
+    if (t.options.dp * 3.0 > size.minCoeff())
+      s.fail("dp", "fewer than 3 particles across the region (" + std::to_string(size.x()) + " x " +
+                       std::to_string(size.y()) + " x " + std::to_string(size.z()) + " m)");
+  } else if (!doc) {
     Vec2 lo = t.outline.front(), hi = lo;
     for (const Vec2& p : t.outline) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
     const Vec2 size = hi - lo;

@@ -13,6 +13,9 @@ namespace fsi::app::tlsph_plugin {
 struct Box {
   Vec2 min = Vec2::Zero(), max = Vec2::Zero();
 };
+struct Box3 {
+  Vec3 min = Vec3::Zero(), max = Vec3::Zero();
+};
 
 struct TlsphSpec final : SolverSpec {
   tlsph::TlsphOptions options;   ///< the keys solid_tlsph and materials/ declare, the wetted sides
@@ -20,6 +23,8 @@ struct TlsphSpec final : SolverSpec {
   std::vector<std::string> tags; ///< a tag per outline edge (rectangle: bottom, right, top, left)
   std::vector<Box> clamped;      ///< particles with X0 inside a box are clamped (or moved)
   std::string clamped_motion;    ///< wall whose rigid motion the clamped particles follow
+  Box3 box;                      ///< 3-D: the region, a box filled with particles at dp
+  std::vector<Box3> clamped3;    ///< 3-D: the clamped boxes
 };
 
 /// Reads the keys of one structures entry (type and name excepted) into a TlsphSpec.
