@@ -265,10 +265,17 @@ for name, arg, names in [
 
 # ---------------------------------------------------------------- 3-D scenes (issue 44)
 C3 = open(os.path.join(ROOT, "data/scenes/cantilever_3d.yaml")).read()
+
+
+def line_of(text, key):
+    """':N:', the line of the scene text that starts with key (as a message names it)."""
+    return ":%d:" % ([l.startswith(key) for l in text.split("\n")].index(True) + 1)
+
+
 for name, old, new, names in [
-    ("dimension_four", "dimension: 3", "dimension: 4", [":10:", "dimension"]),
+    ("dimension_four", "dimension: 3", "dimension: 4", [line_of(C3, "dimension:"), "dimension"]),
     ("gravity_2d_in_3d", "gravity: [0.0, -9.81, 0.0]", "gravity: [0.0, -9.81]",
-     [":11:", "gravity", "[x, y, z]"]),
+     [line_of(C3, "gravity:"), "gravity", "[x, y, z]"]),
     ("probe_point_2d_in_3d", "point: [1.0, 0.05, 0.05]", "point: [1.0, 0.05]",
      ["output.probes[0].point", "[x, y, z]"]),
     ("plane_in_3d", "density: 1000.0", "density: 1000.0\n      plane: strain",
