@@ -13,6 +13,7 @@
 #include <limits>
 #include <numbers>
 #include <sstream>
+#include <utility>
 
 namespace fsi::emps {
 
@@ -67,10 +68,21 @@ BasicEmpsFluid<D>::BasicEmpsFluid(const Options& options, const std::vector<Vec>
   start(positions);
 }
 
+SpaceWalls::SpaceWalls(const FluidOptions3& options, double n0, const erp::TriangleWallSet& walls,
+                       const Particles3& particles, const particles::BasicCellGrid<3>& grid)
+    : locator(walls, options.r_e()), terms(options, n0, particles, grid, hits),
+      corner_faces(options.wall.corner_faces) {
+  // Not in 3-D yet: the two 2-D-only wall options are refused, not ignored.
+  if (options.wall.contact.model == WallContact::viscous)
+    throw InputError("fluid.wall_contact: 'viscous' is not available in 3-D yet");
+  if (options.wall.mirror.pressure == WallPressure::neighbours)
+    throw InputError("fluid.wall_pressure: 'neighbours' is not available in 3-D yet");
+}
+
 template <int D>
-BasicEmpsFluid<D>::BasicEmpsFluid(const Options& options,
-                                  const std::vector<Vec>& positions) requires(D == 3)
-    : options_(validated(options)) {
+BasicEmpsFluid<D>::BasicEmpsFluid(const Options& options, const std::vector<Vec>& positions,
+                                  const erp::TriangleWallSet& walls) requires(D == 3)
+    : options_(validated(options)), walls_(options_, n0_, walls, particles_, grid_) {
   start(positions);
 }
 
@@ -88,7 +100,7 @@ template <int D> void BasicEmpsFluid<D>::start(const std::vector<Vec>& positions
   capacity_ = static_cast<std::size_t>(std::ceil(2.0 * sites)) + 16;
   remove_outside();
   refresh_neighbours(true, 0, 0.0);
-  if constexpr (D == 2) query_walls();
+  query_walls();
   density_and_pressure();
 }
 
@@ -124,18 +136,51 @@ void BasicEmpsFluid<D>::refresh_neighbours(bool allow_reorder, long step, double
                    " (particles clustered: the step is likely unstable)");
 }
 
-template <int D> void BasicEmpsFluid<D>::query_walls() requires(D == 2) {
+template <int D> void BasicEmpsFluid<D>::query_walls() {
   Timer timer(times_.walls);
-  walls_.locator->query(std::span<const double>(particles_.x),
-                        std::span<const double>(particles_.y), walls_.hits);
-  walls_.hits_layout = layout_;
+  if constexpr (D == 2) {
+    walls_.locator->query(std::span<const double>(particles_.x),
+                          std::span<const double>(particles_.y), walls_.hits);
+    walls_.hits_layout = layout_;
+  } else {
+    const std::span<const double> x(particles_.position[0]), y(particles_.position[1]),
+        z(particles_.position[2]);
+    SpaceHits& hits = walls_.hits;
+    walls_.locator.query(x, y, z, hits[0]);
+    if (walls_.corner_faces) {
+      walls_.locator.corner_faces(x, y, z, hits);
+    } else {
+      for (std::size_t k = 1; k < max_faces3; ++k) {
+        hits[k].resize(x.size());
+        std::fill(hits[k].triangle.begin(), hits[k].triangle.end(), -1);
+      }
+    }
+  }
+}
+
+template <int D> void BasicEmpsFluid<D>::check_crossed(long step, double t) const {
+  const auto& [crossed, wall] = [&] {
+    if constexpr (D == 2)
+      return std::pair(&walls_.hits.crossed, &walls_.hits.face[0].segment);
+    else
+      return std::pair(&walls_.hits[0].crossed, &walls_.hits[0].triangle);
+  }();
+  const std::size_t i =
+      first_index(particles_.size(), [&](std::size_t k) { return (*crossed)[k] != 0; });
+  if (i != none)
+    throw RunError("fluid: " + where(particles_, i, step, t) + " is behind wall " +
+                   (D == 2 ? "segment " : "triangle ") + std::to_string((*wall)[i]) +
+                   " (try a smaller time step or a larger alpha_rep)");
 }
 
 template <int D> void BasicEmpsFluid<D>::advance(double t, double dt) {
   ParticleSet& p = particles_;
-  if constexpr (D == 2) {
+  {
     Timer timer(times_.walls);
-    walls_.locator->update();
+    if constexpr (D == 2)
+      walls_.locator->update();
+    else
+      walls_.locator.update();
   }
   const Vec g = options_.gravity;
   refresh_neighbours(true, step_ + 1, t);
@@ -154,8 +199,12 @@ template <int D> void BasicEmpsFluid<D>::advance(double t, double dt) {
   if (viscous) {
     // The wall hits of the last step's x* serve x^n (which differs by dt^2 |grad p| / rho, and
     // they see the walls at t^n) unless particles were reordered or removed since.
-    if constexpr (D == 2)
+    // In 3-D the hits are taken at x^n (a restart then needs no stored hits).
+    if constexpr (D == 2) {
       if (walls_.hits_layout != layout_) query_walls();
+    } else {
+      query_walls();
+    }
     viscosity();
   }
   {
@@ -172,22 +221,14 @@ template <int D> void BasicEmpsFluid<D>::advance(double t, double dt) {
   }
   check_finite(step_ + 1, t + dt); // v*, x* (before they are binned)
   refresh_neighbours(false, step_ + 1, t + dt);
-  if constexpr (D == 2) {
-    query_walls();
-    const erp::WallHits& hits = walls_.hits;
-    const std::size_t crossed = first_index(n, [&](std::size_t i) { return hits.crossed[i] != 0; });
-    if (crossed != none)
-      throw RunError("fluid: " + where(p, crossed, step_ + 1, t + dt) + " is behind wall segment " +
-                     std::to_string(hits.face[0].segment[crossed]) +
-                     " (try a smaller time step or a larger alpha_rep)");
-  }
+  query_walls();
+  check_crossed(step_ + 1, t + dt);
   density_and_pressure();
   pressure_gradient(dt);
-  if constexpr (D == 2)
-    if (options_.wall.gap_courant > 0) {
-      if (dt >= gap_dt_) ++gap_limited_steps_;
-      gap_dt_ = wall_gap_dt();
-    }
+  if (options_.wall.gap_courant > 0) {
+    if (dt >= gap_dt_) ++gap_limited_steps_;
+    gap_dt_ = wall_gap_dt();
+  }
   ++step_;
   Timer timer(times_.other);
   damp(t, dt);
@@ -249,10 +290,16 @@ template <int D> void BasicEmpsFluid<D>::set_velocities(const std::vector<Vec>& 
 
 // The wall-gap limit of the next step (WallTerms::gap_dt), with the step's last position
 // correction (scratch_ still holds it).
-template <int D> double BasicEmpsFluid<D>::wall_gap_dt() const requires(D == 2) {
+template <int D> double BasicEmpsFluid<D>::wall_gap_dt() const {
   return parallel_reduce(
       particles_.size(), std::numeric_limits<double>::infinity(),
-      [&](std::size_t i) { return walls_.terms.gap_dt(i, scratch_[2 * i], scratch_[2 * i + 1]); },
+      [&](std::size_t i) {
+        if constexpr (D == 2)
+          return walls_.terms.gap_dt(i, scratch_[2 * i], scratch_[2 * i + 1]);
+        else
+          return walls_.terms.gap_dt(
+              i, Vec3(scratch_[3 * i], scratch_[3 * i + 1], scratch_[3 * i + 2]));
+      },
       [](double a, double b) { return std::min(a, b); });
 }
 
@@ -266,7 +313,8 @@ template <int D> double BasicEmpsFluid<D>::stable_dt(double courant) const {
 }
 
 template BasicEmpsFluid<2>::BasicEmpsFluid(const Options&, const std::vector<Vec>&, erp::WallSet&);
-template BasicEmpsFluid<3>::BasicEmpsFluid(const Options&, const std::vector<Vec>&);
+template BasicEmpsFluid<3>::BasicEmpsFluid(const Options&, const std::vector<Vec>&,
+                                           const erp::TriangleWallSet&);
 template void BasicEmpsFluid<2>::advance(double, double);
 template void BasicEmpsFluid<3>::advance(double, double);
 template void BasicEmpsFluid<2>::set_velocities(const std::vector<Vec>&);

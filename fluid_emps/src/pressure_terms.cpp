@@ -9,8 +9,8 @@
 
 namespace fsi::emps {
 
-// n*_i = sum_j w_ij + the wall part (eqs. 9, 20; WallTerms::pnd, 2-D); p_i = c^2 rho/n0 (n*_i -
-// n0), 0 on the free surface n*_i < beta n0 (eqs. 15, 17).
+// n*_i = sum_j w_ij + the wall part (eqs. 9, 20; WallTerms::pnd, SpaceWallTerms::pnd); p_i = c^2
+// rho/n0 (n*_i - n0), 0 on the free surface n*_i < beta n0 (eqs. 15, 17).
 template <int D> void BasicEmpsFluid<D>::density_and_pressure() {
   Timer timer(times_.density);
   ParticleSet& p = particles_;
@@ -23,7 +23,7 @@ template <int D> void BasicEmpsFluid<D>::density_and_pressure() {
       [&](std::size_t i) {
         const PndSum sum = pnd_sum<D>(pair_row(i), x, options_.vector_kernels);
         double pnd = sum.pnd;
-        if constexpr (D == 2) pnd = walls_.terms.pnd(i, sum.pnd);
+        pnd = walls_.terms.pnd(i, sum.pnd);
         p.pnd[i] = pnd;
         const bool free = pnd < surface;
         p.surface[i] = free;
@@ -74,7 +74,7 @@ template <int D> VecSum<D> BasicEmpsFluid<D>::fluid_gradient(std::size_t i, doub
 }
 
 // v^{n+1} = v* - dt/rho <grad p>^ERP, x^{n+1} = x* + dt (v^{n+1} - v*) (eqs. 10, 14, 25-27),
-// and in 2-D the wall force of eq. 52 on each face.
+// and in 2-D the wall force of eq. 52 on each face (not kept in 3-D yet).
 template <int D> void BasicEmpsFluid<D>::pressure_gradient(double dt) {
   Timer timer(times_.pressure_gradient);
   ParticleSet& p = particles_;
@@ -117,9 +117,13 @@ template <int D> void BasicEmpsFluid<D>::pressure_gradient(double dt) {
         f.f_contact[i] = -V * contact[k];
         f.f_viscous[i] = s >= 0 ? visc[i] : Vec2::Zero();
       }
-    } else {
+    } else { // 3-D: each face's mirror pressure term and contact term (eqs. 25-27)
       const VecSum<D> fluid = fluid_gradient(i, nullptr);
       for (int a = 0; a < D; ++a) grad[a] = c_grad * fluid[static_cast<std::size_t>(a)];
+      for (std::size_t k = 0; k < max_faces3; ++k) {
+        if (walls_.hits[k].triangle[i] < 0) continue;
+        grad += walls_.terms.mirror_pressure(i, k) + walls_.terms.contact(i, k, dt);
+      }
     }
     const VecD<D> dv = -dt * inv_rho * grad;
     for (std::size_t a = 0; a < D; ++a) {

@@ -10,7 +10,8 @@
 
 namespace fsi::emps {
 
-// nu <lap v>^ERP into scratch_ (eqs. 11, 24; advance adds it and g to v, eq. 13); in 2-D the
+// nu <lap v>^ERP into scratch_ (eqs. 11, 24; advance adds it and g to v, eq. 13, the wall terms
+// over up to three faces in 3-D); in 2-D the
 // walls' viscous array keeps each face's viscous wall force (with wall_approach_viscosity
 // alpha_w, also alpha_w c l0 times the mirror closing-pair sum of WallTerms::mirror_viscous, a
 // wall force).
@@ -68,7 +69,7 @@ template <int D> void BasicEmpsFluid<D>::viscosity() {
           }
         }
       }
-      VecSum<D> lap;
+      VecSum<D> lap, a_wall3{};
       for (std::size_t a = 0; a < D; ++a) lap[a] = c_lap * s[a];
       // The wall's part on each face (eq. 24, the approach viscosity; 2-D).
       std::array<Vec2, erp::max_faces> m, a_wall;
@@ -82,11 +83,21 @@ template <int D> void BasicEmpsFluid<D>::viscosity() {
           a_wall[k] = nu_approach * c_lap * mirror.approach;
         }
         for (const Vec2& mk : m) lap[0] += mk.x(), lap[1] += mk.y();
+      } else { // 3-D: each face's eq. 24 term and approach viscosity, added to the particle
+        for (std::size_t k = 0; k < max_faces3; ++k) {
+          if (!((nu > 0 || approach) && walls_.hits[k].triangle[i] >= 0)) continue;
+          const MirrorViscous3 mirror = walls_.terms.mirror_viscous(i, k, approach);
+          for (std::size_t a = 0; a < D; ++a) {
+            lap[a] += c_lap * mirror.laplacian[static_cast<Eigen::Index>(a)];
+            a_wall3[a] += nu_approach * c_lap * mirror.approach[static_cast<Eigen::Index>(a)];
+          }
+        }
       }
       for (std::size_t a = 0; a < D; ++a) {
         out[D * i + a] = nu * lap[a];
         if constexpr (decltype(artificial)::value) out[D * i + a] += nu_art * c_lap * a_art[a];
         if constexpr (decltype(near_wall)::value) out[D * i + a] += nu_wall * c_lap * b[a];
+        if constexpr (D == 3) out[D * i + a] += a_wall3[a];
       }
       if constexpr (D == 2) {
         for (std::size_t k = 0; k < erp::max_faces; ++k)

@@ -35,6 +35,26 @@ double corner_weight_sum(double a, double b, double l0, double r_e, const Weight
   return q;
 }
 
+double edge_weight_sum3(double a, double b, double l0, double r_e, const particles::MpsWeight& w) {
+  const int n = reach(l0, r_e);
+  double q = 0.0;
+  for (int m = 0; a + 0.5 * l0 + m * l0 < r_e; ++m)
+    for (int k = 0; b + 0.5 * l0 + k * l0 < r_e; ++k)
+      for (int j = -n; j <= n; ++j)
+        q += w(std::hypot(a + 0.5 * l0 + m * l0, b + 0.5 * l0 + k * l0, j * l0));
+  return q;
+}
+
+double corner_weight_sum3(double a, double b, double c, double l0, double r_e,
+                          const particles::MpsWeight& w) {
+  double o = 0.0;
+  for (int m = 0; a + 0.5 * l0 + m * l0 < r_e; ++m)
+    for (int k = 0; b + 0.5 * l0 + k * l0 < r_e; ++k)
+      for (int l = 0; c + 0.5 * l0 + l * l0 < r_e; ++l)
+        o += w(std::hypot(a + 0.5 * l0 + m * l0, b + 0.5 * l0 + k * l0, c + 0.5 * l0 + l * l0));
+  return o;
+}
+
 template <int D>
 double wall_gradient_sum(double r, double l0, double r_e, const WeightFunction& w) {
   const int n = reach(l0, r_e);

@@ -1,7 +1,7 @@
-// The EMPS fluid in 3-D (BasicEmpsFluid<3>, no walls yet): n0 and lambda0 of the cubic lattice,
-// pnd = n0 inside a block at rest, momentum kept by the pairwise antisymmetric fluid-fluid terms
-// (eqs. 10, 11 and the closing-pair viscosity), the pressure gradient pushing a compressed blob
-// apart, and a checkpoint that continues bitwise.
+// The EMPS fluid in 3-D (BasicEmpsFluid<3>, here without walls): n0 and lambda0 of the cubic
+// lattice, pnd = n0 inside a block at rest, momentum kept by the pairwise antisymmetric fluid-fluid
+// terms (eqs. 10, 11 and the closing-pair viscosity), the pressure gradient pushing a compressed
+// blob apart, and a checkpoint that continues bitwise.
 #include "fluid_emps/emps_fluid.hpp"
 #include "fsi/core/state_archive.hpp"
 #include "particles/kernels.hpp"
@@ -16,6 +16,8 @@ using namespace fsi;
 using Catch::Matchers::WithinRel;
 
 namespace {
+
+const erp::TriangleWallSet no_walls; // an empty set: the fluid without walls
 
 emps::FluidOptions3 water3(double l0) {
   return emps::test::water<3>(l0, 0.2, 0.8);
@@ -46,7 +48,7 @@ TEST_CASE("emps 3-D: n0 and lambda0 are the cubic lattice's, and pnd = n0 inside
         const double w = (1.0 - r / r_e) * (1.0 - r / r_e);
         n0 += w, r2w += r * r * w;
       }
-  emps::EmpsFluid3 fluid(water3(l0), cube(10, l0, {0.5, 0.5, 0.5}));
+  emps::EmpsFluid3 fluid(water3(l0), cube(10, l0, {0.5, 0.5, 0.5}), no_walls);
   CHECK_THAT(fluid.n0(), WithinRel(n0, 1e-13));
   CHECK_THAT(fluid.lambda0(), WithinRel(r2w / n0, 1e-13));
   CHECK_THAT(fluid.n0(), WithinRel(11.6594, 1e-4)); // measured; the square lattice: 4.1783
@@ -73,7 +75,7 @@ TEST_CASE("emps 3-D: without gravity and walls, linear momentum is conserved to 
   auto options = water3(l0);
   options.viscosity = 1e-3;
   options.artificial_viscosity = 0.2;
-  emps::EmpsFluid3 fluid(options, cube(12, l0, {0.5, 0.5, 0.5}));
+  emps::EmpsFluid3 fluid(options, cube(12, l0, {0.5, 0.5, 0.5}), no_walls);
   const auto& p0 = fluid.particles();
   std::vector<Vec3> v(p0.size());
   for (std::size_t i = 0; i < p0.size(); ++i)
@@ -91,7 +93,7 @@ TEST_CASE("emps 3-D: the pressure gradient pushes a compressed blob apart, from 
   // accelerates every particle with an outward pressure drop away from the centre.
   const double l0 = 0.01;
   const Vec3 c(0.5, 0.5, 0.5);
-  emps::EmpsFluid3 fluid(water3(l0), cube(10, 0.97 * l0, c));
+  emps::EmpsFluid3 fluid(water3(l0), cube(10, 0.97 * l0, c), no_walls);
   fluid.advance(0.0, 1e-5);
   const auto& p = fluid.particles();
   int outward = 0, counted = 0;
@@ -113,7 +115,7 @@ TEST_CASE("emps 3-D: a run continued from a checkpoint is bitwise the uninterrup
   options.gravity = {0.0, 0.0, -9.81};
   options.viscosity = 1e-3;
   const auto positions = cube(8, 0.98 * l0, {0.5, 0.5, 0.5});
-  emps::EmpsFluid3 a(options, positions), b(options, positions);
+  emps::EmpsFluid3 a(options, positions, no_walls), b(options, positions, no_walls);
   for (int k = 0; k < 5; ++k) a.advance(k * 1e-4, 1e-4);
   StateArchive archive;
   a.write_state(archive, "fluid/");

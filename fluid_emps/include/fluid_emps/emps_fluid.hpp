@@ -13,12 +13,15 @@
 //
 // Written once for D = 2 and 3 (docs/architecture.md, "Two and three dimensions"): the
 // fluid-fluid terms, the time integration, the diagnostics and the state are D-generic; the ERP
-// walls (WallSet segments, mirror particles, the wall terms and forces) are 2-D only so far, and
-// the 3-D fluid has no walls yet (#43): particles leaving the domain box are removed.
+// walls are segments (WallSet, WallTerms) in 2-D and triangles (TriangleWallSet, SpaceWallTerms)
+// in 3-D, static in 3-D so far and without the wall forces of eq. 52 (#43).
 #include "fluid_emps/options.hpp"
 #include "fluid_emps/pair_sums.hpp"
 #include "fluid_emps/particles.hpp"
+#include "fluid_emps/space_wall_terms.hpp"
 #include "fluid_emps/wall_terms.hpp"
+#include "geometry_erp/triangle_locator.hpp"
+#include "geometry_erp/triangle_wall_set.hpp"
 #include "geometry_erp/wall_locator.hpp"
 #include "geometry_erp/wall_set.hpp"
 #include "geometry_erp/wall_weight.hpp"
@@ -92,9 +95,18 @@ struct PlaneWalls {
   long hits_layout = -1; ///< the fluid's layout when `hits` were computed (-1: stale)
 };
 
-/// The fluid's walls in D dimensions: none in 3-D yet (#43).
-struct NoWalls {};
-template <int D> using EmpsWalls = std::conditional_t<D == 2, PlaneWalls, NoWalls>;
+/// The 3-D fluid's walls: triangles (static so far), their index, the hits of up to three faces
+/// (the nearest triangle, the other planes of a concave edge or corner) and the wall terms.
+struct SpaceWalls {
+  SpaceWalls(const FluidOptions3& options, double n0, const erp::TriangleWallSet& walls,
+             const Particles3& particles, const particles::BasicCellGrid<3>& grid);
+  erp::TriangleLocator locator;
+  SpaceHits hits;
+  SpaceWallTerms terms;
+  bool corner_faces;
+};
+
+template <int D> using EmpsWalls = std::conditional_t<D == 2, PlaneWalls, SpaceWalls>;
 
 template <int D> class BasicEmpsFluid {
 public:
@@ -105,8 +117,10 @@ public:
   /// Particles start at rest at `positions`. Throws fsi::InputError on invalid options.
   BasicEmpsFluid(const Options& options, const std::vector<Vec>& positions,
                  erp::WallSet& walls) requires(D == 2);
-  /// Without walls (3-D, until #43).
-  BasicEmpsFluid(const Options& options, const std::vector<Vec>& positions) requires(D == 3);
+  /// With triangle walls (3-D), which must outlive the fluid and stay where they are (static
+  /// walls; moving ones are #43's next slice). An empty set: no walls.
+  BasicEmpsFluid(const Options& options, const std::vector<Vec>& positions,
+                 const erp::TriangleWallSet& walls) requires(D == 3);
   /// Initial velocities, one per particle in the current order (before the first advance()).
   void set_velocities(const std::vector<Vec>& v);
   ~BasicEmpsFluid() = default;
@@ -165,7 +179,9 @@ private:
   void start(const std::vector<Vec>& positions);
   /// `step` and `t` name the step in progress in messages.
   void refresh_neighbours(bool allow_reorder, long step, double t);
-  void query_walls() requires(D == 2);
+  void query_walls();
+  /// Stops the run naming the first particle behind its nearest wall.
+  void check_crossed(long step, double t) const;
   void viscosity();
   void density_and_pressure();
   void pressure_gradient(double dt);
@@ -179,7 +195,7 @@ private:
   VecSum<D> fluid_gradient(std::size_t i, double* shepard) const;
   void check_finite(long step, double t) const;
   void remove_outside();
-  double wall_gap_dt() const requires(D == 2);
+  double wall_gap_dt() const;
   void damp(double t, double dt);
 
   Options options_; // validated by the constructors before anything below reads it

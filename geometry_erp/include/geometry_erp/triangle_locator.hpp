@@ -18,9 +18,16 @@
 // overlaps, CSR arrays); a particle checks its own cell, then each of the 26 neighbours whose box
 // is not farther than the best triangle so far.
 //
+// Concave edges and corners (corner_faces): as in 2-D (WallLocator::set_corner_faces), each hit
+// also takes, as faces k = 1, 2, the nearest OTHER plane within r_e: a triangle whose plane the
+// particle is in front of (signed distance > on_wall_tolerance r_e) with its foot, the projection
+// onto that plane, inside the triangle (edges included, so a face split into triangles keeps its
+// foot on the shared edges), and whose normal turns by more than 30 degrees from each face before
+// it (so the pieces of one plane and the gentle turns of a curved wall never count). Beside a
+// convex edge the foot falls outside the other face's triangles, so only concave ones count.
+//
 // These are new types rather than WallHits<D>: the 2-D record carries one segment coordinate t
-// and the corner faces; a triangle needs barycentric coordinates and a feature, and has no corner
-// faces yet.
+// and the corner faces; a triangle needs barycentric coordinates and a feature.
 #include "fsi/core/types.hpp"
 #include "geometry_erp/query_points.hpp"
 #include "geometry_erp/triangle_wall_set.hpp"
@@ -65,12 +72,20 @@ public:
              TriangleHits& hits) const {
     locate(QueryPoints3(x, y, z), hits);
   }
+  /// The corner faces (see above) into faces[1 ..], faces[0] being the points' nearest-triangle
+  /// hits from query(); a face k has triangle = -1 where there is none, feature = face, crossed =
+  /// 0, a_wall interpolated like v_wall.
+  void corner_faces(std::span<const double> x, std::span<const double> y, std::span<const double> z,
+                    std::span<TriangleHits> faces) const;
   double r_e() const { return r_e_; }
   double cell_size() const { return h_; }
   const TriangleWallSet& walls() const { return *walls_; }
 
 private:
   void locate(const QueryPoints3& points, TriangleHits& hits) const;
+  /// The nearest corner face of point p that turns from each of `normals` by more than 30 degrees.
+  void corner_face(const Vec3& p, std::span<const Vec3> normals, TriangleHits& face,
+                   std::size_t i) const;
   /// Index of cell (i, j, k), x fastest.
   std::size_t cell(int i, int j, int k) const;
 

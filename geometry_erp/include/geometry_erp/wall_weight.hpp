@@ -27,6 +27,17 @@ double wall_weight_sum(double r, double l0, double r_e, const WeightFunction& w)
 /// (m, k >= 0). z(a) + z(b) - q(a, b) is the wall part of pnd in the corner, exact on the lattice.
 double corner_weight_sum(double a, double b, double l0, double r_e, const WeightFunction& w);
 
+/// The 3-D counterparts on the cubic lattice: the virtual lattice behind both walls of a
+/// right-angle concave edge (walls at distances a and b, the lattice's columns along the edge
+/// aligned with the particle), q3(a, b) = sum_{m,k >= 0} sum_j w(|(a + l0/2 + m l0, b + l0/2 + k
+/// l0, j l0)|), and behind all three walls of a right-angle corner, o(a, b, c) = sum_{m,k,l >= 0}
+/// w(|(a + l0/2 + m l0, b + l0/2 + k l0, c + l0/2 + l l0)|). By inclusion-exclusion z(a) + z(b) +
+/// z(c) - q3(a, b)
+/// - q3(a, c) - q3(b, c) + o(a, b, c) is the wall part of pnd in the corner, exact on the lattice.
+double edge_weight_sum3(double a, double b, double l0, double r_e, const particles::MpsWeight& w);
+double corner_weight_sum3(double a, double b, double c, double l0, double r_e,
+                          const particles::MpsWeight& w);
+
 /// Eq. 10's geometric sum over the same virtual half-lattice as z(r): sum of (dy / rho^2) w(rho),
 /// dy the depth of a virtual point below the particle and rho its distance. With every virtual
 /// particle at pressure p_i, the wall part of <grad p>_i is -(d / n0) 2 p_i times this along n.

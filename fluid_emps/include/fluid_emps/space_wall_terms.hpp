@@ -1,0 +1,88 @@
+#pragma once
+// The ERP wall terms of the 3-D EMPS step over triangle walls (Mitsume 2023, eqs. 20, 23-27, and
+// what WallOptions adds), the counterpart of WallTerms: each a function of one particle i and one
+// face k of the walls that act on it (face 0 the nearest triangle of eq. 18, faces 1 and 2 the
+// other planes of a concave edge or corner, TriangleLocator::corner_faces). One file per term:
+// space_wall_pnd.cpp, space_mirror_pressure.cpp, space_mirror_viscous.cpp, space_wall_contact.cpp,
+// space_wall_gap.cpp. Not in 3-D yet: the convex corners' wedge, WallContact::viscous and
+// WallPressure::neighbours (the fluid refuses the last two).
+#include "fluid_emps/options.hpp"
+#include "fluid_emps/particles.hpp"
+#include "geometry_erp/triangle_locator.hpp"
+#include "geometry_erp/wall_weight.hpp"
+#include "particles/cell_grid.hpp"
+#include "particles/kernels.hpp"
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace fsi::emps {
+
+/// Faces that can act on a particle in 3-D: the nearest wall, and two more at a concave corner.
+inline constexpr std::size_t max_faces3 = 3;
+using SpaceHits = std::array<erp::TriangleHits, max_faces3>;
+
+/// The sums of the viscous mirror term at x_i' (without the 2d/(lambda0 n0) factor).
+struct MirrorViscous3 {
+  Vec3 laplacian = Vec3::Zero(); ///< R <lap v>_i' (eq. 24)
+  Vec3 approach = Vec3::Zero();  ///< the closing pairs across the wall (approach viscosity)
+};
+
+/// The wall terms over the fluid's particles, cell grid and hits, which must outlive it.
+class SpaceWallTerms {
+public:
+  SpaceWallTerms(const FluidOptions3& options, double n0, const Particles3& particles,
+                 const particles::BasicCellGrid<3>& grid, const SpaceHits& hits);
+
+  /// n*_i from the fluid part of pnd: z (eq. 20) summed over the faces, the lattice behind two or
+  /// three walls counted once (space_wall_pnd.cpp).
+  double pnd(std::size_t i, double fluid_pnd) const;
+  /// (d/n0) R_ref <grad p>_i' (eqs. 25-26) on face k with p_i' = p_i (space_mirror_pressure.cpp).
+  Vec3 mirror_pressure(std::size_t i, std::size_t k) const;
+  /// The viscous mirror sums on face k (eq. 24; `approach`: the approach viscosity's too)
+  /// (space_mirror_viscous.cpp).
+  MirrorViscous3 mirror_viscous(std::size_t i, std::size_t k, bool approach) const;
+  /// The contact term on face k in the units of grad p: f_rep (eq. 27) and the wall-normal
+  /// damping of WallContact::damped (space_wall_contact.cpp).
+  Vec3 contact(std::size_t i, std::size_t k, double dt) const;
+  /// The wall-gap step limit of particle i over its faces, given the step's last position
+  /// correction dx (space_wall_gap.cpp).
+  double gap_dt(std::size_t i, const Vec3& dx) const;
+
+private:
+  bool behind(std::uint32_t j, const Vec3& x_wall, const Vec3& n_wall) const;
+  /// f(j) for every binned particle in the cells that the ball of radius r_e around m touches
+  /// (at most 2 x 2 x 2 of the grid's cells of side >= r_e, not the 27 of for_each_near).
+  template <class F> void for_each_within(const Vec3& m, F&& f) const {
+    std::array<int, 3> c0, c1;
+    for (int a = 0; a < 3; ++a) {
+      c0[static_cast<std::size_t>(a)] = grid_.cell(a, m[a] - r_e_);
+      c1[static_cast<std::size_t>(a)] = grid_.cell(a, m[a] + r_e_);
+    }
+    const std::vector<std::uint32_t>& order = grid_.order();
+    for (int z = c0[2]; z <= c1[2]; ++z)
+      for (int y = c0[1]; y <= c1[1]; ++y) {
+        const int row = z * grid_.cells(1) + y;
+        for (std::uint32_t k = grid_.begin(c0[0], row), end = grid_.begin(c1[0] + 1, row); k < end;
+             ++k)
+          f(order[k]);
+      }
+  }
+  Vec3 position(std::size_t i) const {
+    return {p_.position[0][i], p_.position[1][i], p_.position[2][i]};
+  }
+  Vec3 velocity(std::size_t i) const {
+    return {p_.velocity[0][i], p_.velocity[1][i], p_.velocity[2][i]};
+  }
+
+  WallOptions o_;
+  double l0_, r_e_, re2_, rho_, c_, n0_;
+  particles::MpsWeight w_e_; ///< w(r) of eq. 8 at r_e
+  erp::WallWeightTable3 z_;  ///< z(r) of eq. 20 on the cubic lattice
+  const Particles3& p_;
+  const particles::BasicCellGrid<3>& grid_;
+  const SpaceHits& hits_;
+};
+
+} // namespace fsi::emps

@@ -1,0 +1,34 @@
+#include "geometry_erp/box_walls.hpp"
+
+#include "fsi/core/error.hpp"
+
+#include <vector>
+
+namespace fsi::erp {
+
+TriangleRange add_box_tank(TriangleWallSet& walls, const Vec3& lo, const Vec3& hi, bool open_top,
+                           int group) {
+  if (!(hi.array() > lo.array()).all()) throw InputError("box tank: empty box");
+  std::vector<Vec3> corner(8); // corner b: x from bit 0, y from bit 1, z from bit 2
+  for (int b = 0; b < 8; ++b)
+    corner[static_cast<std::size_t>(b)] =
+        Vec3(b & 1 ? hi.x() : lo.x(), b & 2 ? hi.y() : lo.y(), b & 4 ? hi.z() : lo.z());
+  const Vec3 centre = 0.5 * (lo + hi);
+  // The faces as corner quadruples around their edge; z = hi.z last.
+  const int faces[6][4] = {{0, 1, 3, 2}, {0, 1, 5, 4}, {2, 3, 7, 6},
+                           {0, 2, 6, 4}, {1, 3, 7, 5}, {4, 5, 7, 6}};
+  std::vector<std::array<int, 3>> triangles;
+  for (int f = 0; f < (open_top ? 5 : 6); ++f) {
+    const int* q = faces[f];
+    for (const std::array<int, 3> t : {std::array<int, 3>{q[0], q[1], q[2]}, {q[0], q[2], q[3]}}) {
+      const Vec3 &a = corner[static_cast<std::size_t>(t[0])],
+                 &b = corner[static_cast<std::size_t>(t[1])],
+                 &c = corner[static_cast<std::size_t>(t[2])];
+      const bool inward = (b - a).cross(c - a).dot(centre - a) > 0.0;
+      triangles.push_back(inward ? t : std::array<int, 3>{t[0], t[2], t[1]});
+    }
+  }
+  return walls.add_triangles(corner, triangles, group);
+}
+
+} // namespace fsi::erp
