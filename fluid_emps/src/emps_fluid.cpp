@@ -159,12 +159,14 @@ template <int D> void BasicEmpsFluid<D>::query_walls() {
 }
 
 template <int D> void BasicEmpsFluid<D>::check_crossed(long step, double t) const {
-  const auto& [crossed, wall] = [&] {
+  const auto crossed_and_wall = [&] {
     if constexpr (D == 2)
       return std::pair(&walls_.hits.crossed, &walls_.hits.face[0].segment);
     else
       return std::pair(&walls_.hits[0].crossed, &walls_.hits[0].triangle);
   }();
+  const auto* crossed = crossed_and_wall.first;
+  const auto* wall = crossed_and_wall.second;
   const std::size_t i =
       first_index(particles_.size(), [&](std::size_t k) { return (*crossed)[k] != 0; });
   if (i != none)
