@@ -114,14 +114,17 @@ Footprint particle_footprint(const ParticleArea& area, double l0, double bytes_p
   e.key = 4 * cells > e.bytes / 2 && area.domain ? "domain" : "l0";
   e.counts = significant(e.count, 3) + " particles (fluid region area / l0^2) and " +
              significant(cells, 3) + " cells";
-  // Particle ids and neighbour indices are 32-bit, cell indices int.
+  check_index_range(e, cells);
+  return e;
+}
+
+void check_index_range(Footprint& e, double cells) {
   if (e.count > std::numeric_limits<std::uint32_t>::max())
     e.overflows.emplace_back("l0", significant(e.count, 3) +
                                        " particles: more than the 2^32 particle indices hold");
   if (cells > std::numeric_limits<int>::max())
     e.overflows.emplace_back("l0", significant(cells, 3) +
                                        " cells over the fluid domain: more than 2^31");
-  return e;
 }
 
 std::vector<Vec2> fill_regions(const Scene& scene, const std::vector<Polygon>& regions, double l0,

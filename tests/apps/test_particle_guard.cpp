@@ -22,6 +22,11 @@ TEST_CASE("apps: the particle-loss guard stops at an empty fluid and at a loss a
   CHECK_THROWS_WITH(check_particle_loss({1, box}, {0, box}, 1, 0.0, 0.1),
                     Catch::Contains("1 of 1 particles") && Catch::Contains("the fluid is empty"));
   CHECK_THROWS_AS(check_particle_loss({0, box}, {0, box}, 1, 0.0, 0.1), fsi::RunError);
+  // A 3-D fluid's message names its three extents.
+  const std::pair<Eigen::VectorXd, Eigen::VectorXd> box3{Eigen::Vector3d(0.0, 0.0, 0.0),
+                                                         Eigen::Vector3d(1.0, 2.0, 3.0)};
+  CHECK_THROWS_WITH(check_particle_loss({10, box3}, {0, box3}, 2, 0.0, 0.1),
+                    Catch::Contains("10 of 10 particles left the domain [(0, 0, 0), (1, 2, 3)] m"));
 }
 
 TEST_CASE("apps: a fluid blown out of its domain stops the run with exit 3, either fluid",

@@ -41,4 +41,8 @@ struct ParticleGrid {
 Footprint particle_footprint(const ParticleArea& area, double l0, double bytes_per_particle,
                              const std::pair<Vec2, Vec2>& domain, const ParticleGrid& grid);
 
+/// Adds to `e.overflows` what exceeds a particle fluid's index types: 32-bit particle ids and
+/// neighbour indices for e.count particles, int cell indices for `cells` cells (key "l0").
+void check_index_range(Footprint& e, double cells);
+
 } // namespace fsi::app

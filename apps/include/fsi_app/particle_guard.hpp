@@ -4,6 +4,8 @@
 // particles in one step, would otherwise end "completed"; it stops the run instead.
 #include "fsi/core/types.hpp"
 
+#include <Eigen/Core>
+
 #include <cstddef>
 #include <utility>
 
@@ -12,7 +14,7 @@ namespace fsi::app {
 /// A particle fluid's count and the box outside which its particles are removed.
 struct ParticleCount {
   std::size_t count = 0;
-  std::pair<Vec2, Vec2> domain;
+  std::pair<Eigen::VectorXd, Eigen::VectorXd> domain; ///< lower and upper corner, D components
 };
 
 /// The largest fraction of a step's particles that may leave in that step.

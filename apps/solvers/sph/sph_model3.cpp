@@ -3,6 +3,7 @@
 #include "fsi/core/error.hpp"
 #include "fsi/core/format.hpp"
 #include "fsi/core/state_archive.hpp"
+#include "fsi_app/fluid_regions.hpp"
 
 #include <cmath>
 #include <limits>
@@ -96,12 +97,7 @@ Footprint footprint3(const Scene& scene) {
   e.key = "l0";
   e.counts = significant(e.count, 3) + " particles (fluid region volume / l0^3) and " +
              significant(cells, 3) + " cells";
-  if (e.count > std::numeric_limits<std::uint32_t>::max())
-    e.overflows.emplace_back("l0", significant(e.count, 3) +
-                                       " particles: more than the 2^32 particle indices hold");
-  if (cells > std::numeric_limits<int>::max())
-    e.overflows.emplace_back("l0", significant(cells, 3) +
-                                       " cells over the fluid domain: more than 2^31");
+  check_index_range(e, cells);
   return e;
 }
 
@@ -188,11 +184,9 @@ void SphModel3::report(JsonObject& run) const {
   run.add("fluid", f);
 }
 
-// The particle-loss guard's domain is 2-D: its x and y extent (the message's).
 std::optional<ParticleCount> SphModel3::particle_count() const {
   const auto& o = fluid_->options();
-  return ParticleCount{fluid_->particles().size(),
-                       {o.domain_min.head<2>(), o.domain_max.head<2>()}};
+  return ParticleCount{fluid_->particles().size(), {o.domain_min, o.domain_max}};
 }
 
 void SphModel3::write_state(StateArchive& archive) const {

@@ -51,9 +51,6 @@ public:
 private:
   bool behind(std::uint32_t j, const Vec2& x_wall, const Vec2& n_wall) const;
   erp::ConvexPart convex_part(std::size_t i) const;
-  Vec2 repulsion(double r, const Vec2& n_wall) const;
-  Vec2 normal_damping(std::size_t i, double r, const Vec2& n_wall, const Vec2& v_wall,
-                      double dt) const;
 
   WallOptions o_;
   double l0_, r_e_, re2_, rho_, c_, n0_;

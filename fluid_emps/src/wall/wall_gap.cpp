@@ -1,4 +1,5 @@
 // The wall-gap step limit (WallOptions::gap_courant).
+#include "contact_law.hpp"
 #include "fluid_emps/wall_terms.hpp"
 
 #include <algorithm>
@@ -11,14 +12,13 @@ namespace fsi::emps {
 // repulsion() floors it.
 double WallTerms::gap_dt(std::size_t i, double dx, double dy) const {
   double dt = std::numeric_limits<double>::infinity();
-  const double min_gap = 0.5e-3 * l0_;
   for (const erp::FaceHits& f : hits_.face) {
     if (f.segment[i] < 0) continue;
     const Vec2& n = f.n_wall[i];
     const double approach = -(Vec2(p_.vx[i], p_.vy[i]) - f.v_wall[i]).dot(n);
     if (approach <= 0) continue;
     const double gap = f.r[i] + dx * n.x() + dy * n.y();
-    dt = std::min(dt, o_.gap_courant * std::max(gap, min_gap) / approach);
+    dt = std::min(dt, gap_limit(gap, approach, l0_, o_.gap_courant));
   }
   return dt;
 }
