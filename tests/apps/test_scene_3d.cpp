@@ -9,6 +9,7 @@
 
 #include <catch2/catch.hpp>
 #include <sstream>
+#include <string>
 
 using namespace fsi::app;
 
@@ -136,4 +137,35 @@ TEST_CASE("apps: a 3-D scene reads a Gmsh T10 mesh with its physical surfaces",
                     Catch::Matchers::Equals("g.yaml:5: structures[0].mesh: " + cube +
                                             ": missing physical group \"nope\" (the file names: "
                                             "clamped, loaded, solid)"));
+}
+
+TEST_CASE("apps: sliding faces of a 3-D scene hold the displacement along their normal",
+          "[apps][scene][3d]") {
+  // Uniaxial tension t along y of a 0.3 x 0.5 x 0.2 box sliding on its bottom, left and back
+  // faces: u = t/E (-nu x, y, -nu z) exactly (linear in X, which T10 holds); t/E = 1e-7, so the
+  // geometric nonlinearity of St. Venant-Kirchhoff is about 1e-7 of u.
+  const double t = 1.0, E = 1e7, nu = 0.3, W = 0.3, H = 0.5, D = 0.2;
+  const Scene s = parse_scene(
+      box_scene, "b.yaml",
+      {"gravity=[0, 0, 0]", "structures[0].mesh.width=0.3", "structures[0].mesh.height=0.5",
+       "structures[0].mesh.depth=0.2", "structures[0].mesh.elements_y=3",
+       "structures[0].mesh.elements_z=2", "structures[0].clamped=[]",
+       "structures[0].sliding=[bottom, left, back]",
+       "structures[0].loads=[{boundary: top, force: [0, " + std::to_string(t * W * D) + ", 0]}]",
+       "output.probes=[]"});
+  const auto part = find_structure_plugin("fem")->build(s, 0);
+  auto& structure = dynamic_cast<fem_plugin::FemModelT10&>(*part).structure();
+  structure.solve_static();
+  const auto& X = structure.mesh().X;
+  double error = 0.0;
+  for (std::size_t k = 0; k < X.size(); ++k) {
+    const fsi::Vec3 exact = t / E * fsi::Vec3(-nu * X[k].x(), X[k].y(), -nu * X[k].z());
+    error = std::max(
+        error,
+        (structure.displacement().segment<3>(3 * static_cast<Eigen::Index>(k)) - exact).norm());
+  }
+  CHECK(error < 1e-5 * t / E * H);
+  // A face off the coordinate planes cannot slide by one component; an unknown tag is named.
+  CHECK_THROWS_WITH(parse_scene(box_scene, "b.yaml", {"structures[0].sliding=[lid]"}),
+                    Catch::Contains("sliding: unknown boundary tag 'lid'"));
 }

@@ -7,6 +7,8 @@
 #include "structure_fem/loads.hpp"
 
 #include <algorithm>
+#include <array>
+#include <limits>
 #include <stdexcept>
 
 namespace fsi::app::fem_plugin {
@@ -35,6 +37,7 @@ fem::TetMesh build_tet_mesh(const Scene& scene, const StructureBlock& block) {
       return mesh;
     }
     std::vector<std::string> groups = spec.clamped;
+    groups.insert(groups.end(), spec.sliding.begin(), spec.sliding.end());
     for (const auto& l : spec.loads) groups.push_back(l.boundary);
     return fem::read_gmsh_t10(spec.mesh.file.string(), groups);
   } catch (const InputError& e) {
@@ -52,6 +55,28 @@ double face_area(const fem::TetMesh& mesh, const std::string& tag) {
       .sum();
 }
 
+// The axis a sliding face's nodes share one coordinate of (to 1e-9 of the mesh's size); the
+// face slides in that plane, its displacement along the axis held.
+int plane_axis(const Scene& scene, const StructureBlock& block, const fem::TetMesh& mesh,
+               const std::string& tag) {
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  for (const Vec3& x : mesh.X) lo = lo.cwiseMin(x), hi = hi.cwiseMax(x);
+  const double tolerance = 1e-9 * (hi - lo).norm();
+  lo.setConstant(std::numeric_limits<double>::infinity()), hi = -lo;
+  for (const int k : mesh.node_set(tag))
+    lo = lo.cwiseMin(mesh.X[static_cast<std::size_t>(k)]),
+    hi = hi.cwiseMax(mesh.X[static_cast<std::size_t>(k)]);
+  const Vec3 spread = hi - lo;
+  int axis = -1;
+  for (int c = 0; c < 3; ++c)
+    if (spread[c] <= tolerance) axis = axis < 0 ? c : 3;
+  if (axis < 0 || axis == 3)
+    fail_at(scene, block.line, block.key + ".sliding",
+            "face '" + tag + "' does not lie in one plane x, y or z = const (a sliding face " +
+                "holds the displacement along that axis)");
+  return axis;
+}
+
 std::unique_ptr<fem::StructureT10> build_structure_t10(const Scene& scene,
                                                        const StructureBlock& block) {
   const StructureSpec& spec = block.as<StructureSpec>();
@@ -63,6 +88,11 @@ std::unique_ptr<fem::StructureT10> build_structure_t10(const Scene& scene,
   o.linear_solver = spec.options.linear_solver;
   o.gravity = scene.gravity3;
   for (const auto& tag : spec.clamped) o.clamped.push_back({tag, {true, true, true}, {}, {}});
+  for (const auto& tag : spec.sliding) {
+    std::array<bool, 3> fix{false, false, false};
+    fix[static_cast<std::size_t>(plane_axis(scene, block, mesh, tag))] = true;
+    o.clamped.push_back({tag, fix, {}, {}});
+  }
   fem::Vector loads = fem::Vector::Zero(3 * static_cast<Eigen::Index>(mesh.num_nodes()));
   for (const auto& l : spec.loads) {
     const Vec3 t = l.force3 / face_area(mesh, l.boundary);

@@ -57,6 +57,7 @@ void check(const Scene& scene, std::size_t index, Section& s, std::vector<Sectio
         if (!tags.count(t)) s.fail(key, "unknown boundary tag '" + t + "' (" + sides + ")");
     };
     check_tags(st.clamped, "clamped");
+    check_tags(st.sliding, "sliding");
     check_tags(st.interface, "interface");
     for (const auto& l : st.loads)
       if (!tags.count(l.boundary)) s.fail("loads", "unknown boundary tag '" + l.boundary + "'");

@@ -78,6 +78,12 @@ std::shared_ptr<const SolverSpec> read_structure(Section& s) {
   auto mat = s.required_block("material", "hyperelastic material (eq. 35 by default)");
   read_material(mat, st.options.material);
   st.clamped = s.names("clamped", {}, "boundary tags whose nodes are fixed");
+  const bool three_d = s.context().dimension == 3, doc = s.context().documenting();
+  if (three_d || doc)
+    st.sliding = s.names("sliding", {},
+                         "3-D: boundary tags whose faces slide in their plane, which must be a "
+                         "plane x, y or z = const: the displacement along that axis is held "
+                         "(symmetry planes, the sides of a slab)");
   st.clamped_motion =
       s.text("clamped_motion", "",
              "name of a wall with a motion: the clamped nodes follow its rigid motion (u, v, a "

@@ -36,6 +36,7 @@ struct StructureSpec final : SolverSpec {
   /// the linear solver; gravity and clamped conditions are set from the scene when built.
   fem::StructureOptions options;
   std::vector<std::string> clamped;   ///< boundary tags held fixed
+  std::vector<std::string> sliding;   ///< 3-D: tags sliding in their coordinate plane
   std::string clamped_motion;         ///< wall whose rigid motion the clamped nodes follow
   std::vector<std::string> interface; ///< boundary tags wetted by the fluid
   std::vector<PointLoadSpec> loads;
