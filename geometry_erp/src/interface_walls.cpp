@@ -2,7 +2,6 @@
 
 #include "fsi/core/error.hpp"
 
-#include <cassert>
 #include <string>
 
 namespace fsi::erp {
@@ -42,19 +41,6 @@ InterfaceWalls::InterfaceWalls(WallSet& walls, const InterfaceMesh& mesh, int gr
 double InterfaceWalls::parent_coordinate(int s, double t) const {
   const auto& [xi_a, xi_b] = xi_[static_cast<std::size_t>(s - first_segment_)];
   return xi_a + t * (xi_b - xi_a);
-}
-
-void InterfaceWalls::update_nodes(WallSet& walls, std::span<const Vec2> x, std::span<const Vec2> v,
-                                  std::span<const Vec2> a) const {
-  assert(x.size() == static_cast<std::size_t>(node_count_) && v.size() == x.size() &&
-         a.size() == x.size());
-  WallNodes& nodes = walls.nodes();
-  for (std::size_t k = 0; k < x.size(); ++k) {
-    const auto L = static_cast<std::size_t>(first_node_) + k;
-    nodes.x[L] = x[k]; // eq. 60
-    nodes.v[L] = v[k]; // eq. 61
-    nodes.a[L] = a[k]; // eq. 62
-  }
 }
 
 } // namespace fsi::erp

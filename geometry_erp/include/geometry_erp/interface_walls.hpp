@@ -10,14 +10,31 @@
 // (wall_set.hpp); an order-1 edge one segment b -> a. Parent coordinates: xi = -1 at a, 0 at m,
 // +1 at b.
 #include "fsi/core/interface_mesh.hpp"
+#include "fsi/core/node_motion.hpp"
 #include "fsi/core/types.hpp"
 #include "geometry_erp/wall_set.hpp"
 
 #include <array>
+#include <cassert>
 #include <span>
 #include <vector>
 
 namespace fsi::erp {
+
+/// Eqs. 60-62: the wall nodes first, first + 1, ... take the interface state x, v, a of the
+/// interface nodes 0, 1, ... (NCR, eq. 50), in 2-D and 3-D.
+template <int D>
+void set_interface_nodes(BasicNodeMotion<D>& nodes, int first, std::span<const VecD<D>> x,
+                         std::span<const VecD<D>> v, std::span<const VecD<D>> a) {
+  assert(v.size() == x.size() && a.size() == x.size() &&
+         static_cast<std::size_t>(first) + x.size() <= nodes.size());
+  for (std::size_t k = 0; k < x.size(); ++k) {
+    const auto L = static_cast<std::size_t>(first) + k;
+    nodes.x[L] = x[k]; // eq. 60
+    nodes.v[L] = v[k]; // eq. 61
+    nodes.a[L] = a[k]; // eq. 62
+  }
+}
 
 class InterfaceWalls {
 public:
@@ -52,7 +69,10 @@ public:
 
   /// Eqs. 60-62: x_L, v_L, a_L of every interface node from the structure's interface state.
   void update_nodes(WallSet& walls, std::span<const Vec2> x, std::span<const Vec2> v,
-                    std::span<const Vec2> a) const;
+                    std::span<const Vec2> a) const {
+    assert(x.size() == static_cast<std::size_t>(node_count_));
+    set_interface_nodes(walls.nodes(), first_node_, x, v, a);
+  }
 
 private:
   InterfaceMesh mesh_;
