@@ -13,7 +13,7 @@ using namespace fsi;
 
 int main(int argc, char** argv) {
   const double dp = argc > 1 ? std::atof(argv[1]) : 0.0025; // 40 across a; 0.00125: 80
-  const sph::SphOptions o = sph::dam_break_options(dp, 20.0, 2.0, {-0.05, -0.05}, {0.85, 0.6});
+  const sph::SphOptions o = sph::dam_break_options<2>(dp, 20.0, 2.0, {-0.05, -0.05}, {0.85, 0.6});
   const std::vector<sph::WallPolyline> tank{{{{0.0, 0.5}, {0.0, 0.0}, {0.8, 0.0}, {0.8, 0.5}}}};
   sph::SphFluid fluid(o, sph::fill_rectangle({0, 0}, {0.1, 0.2}, o.dp), tank);
   std::printf("t,front\n%.4f,%.6f\n", 0.0, fluid.surge_front());
