@@ -104,6 +104,7 @@ Parsed parse(std::istream& in, const std::string& path, int dim,
   }
   if (!have_nodes) throw InputError(path + ": no $Nodes section");
   if (!have_elements) throw InputError(path + ": no $Elements section");
+  if (!p.off_plane.empty()) throw InputError(p.off_plane);
 
   std::set<std::string> names;
   for (const auto& [key, name] : p.physical_name) names.insert(name);

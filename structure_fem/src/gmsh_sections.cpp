@@ -18,7 +18,8 @@ int nodes_per_element(Lexer& lex, int dim, long type, long tag) {
   switch (type) {
   case 11:
     if (dim == 3) return 10; // 10-node tetrahedron
-    break;
+    lex.fail(element + "10-node tetrahedron (type 11): a 3-D mesh: read it as a 3-D solid (T10), "
+                       "or mesh a surface at z = 0 with gmsh -2 -order 2");
   case 9:
     return 6; // 6-node triangle
   case 8:
@@ -31,6 +32,12 @@ int nodes_per_element(Lexer& lex, int dim, long type, long tag) {
                "4-node tetrahedron (type 4): wrong element order, need 10-node "
                "tetrahedra (type 11): " +
                remedy);
+    [[fallthrough]];
+  case 29:
+    if (dim == 2) // 4-, 10- or 20-node tetrahedron in a 2-D read
+      lex.fail(element + "tetrahedron (type " + std::to_string(type) +
+               "): a 3-D mesh: read it as a 3-D solid (10-node tetrahedra, gmsh -3 -order 2), "
+               "or mesh a surface at z = 0 with gmsh -2 -order 2");
     break;
   case 2:
     lex.fail(element +
@@ -59,15 +66,16 @@ int nodes_per_element(Lexer& lex, int dim, long type, long tag) {
                      : " (only 11, 9, 8 and 15: a 3D mesh from gmsh -3 -order 2)"));
 }
 
-/// A node's z in a 2-D mesh: it must lie in the plane z = 0.
-void check_planar(Lexer& lex, long tag, double z) {
-  if (std::abs(z) > 1e-12)
-    lex.fail("node " + std::to_string(tag) + ": z = " + std::to_string(z) +
-             " m: the mesh must lie in the plane z = 0 (draw the geometry at z = 0)");
+/// A node's z in a 2-D mesh: it must lie in the plane z = 0. The first node off it is kept and
+/// refused after the elements, so that a 3-D mesh is named as such (its tetrahedra) first.
+void check_planar(const Lexer& lex, Parsed& p, long tag, double z) {
+  if (std::abs(z) > 1e-12 && p.off_plane.empty())
+    p.off_plane = lex.where() + "node " + std::to_string(tag) + ": z = " + std::to_string(z) +
+                  " m: the mesh must lie in the plane z = 0 (draw the geometry at z = 0)";
 }
 
 void add_node(Lexer& lex, Parsed& p, long tag, double x, double y, double z, int at) {
-  if (p.dim == 2) check_planar(lex, tag, z);
+  if (p.dim == 2) check_planar(lex, p, tag, z);
   const auto [it, fresh] = p.node_index.emplace(tag, static_cast<int>(p.X.size()));
   if (!fresh)
     throw InputError(lex.binary()

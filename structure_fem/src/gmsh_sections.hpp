@@ -37,6 +37,7 @@ struct Parsed {
   std::vector<int> node_line; // ASCII files only
   std::vector<RawElement> elements;
   std::set<std::vector<int>> domain_corners; // sorted (MSH 2.2 repeats an element per group)
+  std::string off_plane; // 2-D: the refusal of the first node off z = 0 (empty: none)
 
   /// Gmsh's element type of the domain (9: 6-node triangle, 11: 10-node tetrahedron).
   long domain_type() const { return dim == 2 ? 9 : 11; }

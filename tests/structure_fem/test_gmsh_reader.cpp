@@ -119,6 +119,17 @@ TEST_CASE("fem: Gmsh reader: first-order, quadrangle and off-plane meshes say ho
                        Contains("gmsh -2 -order 2"));
   const std::string z = message_of([] { read_gmsh(gmsh_fixture("plate_z.msh")); });
   CHECK_THAT(z, Contains("plate_z.msh:") && Contains("z = 0.5") && Contains("plane z = 0"));
+  // A 3-D mesh read as 2-D is named as such (its tetrahedra), not by its first node off z = 0.
+  const std::string cube = message_of([] { read_gmsh(gmsh_fixture("cube_41.msh")); });
+  CHECK_THAT(cube, Contains("cube_41.msh:") &&
+                       Contains("10-node tetrahedron (type 11): a 3-D mesh: read it as a 3-D "
+                                "solid (T10), or mesh a surface at z = 0 with gmsh -2 -order 2"));
+  std::istringstream tet("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n4\n1 0 0 0\n2 1 0 0\n"
+                         "3 0 1 0\n4 0 0 1\n$EndNodes\n$Elements\n1\n1 4 2 0 1 1 2 3 4\n"
+                         "$EndElements\n");
+  CHECK(message_of([&] { read_gmsh(tet, "tet.msh"); }) ==
+        "tet.msh:13: element 1: tetrahedron (type 4): a 3-D mesh: read it as a 3-D solid (10-node "
+        "tetrahedra, gmsh -3 -order 2), or mesh a surface at z = 0 with gmsh -2 -order 2");
   const std::string bin22 = message_of([] { read_gmsh(gmsh_fixture("plate_22_bin.msh")); });
   CHECK_THAT(bin22, Contains("binary .msh 2.2") && Contains("-format msh41"));
 }
