@@ -30,15 +30,18 @@ std::vector<Vec3> fill_box(const Vec3& lo, const Vec3& hi, double dp) {
   return out;
 }
 
-std::vector<WallPoint3> box_walls(const Vec3& lo, const Vec3& hi, double dp, int layers, int open) {
+std::vector<WallPoint3> box_walls(const Vec3& lo, const Vec3& hi, double dp, int layers, int open,
+                                  std::array<bool, 3> periodic) {
   if (!(dp > 0.0) || layers < 1 || !((hi - lo).minCoeff() > 0.0) || open < 0 || open > 2)
     throw InputError("fluid_sph: box_walls needs dp > 0, layers >= 1, hi > lo and open in 0-2");
   const double depth = layers * dp;
-  // Lattice index ranges: `layers` beyond both faces, none beyond the open one.
+  // Lattice index ranges: `layers` beyond both faces, none beyond the open one nor along a
+  // periodic axis (there the points stay inside [lo, hi], so none is behind those faces).
   long first[3], last[3];
   for (int c = 0; c < 3; ++c) {
-    first[c] = -layers;
-    last[c] = layers_in(lo[c], hi[c], dp) + (c == open ? 0 : layers);
+    const bool wraps = periodic[static_cast<std::size_t>(c)];
+    first[c] = wraps ? 0 : -layers;
+    last[c] = layers_in(lo[c], hi[c], dp) + (c == open || wraps ? 0 : layers);
   }
   std::vector<WallPoint3> out;
   for (long k = first[2]; k < last[2]; ++k)

@@ -44,3 +44,33 @@ TEST_CASE("apps: the 3-D SPH scene's tank is open at max.y, its probes read in 3
   p.quantity = "pressure";
   CHECK(*model.probe(p) > 0.0);
 }
+
+TEST_CASE("apps: a periodic_z slab has no walls behind its z faces, and bad ones are refused",
+          "[apps][sph][3d]") {
+  const std::string path = FSI_SOURCE_DIR "/data/scenes/dam_break_slab_sph_3d.yaml";
+  const Scene scene = load_scene(path, {});
+  sph_plugin::SphModel3 model(scene);
+  const auto& f = model.fluid();
+  CHECK(f.options().periodic_z);
+  CHECK(f.options().domain_min.z() == 0.0);
+  CHECK(f.options().domain_max.z() == 0.02); // the period: the tank's depth
+  CHECK(f.particles().size() == 40 * 80 * 8);
+  const auto& w = f.walls();
+  for (std::size_t a = 0; a < w.size(); ++a) {
+    CHECK(w.n[2][a] == 0.0);
+    CHECK(w.x[2][a] > 0.0);
+    CHECK(w.x[2][a] < 0.02);
+  }
+  // (overrides, what the one-line message says after "FILE:LINE: ")
+  const std::vector<std::pair<std::vector<std::string>, std::string>> bad = {
+      {{"fluid.tank.max=[0.8, 0.5, 0.021]"},
+       "fluid.periodic_z: the tank's depth 0.021 m is not a whole number of l0 = 0.0025 m"},
+      {{"fluid.domain={min: [-0.1, -0.1, 0.0], max: [0.9, 0.6, 0.03]}"},
+       "fluid.domain: with periodic_z its z range must be the tank's (the period)"},
+      {{"fluid.tank.max=[0.8, 0.5, 0.015]", "fluid.regions[0].max=[0.1, 0.2, 0.015]"},
+       "periodic length z"}};
+  for (const auto& [sets, what] : bad) {
+    INFO(sets.front());
+    CHECK_THROWS_WITH(sph_plugin::SphModel3(load_scene(path, sets)), Catch::Contains(what));
+  }
+}

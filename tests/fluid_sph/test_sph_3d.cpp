@@ -152,6 +152,23 @@ TEST_CASE("sph 3-D: the box tank's dummies: 4 layers under the floor and behind 
     CHECK(q.depth > 0.0);
     CHECK(q.depth < 4.0 * dp);
   }
+  // Periodic along y (a slab): the x sides and the floor only, each a layer of the 3 y rows per
+  // dp of depth, every normal in the x-z plane: (4 + 8) x 3 x (5 + 4) points minus the inside,
+  // less those 4 dp or more from the walls (beyond the floor's two edges).
+  const auto slab = sph::box_walls(lo, hi, dp, 4, 2, {false, true, false});
+  std::size_t in_slab = 0;
+  for (int k = -4; k < 5; ++k)
+    for (int i = -4; i < 8; ++i) {
+      const double dx = std::max({-i - 0.5, i + 0.5 - 4.0, 0.0}), dz = std::max(-k - 0.5, 0.0);
+      const double d = std::sqrt(dx * dx + dz * dz);
+      if (d > 0.0 && d < 4.0) in_slab += 3;
+    }
+  CHECK(slab.size() == in_slab);
+  for (const auto& q : slab) {
+    CHECK(q.n.y() == 0.0);
+    CHECK(q.x.y() > lo.y());
+    CHECK(q.x.y() < hi.y());
+  }
 }
 
 TEST_CASE("sph 3-D: hydrostatic tank settles without damping, bottom p within 1 % of rho g H",

@@ -40,6 +40,10 @@ sph::SphOptions3 sph_options3(const Scene& scene) {
     const auto [lo, hi] = bounds(f);
     o.domain_min = lo - Vec3::Constant(8.0 * o.dp), o.domain_max = hi + Vec3::Constant(8.0 * o.dp);
   }
+  if (f.periodic_z) { // the period: the tank's depth
+    o.periodic_z = true;
+    o.domain_min.z() = f.tank->min.z(), o.domain_max.z() = f.tank->max.z();
+  }
   return o;
 }
 
@@ -118,7 +122,8 @@ SphModel3::SphModel3(const Scene& scene) {
   const std::vector<Vec3> positions = fill_regions3(f);
   initial_count_ = positions.size();
   const std::vector<sph::WallPoint3> walls =
-      f.tank ? sph::box_walls(f.tank->min, f.tank->max, f.options.dp, 4, 1)
+      f.tank ? sph::box_walls(f.tank->min, f.tank->max, f.options.dp, 4, 1,
+                              {false, false, f.periodic_z})
              : std::vector<sph::WallPoint3>{};
   try {
     fluid_ = std::make_unique<sph::SphFluid3>(sph_options3(scene), positions, walls);

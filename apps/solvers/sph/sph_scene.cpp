@@ -27,10 +27,14 @@ std::shared_ptr<const SolverSpec> read_sph(Section& s) {
   const bool doc = s.context().documenting();
   if (!doc) refuse_foreign_keys(s);
   if (!doc && s.context().dimension == 3) return read_sph3(s);
-  if (doc)
+  if (doc) {
     read_tank(s);
-  else if (s.has("tank"))
-    s.fail("tank", "is a key of 3-D scenes (dimension: 3); in 2-D the tank is a wall polyline");
+    read_periodic_z(s);
+  } else {
+    if (s.has("tank"))
+      s.fail("tank", "is a key of 3-D scenes (dimension: 3); in 2-D the tank is a wall polyline");
+    if (s.has("periodic_z")) s.fail("periodic_z", "is a key of 3-D scenes (dimension: 3)");
+  }
   auto spec = std::make_shared<SphSpec>();
   SphSpec& f = *spec;
   OptionReader reader(s);

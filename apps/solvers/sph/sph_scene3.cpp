@@ -4,6 +4,8 @@
 
 #include "fsi/core/format.hpp"
 
+#include <cmath>
+
 namespace fsi::app::sph_plugin {
 
 namespace {
@@ -37,6 +39,13 @@ std::optional<Box3> read_tank(Section& s) {
   return read_box(*t, "the tank's inside");
 }
 
+bool read_periodic_z(Section& s) {
+  return s.boolean("periodic_z", false,
+                   "(dimension 3) the fluid and the tank wrap along z over the tank's depth, a "
+                   "whole number of l0: a slab with no walls behind its z faces (quasi-2-D runs); "
+                   "needs tank, and a domain (if given) of the tank's z");
+}
+
 std::shared_ptr<const SolverSpec> read_sph3(Section& s) {
   for (const char* key :
        {"inflow", "interface_layers", "interface_spacing", "interface_acceleration"})
@@ -55,6 +64,17 @@ std::shared_ptr<const SolverSpec> read_sph3(Section& s) {
                        " m is larger than fluid region " + std::to_string(i));
   if (auto d = s.block("domain", "particles leaving this box are removed and counted"))
     f.domain = read_box(*d, "the domain");
+  f.periodic_z = read_periodic_z(s);
+  if (f.periodic_z && !s.context().documenting()) {
+    if (!f.tank) s.fail("periodic_z", "needs a tank (its depth along z is the period)");
+    const double layers = (f.tank->max.z() - f.tank->min.z()) / f.options.dp;
+    if (std::abs(layers - std::round(layers)) > 1e-9 * layers)
+      s.fail("periodic_z", "the tank's depth " + significant(f.tank->max.z() - f.tank->min.z(), 6) +
+                               " m is not a whole number of l0 = " + significant(f.options.dp, 6) +
+                               " m (the lattice would not wrap)");
+    if (f.domain && (f.domain->min.z() != f.tank->min.z() || f.domain->max.z() != f.tank->max.z()))
+      s.fail("domain", "with periodic_z its z range must be the tank's (the period)");
+  }
   if (f.options.transport_velocity && f.options.free_surface)
     s.fail("transport_velocity", "needs free_surface: false (eq. 24 is for internal flows)");
   return spec;

@@ -34,6 +34,7 @@ struct SphSpec3 final : SolverSpec {
   std::optional<Box3> tank;   ///< the tank's inside, open at max.y; absent: no walls
   std::vector<Box3> regions;  ///< boxes filled at spacing l0 (l0/2 from their faces)
   std::optional<Box3> domain; ///< particles leaving it are removed; absent: tank and regions
+  bool periodic_z = false;    ///< the fluid and the tank wrap along z over the tank's depth
 };
 
 /// Reads the keys of the fluid block (type excepted) into an SphSpec (in a 3-D scene, an
@@ -46,5 +47,7 @@ std::shared_ptr<const SolverSpec> read_sph3(Section& s);
 
 /// The `tank` block: documented in either dimension, read in 3-D.
 std::optional<Box3> read_tank(Section& s);
+/// The key `periodic_z` (3-D): the fluid and the tank wrap along z (documented in 2-D too).
+bool read_periodic_z(Section& s);
 
 } // namespace fsi::app::sph_plugin

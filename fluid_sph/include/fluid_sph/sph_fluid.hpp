@@ -313,8 +313,9 @@ std::vector<Vec3> fill_box(const Vec3& lo, const Vec3& hi, double dp);
 /// `layers` dp outside its floor and four sides, below hi along the open axis, with the normal of
 /// the nearest face (on an edge or corner the normalised sum of the faces' normals, as at a
 /// polyline's vertex) and the depth behind the nearest feature along it. `open`: the axis whose hi
-/// face is open (2: z, 1: y for a scene's tank, y up).
+/// face is open (2: z, 1: y for a scene's tank, y up). `periodic`: axes along which the tank
+/// wraps (a slab), with no dummies behind those two faces and none beyond [lo, hi] along it.
 std::vector<WallPoint3> box_walls(const Vec3& lo, const Vec3& hi, double dp, int layers = 4,
-                                  int open = 2);
+                                  int open = 2, std::array<bool, 3> periodic = {});
 
 } // namespace fsi::sph
