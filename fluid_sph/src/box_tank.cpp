@@ -3,31 +3,17 @@
 #include "fluid_sph/sph_fluid.hpp"
 
 #include "fsi/core/error.hpp"
+#include "particles/lattice.hpp"
 
 #include <cmath>
 
 namespace fsi::sph {
 
-namespace {
-
-/// The whole lattice layers of spacing dp in [lo, hi) along one axis.
-long layers_in(double lo, double hi, double dp) {
-  return static_cast<long>(std::floor((hi - lo) / dp + 1e-9));
-}
-
-} // namespace
+using particles::lattice_layers;
 
 std::vector<Vec3> fill_box(const Vec3& lo, const Vec3& hi, double dp) {
   if (!(dp > 0.0)) throw InputError("fluid_sph: fill_box needs dp > 0");
-  const long ni = layers_in(lo.x(), hi.x(), dp), nj = layers_in(lo.y(), hi.y(), dp),
-             nk = layers_in(lo.z(), hi.z(), dp);
-  std::vector<Vec3> out;
-  for (long k = 0; k < nk; ++k)
-    for (long j = 0; j < nj; ++j)
-      for (long i = 0; i < ni; ++i)
-        out.push_back(lo + dp * Vec3(static_cast<double>(i) + 0.5, static_cast<double>(j) + 0.5,
-                                     static_cast<double>(k) + 0.5));
-  return out;
+  return particles::lattice_box<3>(lo, hi, dp);
 }
 
 std::vector<WallPoint3> box_walls(const Vec3& lo, const Vec3& hi, double dp, int layers, int open,
@@ -41,7 +27,7 @@ std::vector<WallPoint3> box_walls(const Vec3& lo, const Vec3& hi, double dp, int
   for (int c = 0; c < 3; ++c) {
     const bool wraps = periodic[static_cast<std::size_t>(c)];
     first[c] = wraps ? 0 : -layers;
-    last[c] = layers_in(lo[c], hi[c], dp) + (c == open || wraps ? 0 : layers);
+    last[c] = lattice_layers(lo[c], hi[c], dp) + (c == open || wraps ? 0 : layers);
   }
   std::vector<WallPoint3> out;
   for (long k = first[2]; k < last[2]; ++k)

@@ -5,6 +5,7 @@
 #include "shared.hpp"
 
 #include "fsi/core/error.hpp"
+#include "particles/lattice.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -13,13 +14,7 @@
 namespace fsi::sph {
 
 std::vector<Vec2> fill_rectangle(const Vec2& lo, const Vec2& hi, double dp) {
-  std::vector<Vec2> out;
-  const int nx = static_cast<int>(std::floor((hi.x() - lo.x()) / dp + 1e-9));
-  const int ny = static_cast<int>(std::floor((hi.y() - lo.y()) / dp + 1e-9));
-  out.reserve(static_cast<std::size_t>(std::max(nx, 0) * std::max(ny, 0)));
-  for (int j = 0; j < ny; ++j)
-    for (int i = 0; i < nx; ++i) out.emplace_back(lo.x() + (i + 0.5) * dp, lo.y() + (j + 0.5) * dp);
-  return out;
+  return particles::lattice_box<2>(lo, hi, dp);
 }
 
 template <int D>

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "fsi/core/error.hpp"
+#include "particles/lattice.hpp"
 
 namespace fsi::tlsph {
 
@@ -80,17 +81,9 @@ SolidGeometry3 fill_box(const Vec3& lo, const Vec3& hi, double dp) {
   if (!(hi.x() > lo.x() && hi.y() > lo.y() && hi.z() > lo.z()))
     throw InputError("tlsph geometry: box needs hi > lo in x, y and z");
   // Points at dp/2 from the sides; a side that is not a multiple of dp keeps the whole layers.
-  const Vec3 cells = (hi - lo) / dp;
-  const auto count = [](double c) { return static_cast<long>(std::floor(c + 1e-9)); };
-  const long ni = count(cells.x()), nj = count(cells.y()), nk = count(cells.z());
   SolidGeometry3 g;
-  for (long k = 0; k < nk; ++k)
-    for (long j = 0; j < nj; ++j)
-      for (long i = 0; i < ni; ++i) {
-        g.X0.push_back(lo + dp * Vec3(static_cast<double>(i) + 0.5, static_cast<double>(j) + 0.5,
-                                      static_cast<double>(k) + 0.5));
-        g.V0.push_back(dp * dp * dp);
-      }
+  g.X0 = particles::lattice_box<3>(lo, hi, dp);
+  g.V0.assign(g.X0.size(), dp * dp * dp);
   return g;
 }
 
