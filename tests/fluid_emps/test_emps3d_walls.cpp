@@ -73,7 +73,7 @@ struct TankRun {
 };
 
 /// Still water of depth H = nz l0 filling the floor nx l0 x ny l0 of a tank of triangles 2 H high,
-/// the shipped 2-D tank's recipe (wall_model default, alpha_rep 1e5, damped for T_d).
+/// the shipped 2-D tank's recipe (wall_model default, alpha_rep 1e5, damped for T_d = 2 s).
 TankRun hydrostatic_tank(const erp::TriangleWallSet& walls, int nx, int ny, int nz, double l0,
                          double t_damp, double t_end) {
   emps::FluidOptions3 o = emps::test::water<3>(l0, -0.1, 1.0);
@@ -128,8 +128,9 @@ TankRun hydrostatic_tank(const erp::TriangleWallSet& walls, int nx, int ny, int 
 }
 
 /// Reports the acceptance figures of #43 for the tank and asserts what the run meets today: no
-/// particle left the tank or crossed a wall. The bottom layer within 1 % of rho g (H - l0/2) and
-/// the falling kinetic energy are not yet met (docs/fluid_emps.md, "3-D").
+/// particle left the tank or crossed a wall, the kinetic energy after the damping phase never
+/// above its value at its end. The bottom layer within 1 % of rho g (H - l0/2) is not yet met
+/// (docs/fluid_emps.md, "3-D").
 void report_tank(const TankRun& r, double l0) {
   const auto percent = [&](double p) { return 100.0 * (p / r.p_exact - 1.0); };
   WARN("bottom layer " << percent(r.p_bottom) << " % of rho g (H - l0/2) = " << r.p_exact
@@ -140,6 +141,8 @@ void report_tank(const TankRun& r, double l0) {
                        << " J; nearest centre to a wall " << r.min_gap / l0 << " l0");
   CHECK(r.removed == 0);
   CHECK(r.min_gap > 0.0); // no particle through a wall (the run's guard also stops on one)
+  CHECK(r.ke_after_max <= r.ke_damped);
+  CHECK(r.ke_end < r.ke_damped);
 }
 
 /// The walls as an ASCII STL file at `path`, each facet's normal the fluid normal.
@@ -161,12 +164,12 @@ void write_stl(const erp::TriangleWallSet& walls, const std::filesystem::path& p
 
 } // namespace
 
-// The acceptance run of #43 (docs/fluid_emps.md, "3-D").
+// The acceptance run of #43, its bottom-pressure criterion not yet met (docs/fluid_emps.md, "3-D").
 TEST_CASE("emps 3-D walls: report: still water in a box tank of triangles", "[walls3d][slow]") {
   const double l0 = 0.02;
   erp::TriangleWallSet walls;
   erp::add_box_tank(walls, Vec3::Zero(), Vec3(10 * l0, 10 * l0, 20 * l0), false, 0);
-  report_tank(hydrostatic_tank(walls, 10, 10, 10, l0, 1.0, 2.0), l0);
+  report_tank(hydrostatic_tank(walls, 10, 10, 10, l0, 2.0, 3.0), l0);
 }
 
 TEST_CASE("emps 3-D walls: report: still water in a box tank read from an STL file",
@@ -182,5 +185,5 @@ TEST_CASE("emps 3-D walls: report: still water in a box tank read from an STL fi
   CHECK(stl.open_edges == 0);
   erp::TriangleWallSet walls;
   walls.add_triangles(stl.points, stl.triangles, 0);
-  report_tank(hydrostatic_tank(walls, 10, 10, 10, l0, 1.0, 2.0), l0);
+  report_tank(hydrostatic_tank(walls, 10, 10, 10, l0, 2.0, 3.0), l0);
 }

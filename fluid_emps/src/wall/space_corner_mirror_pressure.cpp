@@ -9,12 +9,13 @@
 namespace fsi::emps {
 
 // One face's mirror (eqs. 25-26) images the real fluid behind that plane only; the lattice behind
-// two planes (and three) belongs to no single mirror. Its image is the fluid reflected across
-// each of them, x_j'' = F(x_j), F = ref_l o ref_k (o ref_m): the sum of eq. 25 over the real
-// neighbours of x_i'' = F^-1(x_i) with p_i' = p_i (eq. 26), turned back by F's linear part
-// R_ref(n_l) R_ref(n_k) (...). Each pair of faces is counted once and the three once, as the
-// lattice in SpaceWallTerms::pnd (exact at right angles; another turn scales each image by
-// turn_share, the corner's by the product of its three pairs').
+// two planes (and three) belongs to no single mirror. Its image is the fluid reflected across each
+// of them: x_i'' = ref_l(ref_k(x_i)) (x_i reflected across each plane in turn), the real fluid's
+// image F(x_j) with F = ref_k o ref_l its inverse, |F(x_j) - x_i| = |x_j - x_i''|. The sum of
+// eq. 25 over the real neighbours of x_i'' with p_i' = p_i (eq. 26) is turned back by F's linear
+// part R_ref(n_k) R_ref(n_l) (three planes alike). Each pair of faces is counted once and the
+// three once, as the lattice in SpaceWallTerms::pnd (exact at right angles; another turn scales
+// each image by turn_share, the corner's by the product of its three pairs').
 Vec3 SpaceWallTerms::corner_mirror_pressure(std::size_t i) const {
   std::array<std::size_t, max_faces3> on{};
   std::size_t faces = 0;
@@ -25,7 +26,7 @@ Vec3 SpaceWallTerms::corner_mirror_pressure(std::size_t i) const {
   // The image across faces on[a] for a in `set` (bit a): its gradient sum, turned back.
   const auto image = [&](unsigned set) {
     Vec3 m = position(i);
-    Mat3 turn = Mat3::Identity(); // F's linear part, m = F^-1(x_i)
+    Mat3 turn = Mat3::Identity(); // F's linear part; m = x_i''
     for (std::size_t a = 0; a < faces; ++a) {
       if (!(set >> a & 1u)) continue;
       const Vec3 &x_wall = hits_[on[a]].x_wall[i], &n_wall = hits_[on[a]].n_wall[i];
