@@ -117,9 +117,11 @@ template <int D> void BasicEmpsFluid<D>::pressure_gradient(double dt) {
         f.f_contact[i] = -V * contact[k];
         f.f_viscous[i] = s >= 0 ? visc[i] : Vec2::Zero();
       }
-    } else { // 3-D: each face's mirror pressure term and contact term (eqs. 25-27)
+    } else { // 3-D: each face's mirror pressure and contact terms (eqs. 25-27), the images
+             // behind two or three faces (edges, corners) once
       const VecSum<D> fluid = fluid_gradient(i, nullptr);
       for (int a = 0; a < D; ++a) grad[a] = c_grad * fluid[static_cast<std::size_t>(a)];
+      grad += walls_.terms.corner_mirror_pressure(i);
       for (std::size_t k = 0; k < max_faces3; ++k) {
         if (walls_.hits[k].triangle[i] < 0) continue;
         grad += walls_.terms.mirror_pressure(i, k) + walls_.terms.contact(i, k, dt);

@@ -5,6 +5,7 @@
 #include "fluid_emps/emps_fluid.hpp"
 
 #include <algorithm>
+#include <vector>
 
 namespace fsi::emps::test {
 
@@ -17,6 +18,22 @@ template <int D> BasicFluidOptions<D> water(double l0, double lo, double hi) {
   o.domain_min = VecD<D>::Constant(lo);
   o.domain_max = VecD<D>::Constant(hi);
   return o;
+}
+
+/// The lattice at l0/2 + k l0 filling [0, nx l0] x [0, ny l0] x [0, nz l0].
+inline std::vector<Vec3> block(int nx, int ny, int nz, double l0) {
+  std::vector<Vec3> x;
+  for (int k = 0; k < nz; ++k)
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i) x.push_back(l0 * Vec3(i + 0.5, j + 0.5, k + 0.5));
+  return x;
+}
+
+/// How many of the box [0, L]^3's walls lie within r_e of x.
+inline int walls_near(const Vec3& x, double L, double r_e) {
+  int n = 0;
+  for (int a = 0; a < 3; ++a) n += (x[a] < r_e) + (L - x[a] < r_e);
+  return n;
 }
 
 template <int D> VecD<D> momentum(const BasicParticles<D>& p) {

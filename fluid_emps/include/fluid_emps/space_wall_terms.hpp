@@ -3,8 +3,9 @@
 // what WallOptions adds), the counterpart of WallTerms: each a function of one particle i and one
 // face k of the walls that act on it (face 0 the nearest triangle of eq. 18, faces 1 and 2 the
 // other planes of a concave edge or corner, TriangleLocator::corner_faces). One file per term:
-// space_wall_pnd.cpp, space_mirror_pressure.cpp, space_mirror_viscous.cpp, space_wall_contact.cpp,
-// space_wall_gap.cpp. Not in 3-D yet: the convex corners' wedge, WallContact::viscous and
+// space_wall_pnd.cpp, space_mirror_pressure.cpp, space_corner_mirror_pressure.cpp,
+// space_mirror_viscous.cpp, space_wall_contact.cpp, space_wall_gap.cpp. Not in 3-D yet: the viscous
+// mirror's images behind two and three walls, the convex corners' wedge, WallContact::viscous and
 // WallPressure::neighbours (the fluid refuses the last two).
 #include "fluid_emps/options.hpp"
 #include "fluid_emps/particles.hpp"
@@ -40,6 +41,10 @@ public:
   double pnd(std::size_t i, double fluid_pnd) const;
   /// (d/n0) R_ref <grad p>_i' (eqs. 25-26) on face k with p_i' = p_i (space_mirror_pressure.cpp).
   Vec3 mirror_pressure(std::size_t i, std::size_t k) const;
+  /// The pressure term of the lattice behind two walls (each pair of faces) and three (a corner),
+  /// which no single face's mirror images: eqs. 25-26 across several planes
+  /// (space_corner_mirror_pressure.cpp). Zero with fewer than two faces.
+  Vec3 corner_mirror_pressure(std::size_t i) const;
   /// The viscous mirror sums on face k (eq. 24; `approach`: the approach viscosity's too)
   /// (space_mirror_viscous.cpp).
   MirrorViscous3 mirror_viscous(std::size_t i, std::size_t k, bool approach) const;
@@ -51,6 +56,9 @@ public:
   double gap_dt(std::size_t i, const Vec3& dx) const;
 
 private:
+  /// The turn between two faces as a share of a right angle (1 at 90 degrees), as in 2-D's
+  /// concave_overlap: the weight of the lattice behind both.
+  static double turn_share(const Vec3& n1, const Vec3& n2);
   bool behind(std::uint32_t j, const Vec3& x_wall, const Vec3& n_wall) const;
   /// f(j) for every binned particle in the cells that the ball of radius r_e around m touches
   /// (at most 2 x 2 x 2 of the grid's cells of side >= r_e, not the 27 of for_each_near).

@@ -2,18 +2,8 @@
 #include "fluid_emps/space_wall_terms.hpp"
 
 #include <algorithm>
-#include <cmath>
-#include <numbers>
 
 namespace fsi::emps {
-
-namespace {
-/// The turn between two faces as a share of a right angle (1 at 90 degrees), as in 2-D's
-/// concave_overlap.
-double turn_share(const Vec3& n1, const Vec3& n2) {
-  return std::acos(std::clamp(n1.dot(n2), -1.0, 1.0)) / (0.5 * std::numbers::pi);
-}
-} // namespace
 
 // n*_i = sum_j w_ij + z (eqs. 9, 20): z(r_k) of every face, the lattice behind two faces
 // (edge_weight_sum3) taken off once per pair and the lattice behind all three (corner_weight_sum3)

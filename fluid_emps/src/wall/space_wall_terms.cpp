@@ -1,5 +1,9 @@
 #include "fluid_emps/space_wall_terms.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
 namespace fsi::emps {
 
 SpaceWallTerms::SpaceWallTerms(const FluidOptions3& options, double n0, const Particles3& particles,
@@ -15,6 +19,10 @@ bool SpaceWallTerms::behind(std::uint32_t j, const Vec3& x_wall, const Vec3& n_w
   double s = 0.0;
   for (int a = 0; a < 3; ++a) s += (p_.position[a][j] - x_wall[a]) * n_wall[a];
   return s < 0.0;
+}
+
+double SpaceWallTerms::turn_share(const Vec3& n1, const Vec3& n2) {
+  return std::acos(std::clamp(n1.dot(n2), -1.0, 1.0)) / (0.5 * std::numbers::pi);
 }
 
 } // namespace fsi::emps

@@ -1,0 +1,102 @@
+// The ERP pressure gradient of the 3-D walls at rest (#43): on a lattice filling a closed box of
+// triangles, the fluid sum (eq. 10) and the wall mirrors (eqs. 25-26) under a given pressure field
+// against its exact gradient, by the number of walls within r_e (faces, concave edges, corners).
+#include "fluid_emps/space_wall_terms.hpp"
+#include "geometry_erp/box_walls.hpp"
+#include "test_support.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+
+using namespace fsi;
+
+namespace {
+
+/// Worst |<grad p>_i - grad p| / rho g over the particles with 0, 1, 2, 3 walls within r_e of a
+/// lattice at rest filling [0, L]^3 (L = n l0) under the pressure field p(x), without or with the
+/// images behind two and three walls (SpaceWallTerms::corner_mirror_pressure). With `vertical`
+/// only the walls x = 0, L and y = 0, L count and particles within r_e of the floor or the lid
+/// are left out.
+std::array<double, 4> gradient_residual(int n, const std::function<double(const Vec3&)>& p_of,
+                                        const Vec3& grad_p, bool corner_images,
+                                        bool vertical = false) {
+  const double l0 = 0.01, L = n * l0, rho_g = 1000.0 * 9.81;
+  const emps::FluidOptions3 o = emps::test::water<3>(l0, -0.05, 0.15);
+  const double r_e = o.r_e(), n0 = erp::lattice_n0<3>(l0, r_e, particles::MpsWeight(r_e));
+  erp::TriangleWallSet walls;
+  erp::add_box_tank(walls, Vec3::Zero(), Vec3::Constant(L), false, 0);
+  const std::vector<Vec3> x = emps::test::block(n, n, n, l0);
+  emps::Particles3 p;
+  p.resize(x.size());
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    for (int a = 0; a < 3; ++a) p.position[a][i] = x[i][a];
+    p.p[i] = p_of(x[i]);
+  }
+  particles::BasicCellGrid<3> grid(o.domain_min, o.domain_max, 1.1 * r_e);
+  grid.bin(p.position.coords(), p.size());
+  const erp::TriangleLocator locator(walls, r_e);
+  emps::SpaceHits hits;
+  locator.query(p.position[0], p.position[1], p.position[2], hits[0]);
+  locator.corner_faces(p.position[0], p.position[1], p.position[2], hits);
+  const emps::SpaceWallTerms terms(o, n0, p, grid, hits);
+  const particles::MpsWeight w(r_e);
+  std::array<double, 4> worst{};
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    Vec3 fluid = Vec3::Zero(); // eq. 10 over every other particle
+    for (std::size_t j = 0; j < x.size(); ++j) {
+      const Vec3 d = x[j] - x[i];
+      const double r2 = d.squaredNorm();
+      if (j != i && r2 < r_e * r_e) fluid += (p.p[j] + p.p[i]) * w.inside(std::sqrt(r2)) / r2 * d;
+    }
+    Vec3 grad = 3.0 / n0 * fluid;
+    for (std::size_t k = 0; k < emps::max_faces3; ++k)
+      if (hits[k].triangle[i] >= 0) grad += terms.mirror_pressure(i, k);
+    if (corner_images) grad += terms.corner_mirror_pressure(i);
+    const bool lid_or_floor = std::min(x[i][2], L - x[i][2]) < r_e;
+    if (vertical && lid_or_floor) continue;
+    const int walls_near = emps::test::walls_near(x[i], L, r_e);
+    const auto near = static_cast<std::size_t>(std::min(walls_near, 3));
+    worst[near] = std::max(worst[near], (grad - grad_p).norm() / rho_g);
+  }
+  return worst;
+}
+
+} // namespace
+
+TEST_CASE("emps 3-D walls: at rest under a uniform pressure the ERP gradient vanishes at faces, "
+          "edges and corners only with the images behind two and three walls",
+          "[emps][walls3d]") {
+  const double P = 1000.0 * 9.81 * 0.1; // rho g L
+  const auto uniform = [&](const Vec3&) { return P; };
+  const std::array<double, 4> with = gradient_residual(10, uniform, Vec3::Zero(), true);
+  const std::array<double, 4> without = gradient_residual(10, uniform, Vec3::Zero(), false);
+  INFO("worst |<grad p>_i| / rho g with 0, 1, 2, 3 walls near: with the images "
+       << with[0] << ", " << with[1] << ", " << with[2] << ", " << with[3] << "; without "
+       << without[0] << ", " << without[1] << ", " << without[2] << ", " << without[3]);
+  for (const double e : with) CHECK(e < 1e-10);
+  CHECK(without[1] < 1e-10); // one face: its mirror images all of the missing half
+  CHECK(without[2] > 1.0);   // an edge: the quadrant behind both walls pushes on no one
+  CHECK(without[3] > 1.0);   // a corner: the quadrants and the octant
+}
+
+TEST_CASE("emps 3-D walls: at rest under a hydrostatic pressure the ERP gradient balances rho g "
+          "beside the vertical walls, their edges included (eq. 26's p_i' = p_i is not hydrostatic "
+          "at the floor)",
+          "[emps][walls3d]") {
+  const double rho_g = 1000.0 * 9.81, H = 0.1;
+  const auto hydrostatic = [&](const Vec3& x) { return rho_g * (H - x[2]); };
+  const std::array<double, 4> with =
+      gradient_residual(10, hydrostatic, Vec3(0, 0, -rho_g), true, true);
+  const std::array<double, 4> without =
+      gradient_residual(10, hydrostatic, Vec3(0, 0, -rho_g), false, true);
+
+  INFO("worst |<grad p>_i - grad p| / rho g with 0, 1, 2, 3 walls near: with the images "
+       << with[0] << ", " << with[1] << ", " << with[2] << ", " << with[3] << "; without "
+       << without[0] << ", " << without[1] << ", " << without[2] << ", " << without[3]);
+  for (std::size_t k = 0; k < 3; ++k) CHECK(with[k] < 1e-10); // none has three vertical walls
+  CHECK(without[1] < 1e-10);
+  CHECK(without[2] > 1.0);
+}
