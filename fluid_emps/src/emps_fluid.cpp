@@ -55,10 +55,13 @@ template <int D> double norm2(const BasicParticles<D>& p, std::size_t i) {
 } // namespace
 
 PlaneWalls::PlaneWalls(const FluidOptions& options, double n0, erp::WallSet& walls,
-                       const Particles& particles, const particles::CellGrid& grid)
+                       Particles& particles, const particles::CellGrid& grid)
     : locator(erp::make_wall_locator(walls, options.r_e())),
       terms(options, n0, walls, particles, grid, hits) {
   locator->set_corner_faces(options.wall.corner_faces);
+  for (std::size_t k = 0; k < erp::max_faces; ++k)
+    viscous[k] =
+        particles::add_vector<2>(particles.fields, "wall_viscous" + std::to_string(k), false);
 }
 
 template <int D>
@@ -111,7 +114,7 @@ template <int D> void BasicEmpsFluid<D>::damp(double t, double dt) {
   if (T <= 0 || t >= T) return;
   const double factor = std::exp(-20.0 / T * (1.0 - t / T) * dt);
   const std::array<double*, D> v = components(particles_.velocity);
-  parallel_for(particles_.size(), [&](std::size_t i) {
+  parallel_for(owned(), [&](std::size_t i) {
     for (std::size_t a = 0; a < D; ++a) v[a][i] *= factor;
   });
 }
@@ -120,17 +123,25 @@ template <int D>
 void BasicEmpsFluid<D>::refresh_neighbours(bool allow_reorder, long step, double t) {
   Timer timer(times_.neighbours);
   ParticleSet& p = particles_;
-  const std::size_t n = p.size();
-  if (neighbours_.valid(p.position.coords(), n, 0.5 * options_.skin * r_e_)) return;
-  grid_.bin(p.position.coords(), n);
+  decomposition_->update_ghosts(p.fields); // exchange: x, v (and all) of the ghosts
+  const bool valid = neighbours_.valid(p.position.coords(), p.size(), 0.5 * options_.skin * r_e_);
+  if (decomposition_->all(valid)) return;
+  // Ghosts off, the owned particles to their regions' processes (nothing serial).
+  if (decomposition_->migrate(p.fields, p.position)) ++layout_;
+  const std::size_t owned = p.size();
+  grid_.bin(p.position.coords(), owned);
   if (allow_reorder && builds_ % std::max(1, options_.reorder_interval) == 0) {
     p.permute(grid_.order(), scratch_);
     ++layout_;
-    grid_.bin(p.position.coords(), n);
+    grid_.bin(p.position.coords(), owned);
   }
+  // Ghosts within reach of an owned particle until the next build: r_e + the skin.
+  const double reach = r_e_ * (1.0 + options_.skin);
+  decomposition_->build_ghosts(p.fields, p.position, reach);
+  const std::size_t n = p.size();
+  if (n != owned) grid_.bin(p.position.coords(), n);
   ++builds_;
-  if (!neighbours_.build(grid_, p.position.coords(), n, r_e_ * (1.0 + options_.skin), capacity_,
-                         options_.vector_kernels))
+  if (!neighbours_.build(grid_, p.position.coords(), n, reach, capacity_, options_.vector_kernels))
     throw RunError("fluid: more than " + std::to_string(capacity_) + " neighbours at " +
                    where(p, neighbours_.overflow(), step, t) +
                    " (particles clustered: the step is likely unstable)");
@@ -167,8 +178,7 @@ template <int D> void BasicEmpsFluid<D>::check_crossed(long step, double t) cons
   }();
   const auto* crossed = crossed_and_wall.first;
   const auto* wall = crossed_and_wall.second;
-  const std::size_t i =
-      first_index(particles_.size(), [&](std::size_t k) { return (*crossed)[k] != 0; });
+  const std::size_t i = first_index(owned(), [&](std::size_t k) { return (*crossed)[k] != 0; });
   if (i != none)
     throw RunError("fluid: " + where(particles_, i, step, t) + " is behind wall " +
                    (D == 2 ? "segment " : "triangle ") + std::to_string((*wall)[i]) +
@@ -186,18 +196,13 @@ template <int D> void BasicEmpsFluid<D>::advance(double t, double dt) {
   }
   const Vec g = options_.gravity;
   refresh_neighbours(true, step_ + 1, t);
-  const std::size_t n = p.size();
+  const std::size_t n = owned();
   // The viscous loop writes every particle's viscous wall forces; without it they are zero.
   const bool viscous = options_.viscous_loop();
-  if constexpr (D == 2) {
-    for (auto& v : walls_.viscous) {
-      if (viscous)
-        v.resize(n);
-      else
-        v.assign(n, Vec2::Zero());
-    }
-    walls_.forces.resize(n);
-  }
+  if constexpr (D == 2)
+    if (!viscous)
+      for (const auto& v : walls_.viscous)
+        for (int a = 0; a < 2; ++a) std::fill_n(v[a].begin(), n, 0.0);
   if (viscous) {
     // The wall hits of the last step's x* serve x^n (which differs by dt^2 |grad p| / rho, and
     // they see the walls at t^n) unless particles were reordered or removed since.
@@ -240,7 +245,7 @@ template <int D> void BasicEmpsFluid<D>::advance(double t, double dt) {
 
 template <int D> void BasicEmpsFluid<D>::check_finite(long step, double t) const {
   const ParticleSet& p = particles_;
-  const std::size_t bad = first_index(p.size(), [&](std::size_t i) {
+  const std::size_t bad = first_index(owned(), [&](std::size_t i) {
     double s = p.p[i];
     for (int a = 0; a < D; ++a) s += p.position[a][i] + p.velocity[a][i];
     return !std::isfinite(s);
@@ -252,9 +257,9 @@ template <int D> void BasicEmpsFluid<D>::check_finite(long step, double t) const
 template <int D> void BasicEmpsFluid<D>::remove_outside() {
   ParticleSet& p = particles_;
   const Vec lo = options_.domain_min, hi = options_.domain_max;
-  keep_.resize(p.size());
+  keep_.resize(owned());
   const std::size_t outside = parallel_reduce(
-      p.size(), std::size_t{0},
+      owned(), std::size_t{0},
       [&](std::size_t i) {
         bool in = true;
         for (int a = 0; a < D; ++a)
@@ -263,7 +268,8 @@ template <int D> void BasicEmpsFluid<D>::remove_outside() {
         return std::size_t{in ? 0u : 1u};
       },
       [](std::size_t a, std::size_t b) { return a + b; });
-  if (outside == 0) return;
+  if (decomposition_->sum(static_cast<double>(outside)) == 0) return;
+  decomposition_->drop_ghosts(p.fields); // every process: the ghost layout ends here
   removed_ += p.compact(keep_);
   ++layout_;
   neighbours_.invalidate();
@@ -271,15 +277,22 @@ template <int D> void BasicEmpsFluid<D>::remove_outside() {
 
 template <int D> double BasicEmpsFluid<D>::kinetic_energy() const {
   const double m = options_.density * options_.volume();
-  return parallel_reduce(
-      particles_.size(), 0.0, [&](std::size_t i) { return 0.5 * m * norm2(particles_, i); },
-      [](double a, double b) { return a + b; });
+  return decomposition_->sum(parallel_reduce(
+      owned(), 0.0, [&](std::size_t i) { return 0.5 * m * norm2(particles_, i); },
+      [](double a, double b) { return a + b; }));
 }
 
 template <int D> double BasicEmpsFluid<D>::max_speed() const {
-  return std::sqrt(parallel_reduce(
-      particles_.size(), 0.0, [&](std::size_t i) { return norm2(particles_, i); },
-      [](double a, double b) { return std::max(a, b); }));
+  return std::sqrt(decomposition_->max(parallel_reduce(
+      owned(), 0.0, [&](std::size_t i) { return norm2(particles_, i); },
+      [](double a, double b) { return std::max(a, b); })));
+}
+
+template <int D> void BasicEmpsFluid<D>::decompose(particles::Decomposition<D>& decomposition) {
+  decomposition_ = &decomposition;
+  neighbours_.invalidate();
+  refresh_neighbours(true, step_, 0.0); // the first migration and halo
+  query_walls();                        // the ghosts' hits
 }
 
 template <int D> void BasicEmpsFluid<D>::set_velocities(const std::vector<Vec>& v) {
@@ -293,8 +306,8 @@ template <int D> void BasicEmpsFluid<D>::set_velocities(const std::vector<Vec>& 
 // The wall-gap limit of the next step (WallTerms::gap_dt), with the step's last position
 // correction (scratch_ still holds it).
 template <int D> double BasicEmpsFluid<D>::wall_gap_dt() const {
-  return parallel_reduce(
-      particles_.size(), std::numeric_limits<double>::infinity(),
+  return decomposition_->min(parallel_reduce(
+      owned(), std::numeric_limits<double>::infinity(),
       [&](std::size_t i) {
         if constexpr (D == 2)
           return walls_.terms.gap_dt(i, scratch_[2 * i], scratch_[2 * i + 1]);
@@ -302,7 +315,7 @@ template <int D> double BasicEmpsFluid<D>::wall_gap_dt() const {
           return walls_.terms.gap_dt(
               i, Vec3(scratch_[3 * i], scratch_[3 * i + 1], scratch_[3 * i + 2]));
       },
-      [](double a, double b) { return std::min(a, b); });
+      [](double a, double b) { return std::min(a, b); }));
 }
 
 template <int D> double BasicEmpsFluid<D>::stable_dt(double courant) const {
@@ -319,6 +332,8 @@ template BasicEmpsFluid<3>::BasicEmpsFluid(const Options&, const std::vector<Vec
                                            const erp::TriangleWallSet&);
 template void BasicEmpsFluid<2>::advance(double, double);
 template void BasicEmpsFluid<3>::advance(double, double);
+template void BasicEmpsFluid<2>::decompose(particles::Decomposition<2>&);
+template void BasicEmpsFluid<3>::decompose(particles::Decomposition<3>&);
 template void BasicEmpsFluid<2>::set_velocities(const std::vector<Vec>&);
 template void BasicEmpsFluid<3>::set_velocities(const std::vector<Vec>&);
 template double BasicEmpsFluid<2>::stable_dt(double) const;

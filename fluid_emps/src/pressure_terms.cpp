@@ -14,7 +14,7 @@ namespace fsi::emps {
 template <int D> void BasicEmpsFluid<D>::density_and_pressure() {
   Timer timer(times_.density);
   ParticleSet& p = particles_;
-  const std::size_t n = p.size();
+  const std::size_t n = owned();
   const double stiffness = options_.sound_speed * options_.sound_speed * options_.density / n0_;
   const double surface = options_.beta * n0_;
   const Coords<D> x = p.position.coords();
@@ -31,7 +31,10 @@ template <int D> void BasicEmpsFluid<D>::density_and_pressure() {
         return std::size_t{sum.within};
       },
       [](std::size_t a, std::size_t b) { return a + b; });
-  mean_neighbours_ = n ? static_cast<double>(pairs) / static_cast<double>(n) : 0.0;
+  decomposition_->update_ghosts(p.fields); // exchange: p, pnd, surface for the gradient
+  const double all_pairs = decomposition_->sum(static_cast<double>(pairs));
+  const double all_n = decomposition_->sum(static_cast<double>(n));
+  mean_neighbours_ = all_n > 0 ? all_pairs / all_n : 0.0;
 }
 
 template <int D>
@@ -78,13 +81,18 @@ template <int D> VecSum<D> BasicEmpsFluid<D>::fluid_gradient(std::size_t i, doub
 template <int D> void BasicEmpsFluid<D>::pressure_gradient(double dt) {
   Timer timer(times_.pressure_gradient);
   ParticleSet& p = particles_;
-  const std::size_t n = p.size();
+  const std::size_t n = owned();
   const double c_grad = D / n0_;
   const double inv_rho = 1.0 / options_.density, V = options_.volume();
   const bool neighbours = options_.wall.mirror.pressure == WallPressure::neighbours;
   scratch_.resize(D * n);
   double* dx = scratch_.data();
   const std::array<double*, D> v = components(p.velocity);
+  std::array<std::array<double*, 2>, erp::max_faces> f_wall{}; // walls_.viscous (2-D)
+  if constexpr (D == 2) {
+    walls_.forces.resize(n);
+    for (std::size_t k = 0; k < erp::max_faces; ++k) f_wall[k] = components(walls_.viscous[k]);
+  }
   parallel_for_balanced(n, [&](std::size_t i) {
     VecD<D> grad;
     if constexpr (D == 2) {
@@ -108,14 +116,14 @@ template <int D> void BasicEmpsFluid<D>::pressure_gradient(double dt) {
       for (std::size_t k = 0; k < erp::max_faces; ++k) {
         const erp::FaceHits& h = hits.face[k];
         FaceForces& f = walls_.forces.face[k];
-        const std::vector<Vec2>& visc = walls_.viscous[k];
         const int s = h.segment[i];
+        const Vec2 visc = s >= 0 ? Vec2(f_wall[k][0][i], f_wall[k][1][i]) : Vec2::Zero();
         f.segment[i] = s;
         f.t[i] = s >= 0 ? h.t[i] : 0.0;
         f.x_wall[i] = s >= 0 ? h.x_wall[i] : Vec2::Zero();
-        f.f[i] = s >= 0 ? Vec2(-V * wall[k] + visc[i]) : Vec2::Zero();
+        f.f[i] = s >= 0 ? Vec2(-V * wall[k] + visc) : Vec2::Zero();
         f.f_contact[i] = -V * contact[k];
-        f.f_viscous[i] = s >= 0 ? visc[i] : Vec2::Zero();
+        f.f_viscous[i] = visc;
       }
     } else { // 3-D: each face's mirror pressure and contact terms (eqs. 25-27), the images
              // behind two or three faces (edges, corners) once

@@ -21,7 +21,7 @@ namespace fsi::emps {
 template <int D> void BasicEmpsFluid<D>::viscosity() {
   Timer timer(times_.viscosity);
   ParticleSet& p = particles_;
-  const std::size_t n = p.size();
+  const std::size_t n = owned();
   const double c_lap = 2.0 * D / (lambda0_ * n0_);
   const double nu = options_.viscosity, mu_V = options_.density * nu * options_.volume();
   const double nu_art = options_.artificial_viscosity * options_.sound_speed * options_.l0;
@@ -36,6 +36,9 @@ template <int D> void BasicEmpsFluid<D>::viscosity() {
   const Coords<D> x = p.position.coords(), v = p.velocity.coords();
   scratch_.resize(D * n);
   double* out = scratch_.data();
+  std::array<std::array<double*, 2>, erp::max_faces> f_wall{}; // walls_.viscous (2-D)
+  if constexpr (D == 2)
+    for (std::size_t k = 0; k < erp::max_faces; ++k) f_wall[k] = components(walls_.viscous[k]);
   // The closing-pair sum only when alpha > 0.
   // near_wall: its part on pairs with a particle within r_e of a wall (WallContact::viscous).
   const auto sweep = [&](auto artificial, auto near_wall) {
@@ -100,15 +103,19 @@ template <int D> void BasicEmpsFluid<D>::viscosity() {
         if constexpr (D == 3) out[D * i + a] += a_wall3[a];
       }
       if constexpr (D == 2) {
-        for (std::size_t k = 0; k < erp::max_faces; ++k)
-          walls_.viscous[k][i] = mu_V * m[k]; // V_i mu R <lap v>_i' (eq. 52, viscous wall part)
+        for (std::size_t k = 0; k < erp::max_faces; ++k) { // V_i mu R <lap v>_i' (eq. 52)
+          f_wall[k][0][i] = mu_V * m[k].x();
+          f_wall[k][1][i] = mu_V * m[k].y();
+        }
         if (approach) {
           Vec2 a_sum = a_wall[0];
           for (std::size_t k = 1; k < erp::max_faces; ++k) a_sum += a_wall[k];
           out[2 * i] += a_sum.x();
           out[2 * i + 1] += a_sum.y();
-          for (std::size_t k = 0; k < erp::max_faces; ++k)
-            walls_.viscous[k][i] += rho_V * a_wall[k];
+          for (std::size_t k = 0; k < erp::max_faces; ++k) {
+            f_wall[k][0][i] += rho_V * a_wall[k].x();
+            f_wall[k][1][i] += rho_V * a_wall[k].y();
+          }
         }
       }
     });

@@ -26,6 +26,7 @@
 #include "geometry_erp/wall_set.hpp"
 #include "geometry_erp/wall_weight.hpp"
 #include "particles/cell_grid.hpp"
+#include "particles/decomposition.hpp"
 #include "particles/kernels.hpp"
 #include "particles/neighbor_list.hpp"
 
@@ -85,13 +86,16 @@ struct StepTimes {
 
 /// The 2-D fluid's walls: the wall index, its hits, the wall terms and the wall forces.
 struct PlaneWalls {
-  PlaneWalls(const FluidOptions& options, double n0, erp::WallSet& walls,
-             const Particles& particles, const particles::CellGrid& grid);
+  /// Registers `viscous` in the particles' set.
+  PlaneWalls(const FluidOptions& options, double n0, erp::WallSet& walls, Particles& particles,
+             const particles::CellGrid& grid);
   std::unique_ptr<erp::WallLocator> locator;
   erp::WallHits hits;
   WallTerms terms; ///< the wall terms over the fluid's particles, grid and `hits`
   WallForces forces;
-  std::array<std::vector<Vec2>, erp::max_faces> viscous; ///< viscous wall force of each face
+  /// The viscous wall force of each face, N/m: scratch arrays of the particles' set, so that
+  /// they move with the particles between the viscous and the pressure stage of a step.
+  std::array<particles::VectorField<2>, erp::max_faces> viscous;
   long hits_layout = -1; ///< the fluid's layout when `hits` were computed (-1: stale)
 };
 
@@ -125,6 +129,15 @@ public:
   void set_velocities(const std::vector<Vec>& v);
   ~BasicEmpsFluid() = default;
 
+  /// Steps from now on decomposed over processes through `decomposition`, which must outlive
+  /// the fluid (collective; every process holds the same fluid on entry, see
+  /// parallel::ParticleDecomposition). Without it the fluid is serial (particles::LocalParticles).
+  /// The exchange points of the step are listed in docs/architecture.md "Processes (MPI)".
+  /// Not yet decomposed: save/restore, checkpoints, the wall forces' sums (local per process).
+  void decompose(particles::Decomposition<D>& decomposition);
+  /// The particles this process owns: the first owned() entries of particles(); ghosts follow.
+  std::size_t owned() const { return particles_.size() - decomposition_->ghosts(); }
+
   /// Advances from t to t + dt. Throws fsi::RunError on a non-finite field, a particle behind a
   /// wall or a neighbour-row overflow, naming the particle, the step and the time.
   void advance(double t, double dt);
@@ -144,6 +157,7 @@ public:
   double n0() const { return n0_; }
   double lambda0() const { return lambda0_; }
   long steps() const { return step_; }
+  /// Particles removed from this process's set (outside the domain box).
   std::size_t removed() const { return removed_; }
   double mean_neighbours() const { return mean_neighbours_; }
   long neighbour_builds() const { return builds_; }
@@ -177,6 +191,8 @@ private:
   /// Places the particles at `positions` and computes pnd, pressure and the free-surface flags
   /// of the initial state (for output at t = 0).
   void start(const std::vector<Vec>& positions);
+  /// Refreshes the ghosts; rebuilds the neighbour list when a particle of any process has moved
+  /// half the skin (with `allow_reorder`, migrating and reordering the owned particles first).
   /// `step` and `t` name the step in progress in messages.
   void refresh_neighbours(bool allow_reorder, long step, double t);
   void query_walls();
@@ -208,6 +224,8 @@ private:
   particles::BasicCellGrid<D> grid_{options_.domain_min, options_.domain_max,
                                     r_e_*(1.0 + options_.skin)};
   particles::BasicNeighborList<D> neighbours_;
+  particles::LocalParticles<D> local_;
+  particles::Decomposition<D>* decomposition_ = &local_; ///< the exchange hook
   EmpsWalls<D> walls_;
   std::vector<double> scratch_; // per-particle work array, D values a particle
   std::vector<std::uint8_t> keep_;

@@ -1,0 +1,65 @@
+#pragma once
+// The exchange hook of a particle solver (particles::Decomposition) over MPI: Zoltan RCB regions,
+// migration to the owner of each region and halos of every registered array (Halo, Migration,
+// RcbPartition). The solver calls it; this class only moves particles and reduces numbers.
+//
+// Start: the first migrate() expects every rank to hold the same full set in the same order
+// (each built the solver from the whole scene): rank r keeps entries r, r + P, r + 2P, ... and
+// the first RCB partition sends them to their regions. Later migrate() calls send particles to
+// the owner of their position under the current cuts, or repartition (from the previous cuts)
+// first when the imbalance max n / mean n exceeds `rebalance`.
+//
+// Halo reach: build_ghosts(reach) sends every particle within reach + d_out of another rank's
+// box, d_out the largest distance (over all ranks) of an owned particle outside its own box
+// (0 right after a migration; > 0 when a solver rebuilds its halo between migrations). So each
+// owned particle sees every particle that comes within `reach` of where it was at the build.
+#include "parallel/halo.hpp"
+#include "parallel/migration.hpp"
+#include "parallel/rcb_partition.hpp"
+#include "particles/decomposition.hpp"
+
+#include <vector>
+
+namespace fsi::parallel {
+
+template <int D> class ParticleDecomposition final : public particles::Decomposition<D> {
+public:
+  /// `rebalance` > 1: the imbalance at which a migration repartitions first.
+  explicit ParticleDecomposition(const Communicator& comm, double rebalance = 1.2);
+
+  bool migrate(particles::FieldSet& fields, const particles::VectorField<D>& x) override;
+  void build_ghosts(particles::FieldSet& fields, const particles::VectorField<D>& x,
+                    double reach) override;
+  void update_ghosts(particles::FieldSet& fields) override;
+  void drop_ghosts(particles::FieldSet& fields) override;
+  std::size_t ghosts() const override { return active_ ? halo_.ghosts() : 0; }
+
+  double sum(double v) const override { return comm_.sum(v); }
+  double max(double v) const override { return comm_.max(v); }
+  double min(double v) const override { return comm_.min(v); }
+  bool all(bool v) const override { return comm_.all(v); }
+
+  /// RCB partitions made (the first and the repartitions).
+  int partitions() const { return rcb_.partitions(); }
+  /// Migrations and halo builds so far, and the particles that left this rank by migration.
+  long migrations() const { return migrations_; }
+  long halo_builds() const { return halo_builds_; }
+  long emigrants() const { return emigrants_; }
+  const std::vector<Box<D>>& boxes() const { return rcb_.boxes(); }
+
+private:
+  Communicator comm_;
+  double rebalance_;
+  RcbPartition<D> rcb_;
+  Migration migration_;
+  Halo<D> halo_;
+  std::vector<int> dest_;
+  std::vector<std::uint8_t> keep_;
+  bool active_ = false; // ghosts appended (the same on every rank: builds and drops are collective)
+  long migrations_ = 0, halo_builds_ = 0, emigrants_ = 0;
+};
+
+extern template class ParticleDecomposition<2>;
+extern template class ParticleDecomposition<3>;
+
+} // namespace fsi::parallel

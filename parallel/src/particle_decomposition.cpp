@@ -1,0 +1,60 @@
+#include "parallel/particle_decomposition.hpp"
+
+#include <algorithm>
+
+namespace fsi::parallel {
+
+template <int D>
+ParticleDecomposition<D>::ParticleDecomposition(const Communicator& comm, double rebalance)
+    : comm_(comm), rebalance_(rebalance), rcb_(comm) {}
+
+template <int D>
+bool ParticleDecomposition<D>::migrate(particles::FieldSet& fields,
+                                       const particles::VectorField<D>& x) {
+  drop_ghosts(fields);
+  const bool first = rcb_.partitions() == 0;
+  if (first) { // every rank holds the whole set: keep every P-th entry
+    keep_.resize(fields.size());
+    for (std::size_t i = 0; i < keep_.size(); ++i)
+      keep_[i] = static_cast<int>(i % static_cast<std::size_t>(comm_.size())) == comm_.rank();
+    fields.compact(keep_);
+  }
+  if (first || imbalance(comm_, fields.size()) > rebalance_)
+    rcb_.partition(x.coords(), fields.size(), dest_);
+  else
+    rcb_.owners(x.coords(), fields.size(), dest_);
+  const std::size_t before = fields.size();
+  const std::size_t left = migration_.migrate(comm_, fields, dest_);
+  ++migrations_;
+  emigrants_ += static_cast<long>(left);
+  return first || left > 0 || fields.size() + left != before; // the last: some arrived
+}
+
+template <int D>
+void ParticleDecomposition<D>::build_ghosts(particles::FieldSet& fields,
+                                            const particles::VectorField<D>& x, double reach) {
+  const Box<D>& mine = rcb_.boxes()[static_cast<std::size_t>(comm_.rank())];
+  double out = 0.0; // the farthest owned particle outside this rank's box
+  VecD<D> xi;
+  for (std::size_t i = 0; i < fields.size(); ++i) {
+    for (int a = 0; a < D; ++a) xi[a] = x[a][i];
+    out = std::max(out, mine.distance(xi));
+  }
+  halo_.build(comm_, fields, x, rcb_.boxes(), reach + comm_.max(out));
+  active_ = true;
+  ++halo_builds_;
+}
+
+template <int D> void ParticleDecomposition<D>::update_ghosts(particles::FieldSet& fields) {
+  if (active_) halo_.update(comm_, fields);
+}
+
+template <int D> void ParticleDecomposition<D>::drop_ghosts(particles::FieldSet& fields) {
+  if (active_) halo_.drop(fields);
+  active_ = false;
+}
+
+template class ParticleDecomposition<2>;
+template class ParticleDecomposition<3>;
+
+} // namespace fsi::parallel

@@ -1,0 +1,57 @@
+#pragma once
+// The exchange hook of a particle solver decomposed over processes (issue 47): the solver calls
+// it at the points of its step where particles change owner or where a field its pair sums read
+// has changed; the serial hook (LocalParticles) does nothing there and reduces nothing.
+// parallel/ implements it over MPI (parallel::ParticleDecomposition, Zoltan RCB, migration and
+// halos). Layout contract: the first size() - ghosts() entries of the FieldSet are the particles
+// this process owns; ghosts (copies of other processes' particles) follow them, so a neighbour
+// search over the whole set sees them. Pair loops read ghosts and write owned particles only.
+// Every call but ghosts() is collective: each process makes the same calls in the same order.
+#include "particles/field_set.hpp"
+#include "particles/vector_field.hpp"
+
+#include <cstddef>
+
+namespace fsi::particles {
+
+template <int D> class Decomposition {
+public:
+  virtual ~Decomposition() = default;
+
+  /// Removes the ghosts and moves every owned particle to the process whose region holds it
+  /// now (repartitioning when the load has drifted); `x` is the set's position field. Returns
+  /// whether the owned particles' order changed.
+  virtual bool migrate(FieldSet& fields, const VectorField<D>& x) = 0;
+  /// Appends, after the owned particles, copies of every other process's particles that may
+  /// come within `reach` of an owned particle (the set holds no ghosts on entry).
+  virtual void build_ghosts(FieldSet& fields, const VectorField<D>& x, double reach) = 0;
+  /// Copies the owners' current values of every array onto the ghosts, same order.
+  virtual void update_ghosts(FieldSet& fields) = 0;
+  /// Removes the ghosts (before owned particles are removed or reordered).
+  virtual void drop_ghosts(FieldSet& fields) = 0;
+  /// How many of the set's last entries are ghosts.
+  virtual std::size_t ghosts() const = 0;
+
+  /// Global reductions over every process (the same value on each).
+  virtual double sum(double v) const = 0;
+  virtual double max(double v) const = 0;
+  virtual double min(double v) const = 0;
+  /// True on every process iff `v` is true on every process.
+  virtual bool all(bool v) const = 0;
+};
+
+/// One process owns every particle: no ghosts, nothing moves, a reduction is its argument.
+template <int D> class LocalParticles final : public Decomposition<D> {
+public:
+  bool migrate(FieldSet&, const VectorField<D>&) override { return false; }
+  void build_ghosts(FieldSet&, const VectorField<D>&, double) override {}
+  void update_ghosts(FieldSet&) override {}
+  void drop_ghosts(FieldSet&) override {}
+  std::size_t ghosts() const override { return 0; }
+  double sum(double v) const override { return v; }
+  double max(double v) const override { return v; }
+  double min(double v) const override { return v; }
+  bool all(bool v) const override { return v; }
+};
+
+} // namespace fsi::particles
