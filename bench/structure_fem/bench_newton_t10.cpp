@@ -69,5 +69,8 @@ BENCHMARK_CAPTURE(BM_Solve, static_cg_incomplete_cholesky, LinearSolverKind::cg_
                   false)
     ->Apply(sizes);
 BENCHMARK_CAPTURE(BM_Solve, static_cg_jacobi, LinearSolverKind::cg_jacobi, false)->Apply(sizes);
+BENCHMARK_CAPTURE(BM_Factorize, cg_amg, LinearSolverKind::cg_amg)->Apply(sizes);
+BENCHMARK_CAPTURE(BM_Solve, cg_amg, LinearSolverKind::cg_amg, true)->Apply(sizes);
+BENCHMARK_CAPTURE(BM_Solve, static_cg_amg, LinearSolverKind::cg_amg, false)->Apply(sizes);
 
 BENCHMARK_MAIN();

@@ -79,6 +79,8 @@ template <class P> void assembly(benchmark::State& state, P& p) {
 /// The factorisation of K_eff (CG: the preconditioner set-up).
 template <class P> void factorize(benchmark::State& state, P& p, fem::LinearSolverKind kind) {
   auto solver = fem::make_linear_solver({kind, 1e-10, 0});
+  solver->set_near_null_space(
+      fem::rigid_body_modes<P::Point::RowsAtCompileTime>(*p.dofs, p.mesh.X));
   solver->analyze(p.K_eff);
   for (auto _ : state) solver->factorize(p.K_eff);
   set_counters(state, p);
@@ -88,6 +90,8 @@ template <class P> void factorize(benchmark::State& state, P& p, fem::LinearSolv
 template <class P>
 void solve(benchmark::State& state, P& p, const fem::SparseMatrix& K, fem::LinearSolverKind kind) {
   auto solver = fem::make_linear_solver({kind, 1e-10, 0});
+  solver->set_near_null_space(
+      fem::rigid_body_modes<P::Point::RowsAtCompileTime>(*p.dofs, p.mesh.X));
   solver->analyze(K);
   solver->factorize(K);
   for (auto _ : state) benchmark::DoNotOptimize(solver->solve(p.rhs));

@@ -8,6 +8,7 @@
 #include <Eigen/SparseCholesky>
 #include <Eigen/UmfPackSupport>
 
+#include "cg_amg.hpp"
 #include "fsi/core/error.hpp"
 
 namespace fsi::fem {
@@ -145,6 +146,8 @@ const char* to_string(LinearSolverKind kind) {
     return "cg_incomplete_cholesky";
   case LinearSolverKind::cg_jacobi:
     return "cg_jacobi";
+  case LinearSolverKind::cg_amg:
+    return "cg_amg";
   case LinearSolverKind::cholmod:
     return "cholmod";
   case LinearSolverKind::umfpack:
@@ -164,6 +167,9 @@ void validate(const LinearSolverOptions& o) {
   if (o.cg_max_iterations < 0)
     throw InputError("linear_solver: cg_max_iterations = " + std::to_string(o.cg_max_iterations) +
                      ": must be >= 0 (0: default)");
+  if (o.amg_coarse_size < 1)
+    throw InputError("linear_solver: amg_coarse_size = " + std::to_string(o.amg_coarse_size) +
+                     ": must be >= 1");
 }
 
 std::unique_ptr<LinearSolver> make_linear_solver(const LinearSolverOptions& o) {
@@ -174,6 +180,8 @@ std::unique_ptr<LinearSolver> make_linear_solver(const LinearSolverOptions& o) {
     return std::make_unique<CgSolver<Eigen::IncompleteCholesky<double>>>(o.kind, o);
   case K::cg_jacobi:
     return std::make_unique<CgSolver<Eigen::DiagonalPreconditioner<double>>>(o.kind, o);
+  case K::cg_amg:
+    return make_cg_amg(o);
   case K::cholmod:
     return std::make_unique<DirectSolver<Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower>>>(
         o.kind);

@@ -26,9 +26,11 @@ void visit_options(LinearSolverOptions& o, OptionVisitor& v) {
             {"cholmod", LinearSolverKind::cholmod},
             {"umfpack", LinearSolverKind::umfpack},
             {"ldlt", LinearSolverKind::simplicial_ldlt},
-            {"cg", LinearSolverKind::cg_incomplete_cholesky}},
+            {"cg", LinearSolverKind::cg_incomplete_cholesky},
+            {"cg_amg", LinearSolverKind::cg_amg}},
            "sparse direct (CHOLMOD, UMFPACK, Eigen LDLT; auto: LDLT, UMFPACK LU for a matrix LDLT "
-           "refuses, counted in run.json) or preconditioned CG");
+           "refuses, counted in run.json) or preconditioned CG (cg: incomplete Cholesky; cg_amg: "
+           "smoothed-aggregation multigrid from the rigid-body modes, for 3-D)");
 }
 
 } // namespace fsi::fem

@@ -34,6 +34,7 @@ BasicStructure<Family>::BasicStructure(typename Family::Mesh mesh,
   dofs_ = std::make_unique<DofMap>(mesh_, options_.clamped);
   assembler_ = std::make_unique<BasicAssembler<Family>>(mesh_, *material_, *dofs_);
   solver_ = make_linear_solver(options_.linear_solver);
+  solver_->set_near_null_space(rigid_body_modes<dim>(*dofs_, mesh_.X));
   M_ = assembler_->mass();
   M_all_ = assembler_->full_mass();
   for (int d = 0; d < dofs_->num_dofs(); ++d)

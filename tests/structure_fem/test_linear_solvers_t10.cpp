@@ -1,6 +1,7 @@
 // The linear solvers on a 3-D elasticity matrix (issue 44: CG with a preconditioner measured
-// against CHOLMOD): each solves K u = f of a clamped T10 block under a shear end load to the
-// same answer; the WARN line records their times and iterations.
+// against CHOLMOD; cg_amg: smoothed-aggregation multigrid): each solves K u = f of a clamped T10
+// block under a shear end load to the same answer; the WARN line records their times and
+// iterations.
 #include <catch2/catch.hpp>
 
 #include <chrono>
@@ -13,7 +14,7 @@
 
 using namespace fsi::fem;
 
-TEST_CASE("T10 block: CG (incomplete Cholesky, Jacobi) agrees with CHOLMOD",
+TEST_CASE("T10 block: CG (incomplete Cholesky, Jacobi, smoothed aggregation) agrees with CHOLMOD",
           "[structure_fem][t10][linear_solver]") {
   const TetMesh mesh = make_box_mesh({{0.0, 0.0, 0.0}, {1.0, 0.2, 0.2}, {20, 4, 4}});
   const auto law = make_material_3d({2.0e11, 0.3, 7800.0});
@@ -29,6 +30,7 @@ TEST_CASE("T10 block: CG (incomplete Cholesky, Jacobi) agrees with CHOLMOD",
   auto solve = [&](LinearSolverKind kind, int& iterations) {
     const auto start = std::chrono::steady_clock::now();
     const auto solver = make_linear_solver({kind, 1e-10, 0});
+    solver->set_near_null_space(rigid_body_modes<3>(dofs, mesh.X));
     solver->analyze(K);
     solver->factorize(K);
     Vector u = solver->solve(f);
@@ -42,7 +44,9 @@ TEST_CASE("T10 block: CG (incomplete Cholesky, Jacobi) agrees with CHOLMOD",
   const Vector direct = solve(LinearSolverKind::cholmod, its);
   const Vector ic = solve(LinearSolverKind::cg_incomplete_cholesky, its);
   const Vector jacobi = solve(LinearSolverKind::cg_jacobi, its);
+  const Vector amg = solve(LinearSolverKind::cg_amg, its);
   WARN(log.str());
   CHECK((ic - direct).norm() <= 1e-8 * direct.norm());
   CHECK((jacobi - direct).norm() <= 1e-8 * direct.norm());
+  CHECK((amg - direct).norm() <= 1e-8 * direct.norm());
 }

@@ -5,6 +5,7 @@
 #include <memory>
 #include <string>
 
+#include "structure_fem/near_null_space.hpp"
 #include "structure_fem/types.hpp"
 
 namespace fsi::fem {
@@ -12,9 +13,12 @@ namespace fsi::fem {
 enum class LinearSolverKind {
   cg_incomplete_cholesky, ///< conjugate gradient, IncompleteCholesky preconditioner (SPD K)
   cg_jacobi,              ///< conjugate gradient, diagonal preconditioner (SPD K)
-  cholmod,                ///< sparse direct supernodal Cholesky, CHOLMOD (SPD K)
-  umfpack,                ///< sparse direct LU, UMFPACK (any nonsingular K, e.g. indefinite)
-  simplicial_ldlt,        ///< Eigen's sparse LDL^T (symmetric, no pivoting)
+  /// conjugate gradient, smoothed-aggregation multigrid V-cycle from the rigid-body modes
+  /// (SPD K; structure_fem/smoothed_aggregation.hpp)
+  cg_amg,
+  cholmod,         ///< sparse direct supernodal Cholesky, CHOLMOD (SPD K)
+  umfpack,         ///< sparse direct LU, UMFPACK (any nonsingular K, e.g. indefinite)
+  simplicial_ldlt, ///< Eigen's sparse LDL^T (symmetric, no pivoting)
   /// The default: LDL^T, and UMFPACK LU for each factorisation LDL^T refuses (a K_eff that is
   /// not positive definite, e.g. a rubber beam at large deformation); counted in fallbacks().
   ldlt_or_lu,
@@ -26,6 +30,9 @@ struct LinearSolverOptions {
   LinearSolverKind kind = LinearSolverKind::ldlt_or_lu;
   double cg_tolerance = 1e-12; ///< relative residual ||K x - b|| / ||b|| of CG, in (0, 1)
   int cg_max_iterations = 0;   ///< 0: Eigen's default (2 n); else >= 1
+  /// cg_amg: multigrid levels are added until one has at most this many dofs (>= 1), which is
+  /// then factorised.
+  int amg_coarse_size = 2000;
 };
 
 /// Throws InputError naming the field, its value and the allowed range.
@@ -37,6 +44,9 @@ public:
   virtual ~LinearSolver() = default;
   /// Symbolic analysis of K's sparsity pattern (ordering); once per mesh.
   virtual void analyze(const SparseMatrix& K) = 0;
+  /// The near null space of K (rigid-body modes on the free dofs, one block per node): used by
+  /// cg_amg, which needs it before factorize; ignored by the other kinds.
+  virtual void set_near_null_space(const NearNullSpace&) {}
   /// Numeric factorisation (direct) or preconditioner set-up (CG) for K's current values.
   virtual void factorize(const SparseMatrix& K) = 0;
   virtual Vector solve(const Vector& b) = 0;
