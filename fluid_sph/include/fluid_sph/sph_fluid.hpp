@@ -299,8 +299,9 @@ private:
   Reaction reaction_ = Reaction::exact;
 };
 
-extern template class BasicSphFluid<2>;
-extern template class BasicSphFluid<3>;
+// No `extern template class`: the members are instantiated one by one in src/ (the class as a
+// whole cannot be, clang 14: src/sph_fluid.cpp), and the members defined here, in the class,
+// must then be instantiated where they are used (clang does not emit them otherwise).
 
 using SphFluid = BasicSphFluid<2>;
 using SphFluid3 = BasicSphFluid<3>;
