@@ -106,7 +106,8 @@ template <int D> struct BasicTlsphOptions {
   /// "Coupled").
   double hourglass = 0.5;
   std::vector<BasicClamp<D>> clamps;
-  /// Outline tags whose surface particles form the coupling interface; empty: every edge.
+  /// Outline tags (3-D: the box's face tags, geometry.hpp) whose surface particles form the
+  /// coupling interface; empty: every edge (face).
   std::vector<std::string> interface_tags;
   /// Also hand every particle to the coupling as an interface node after the outline's nodes
   /// (InterfaceMesh::particle_volume): a particle fluid then takes the solid's own particles as
