@@ -84,6 +84,7 @@ SolidGeometry3 fill_box(const Vec3& lo, const Vec3& hi, double dp) {
   SolidGeometry3 g;
   g.X0 = particles::lattice_box<3>(lo, hi, dp);
   g.V0.assign(g.X0.size(), dp * dp * dp);
+  g.box = {lo, hi};
   return g;
 }
 

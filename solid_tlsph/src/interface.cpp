@@ -1,6 +1,6 @@
 // The solid's coupling interface: nodes on the tagged outline attached to surface particles,
 // order-1 edges between them, and their positions, velocities, accelerations and normals as
-// the solid deforms. 2-D only (the members require D == 2).
+// the solid deforms. The 2-D outline here; the 3-D box's faces in interface_box.cpp.
 #include <Eigen/LU>
 #include <algorithm>
 #include <limits>
@@ -100,18 +100,22 @@ void BasicTlsphSolid<D>::build_interface(const Geometry& geometry) requires(D ==
       interface_mesh_.edges.push_back({a, a, a + 1});
   if (k > 2 && (interface_mesh_.X0[0] - interface_mesh_.X0[k - 1]).norm() < link)
     interface_mesh_.edges.push_back({k - 1, k - 1, 0});
+  add_particle_nodes();
+}
+
+template <int D> void BasicTlsphSolid<D>::add_particle_nodes() {
   interface_mesh_.particle_volume.clear();
   if (!options_.interface_particles) return;
-  for (std::size_t i = 0; i < n; ++i) { // the particles themselves, on no edge
+  for (std::size_t i = 0; i < size(); ++i) { // the particles themselves, on no element
     interface_.push_back(static_cast<std::uint32_t>(i));
-    interface_n0_.push_back(Vec2::Zero());
-    interface_offset_.push_back(Vec2::Zero());
+    interface_n0_.push_back(Vec::Zero());
+    interface_offset_.push_back(Vec::Zero());
     interface_mesh_.X0.push_back(at(X0_, i));
     interface_mesh_.particle_volume.push_back(V0_[i]);
   }
 }
 
-template <int D> InterfaceMesh BasicTlsphSolid<D>::interface_mesh() const requires(D == 2) {
+template <int D> BasicInterfaceMesh<D> BasicTlsphSolid<D>::interface_mesh() const {
   return interface_mesh_;
 }
 
@@ -119,9 +123,8 @@ template <int D> InterfaceMesh BasicTlsphSolid<D>::interface_mesh() const requir
 // particle's (the rotation of the dp/2 offset neglected, O(dp |grad v|)). A node on an
 // odd-image clamp stays at its reference position (the images are a device of the free
 // particles' stencils; the clamp itself is rigid).
-template <int D>
-std::vector<Vec2> BasicTlsphSolid<D>::interface_positions() const requires(D == 2) {
-  std::vector<Vec2> out;
+template <int D> std::vector<VecD<D>> BasicTlsphSolid<D>::interface_positions() const {
+  std::vector<Vec> out;
   for (std::size_t k = 0; k < interface_.size(); ++k) {
     const auto i = interface_[k];
     if (imaged(i)) {
@@ -132,37 +135,42 @@ std::vector<Vec2> BasicTlsphSolid<D>::interface_positions() const requires(D == 
   }
   return out;
 }
-template <int D>
-std::vector<Vec2> BasicTlsphSolid<D>::interface_velocities() const requires(D == 2) {
-  std::vector<Vec2> out;
-  for (const auto i : interface_) out.push_back(imaged(i) ? Vec2::Zero() : at(v_, i));
+template <int D> std::vector<VecD<D>> BasicTlsphSolid<D>::interface_velocities() const {
+  std::vector<Vec> out;
+  for (const auto i : interface_) out.push_back(imaged(i) ? Vec::Zero() : at(v_, i));
   return out;
 }
-template <int D>
-std::vector<Vec2> BasicTlsphSolid<D>::interface_accelerations() const requires(D == 2) {
-  std::vector<Vec2> out;
-  for (const auto i : interface_) out.push_back(imaged(i) ? Vec2::Zero() : at(a_, i));
+template <int D> std::vector<VecD<D>> BasicTlsphSolid<D>::interface_accelerations() const {
+  std::vector<Vec> out;
+  for (const auto i : interface_) out.push_back(imaged(i) ? Vec::Zero() : at(a_, i));
   return out;
 }
 
-template <int D> std::vector<Vec2> BasicTlsphSolid<D>::interface_normals() const requires(D == 2) {
-  std::vector<Vec2> out;
+template <int D> std::vector<VecD<D>> BasicTlsphSolid<D>::interface_normals() const {
+  std::vector<Vec> out;
   for (std::size_t k = 0; k < interface_.size(); ++k) {
     if (interface_n0_[k].isZero()) { // a particle node
-      out.push_back(Vec2::Zero());
+      out.push_back(Vec::Zero());
       continue;
     }
-    const Mat2 F = imaged(interface_[k]) ? Mat2::Identity() : deformation_gradient(interface_[k]);
+    const Mat F = imaged(interface_[k]) ? Mat::Identity() : deformation_gradient(interface_[k]);
     out.push_back((F.inverse().transpose() * interface_n0_[k]).normalized()); // Nanson
   }
   return out;
 }
 
 template void BasicTlsphSolid<2>::build_interface(const Geometry&);
-template InterfaceMesh BasicTlsphSolid<2>::interface_mesh() const;
+template void BasicTlsphSolid<2>::add_particle_nodes();
+template BasicInterfaceMesh<2> BasicTlsphSolid<2>::interface_mesh() const;
 template std::vector<Vec2> BasicTlsphSolid<2>::interface_positions() const;
 template std::vector<Vec2> BasicTlsphSolid<2>::interface_velocities() const;
 template std::vector<Vec2> BasicTlsphSolid<2>::interface_accelerations() const;
 template std::vector<Vec2> BasicTlsphSolid<2>::interface_normals() const;
+template void BasicTlsphSolid<3>::add_particle_nodes();
+template BasicInterfaceMesh<3> BasicTlsphSolid<3>::interface_mesh() const;
+template std::vector<Vec3> BasicTlsphSolid<3>::interface_positions() const;
+template std::vector<Vec3> BasicTlsphSolid<3>::interface_velocities() const;
+template std::vector<Vec3> BasicTlsphSolid<3>::interface_accelerations() const;
+template std::vector<Vec3> BasicTlsphSolid<3>::interface_normals() const;
 
 } // namespace fsi::tlsph

@@ -15,8 +15,7 @@ template <int D> void BasicTlsphSolid<D>::update_loaded() {
       loaded_.push_back(static_cast<std::uint32_t>(i));
 }
 
-template <int D>
-void BasicTlsphSolid<D>::set_interface_loads(const std::vector<Vec2>& forces) requires(D == 2) {
+template <int D> void BasicTlsphSolid<D>::set_interface_loads(const std::vector<Vec>& forces) {
   if (forces.size() != interface_.size())
     throw InputError("tlsph: " + std::to_string(forces.size()) + " interface loads for " +
                      std::to_string(interface_.size()) + " interface nodes");
@@ -61,6 +60,7 @@ template <int D> void BasicTlsphSolid<D>::set_velocities(const std::vector<Vec>&
 template void BasicTlsphSolid<2>::update_loaded();
 template void BasicTlsphSolid<3>::update_loaded();
 template void BasicTlsphSolid<2>::set_interface_loads(const std::vector<Vec2>&);
+template void BasicTlsphSolid<3>::set_interface_loads(const std::vector<Vec3>&);
 template void BasicTlsphSolid<2>::set_external_forces(const std::vector<Vec2>&);
 template void BasicTlsphSolid<3>::set_external_forces(const std::vector<Vec3>&);
 template void BasicTlsphSolid<2>::set_free(const std::vector<Vec2>&, Field&, const char*);

@@ -94,9 +94,8 @@ BasicTlsphSolid<D>::BasicTlsphSolid(Geometry geometry, Options options)
     throw InputError("tlsph: outline has " + std::to_string(geometry.outline.size()) +
                      " edges but " + std::to_string(geometry.outline_tags.size()) + " tags");
   if constexpr (D == 3)
-    if (!geometry.outline.empty() || options_.interface_particles)
-      throw InputError("tlsph: a 3-D solid has no coupling interface yet (give no outline and "
-                       "interface_particles = false)");
+    if (!geometry.outline.empty())
+      throw InputError("tlsph: a 3-D solid takes its interface from a box, not an outline");
   material_ = make_law<D>(options_.material);
   rho0_ = options_.material.density;
   h_ = options_.h_factor * options_.dp;
@@ -118,7 +117,7 @@ BasicTlsphSolid<D>::BasicTlsphSolid(Geometry geometry, Options options)
       }
   }
   build_reference();
-  if constexpr (D == 2) build_interface(geometry);
+  build_interface(geometry);
   build_images();
   if (quadratic_ && options_.hourglass > 0.0) { // k_ab = hourglass E V_a w_ab; not on images
     const std::size_t pairs = pair_b_.size();

@@ -15,9 +15,12 @@ template <int D> struct BasicSolidGeometry {
   std::vector<VecD<D>> X0; ///< particle reference positions [m]
   std::vector<double> V0;  ///< particle reference volumes [m^D; 2-D: m^2 per unit thickness]
   /// 2-D: the body's outline, counter-clockwise (solid on the left); may be empty when the
-  /// caller passes particles only (then no interface). 3-D: empty (no interface yet).
+  /// caller passes particles only (then no interface). 3-D: empty.
   std::vector<VecD<D>> outline;
   std::vector<std::string> outline_tags; ///< tag of edge outline[i] -> outline[i + 1 mod n]
+  /// 3-D: {lo, hi} of the box the particles fill (fill_box), whose faces, tagged "x-", "x+",
+  /// "y-", "y+", "z-", "z+", carry the interface; empty: no interface.
+  std::vector<VecD<D>> box;
 };
 using SolidGeometry = BasicSolidGeometry<2>;
 using SolidGeometry3 = BasicSolidGeometry<3>;
@@ -38,7 +41,7 @@ SolidGeometry fill_polygon(const std::vector<Vec2>& polygon, std::vector<std::st
 SolidGeometry fill_rectangle(const Vec2& lo, const Vec2& hi, double dp);
 
 /// The box [lo, hi] filled at the lattice points lo + (i + 1/2, j + 1/2, k + 1/2) dp inside it,
-/// volume dp^3, x fastest; no outline. Throws InputError for dp <= 0 or hi <= lo.
+/// volume dp^3, x fastest; no outline, box = {lo, hi}. Throws InputError for dp <= 0 or hi <= lo.
 SolidGeometry3 fill_box(const Vec3& lo, const Vec3& hi, double dp);
 
 } // namespace fsi::tlsph

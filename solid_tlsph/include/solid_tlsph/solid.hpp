@@ -5,8 +5,8 @@
 // once in the reference configuration; each step evaluates F_a (eq. 13), S(E) from materials/,
 // P = F S (eq. 7) and the momentum equation (eq. 12), integrated by velocity Verlet in two half
 // steps. Units SI, per unit thickness in 2-D (forces in N/m, energies in J/m). Written once for
-// D = 2 and 3 (docs/architecture.md, "Two and three dimensions"); the coupling interface (order-1
-// edges along the outline) is 2-D only.
+// D = 2 and 3 (docs/architecture.md, "Two and three dimensions"); the coupling interface: order-1
+// edges along the outline in 2-D, order-1 triangles over a box's faces in 3-D.
 #include <array>
 #include <cstdint>
 #include <functional>
@@ -106,7 +106,8 @@ template <int D> struct BasicTlsphOptions {
   /// "Coupled").
   double hourglass = 0.5;
   std::vector<BasicClamp<D>> clamps;
-  /// Outline tags whose surface particles form the coupling interface; empty: every edge.
+  /// Outline tags (3-D: the box's face tags, geometry.hpp) whose surface particles form the
+  /// coupling interface; empty: every edge (face).
   std::vector<std::string> interface_tags;
   /// Also hand every particle to the coupling as an interface node after the outline's nodes
   /// (InterfaceMesh::particle_volume): a particle fluid then takes the solid's own particles as
@@ -143,8 +144,8 @@ public:
   using Options = BasicTlsphOptions<D>;
 
   /// Validates the options and the geometry, builds the reference neighbour list, grad0 W V_b
-  /// per pair and B0 (eq. 14), marks clamped and surface particles, builds the interface (2-D;
-  /// in 3-D the outline must be empty and interface_particles false), and starts at rest at X0
+  /// per pair and B0 (eq. 14), marks clamped and surface particles, builds the interface (2-D:
+  /// from the outline; 3-D: from Geometry::box, the outline empty), and starts at rest at X0
   /// with a^0 from eq. 12 (gravity only). Throws InputError (bad options, empty geometry, a
   /// neighbour row over max_neighbors, a singular moment matrix).
   BasicTlsphSolid(Geometry geometry, Options options);
@@ -171,27 +172,31 @@ public:
   /// max_a sum_b |g~_ab| (its one-sided surface stencils raise the highest frequency).
   double dt_scale() const { return dt_scale_; }
 
-  // --- coupling interface (2-D) ---
-  /// Nodes on the tagged outline edges (each surface particle's projection onto its nearest
+  // --- coupling interface ---
+  /// 2-D: nodes on the tagged outline edges (each surface particle's projection onto its nearest
   /// tagged edge, and the edges' vertices), ordered along the outline (counter-clockwise: solid
-  /// on the left of a -> b), order-1 edges between neighbours along it. Each node is attached to
+  /// on the left of a -> b), order-1 edges between neighbours along it. 3-D: nodes on the tagged
+  /// faces of Geometry::box (each outer-layer particle's projection onto its face, and the
+  /// face's border lines at the same lattice coordinates), order-1 triangles, two per cell of
+  /// that grid, corners counter-clockwise seen from outside. Each node is attached to
   /// a particle (interface_particles(); clamped ones included: their loads are reactions).
   /// With TlsphOptions::interface_particles every particle follows as a node of its own (at its
-  /// position, with its volume V0; on no edge).
-  InterfaceMesh interface_mesh() const requires(D == 2);
+  /// position, with its volume V0; on no element).
+  BasicInterfaceMesh<D> interface_mesh() const;
   /// Particle each interface node k is attached to (a corner particle carries several).
   const std::vector<std::uint32_t>& interface_particles() const { return interface_; }
   /// Current x, v, a of the interface nodes.
-  std::vector<Vec2> interface_positions() const requires(D == 2);
-  std::vector<Vec2> interface_velocities() const requires(D == 2);
-  std::vector<Vec2> interface_accelerations() const requires(D == 2);
+  std::vector<Vec> interface_positions() const;
+  std::vector<Vec> interface_velocities() const;
+  std::vector<Vec> interface_accelerations() const;
   /// Outward unit normals of the interface nodes in the current configuration: the reference
   /// normal n0 (from the outline) mapped by the cofactor of F, n = F^-T n0 / |F^-T n0|
   /// (Nanson's formula; the rotation R of F = R U for pure rotations); zero for particle nodes.
-  std::vector<Vec2> interface_normals() const requires(D == 2);
-  /// Nodal forces on the interface nodes [N/m], held over the next advance(); they enter
-  /// eq. 12 as a^{F:S} = f / m. Clamped nodes ignore them (reactions).
-  void set_interface_loads(const std::vector<Vec2>& forces) requires(D == 2);
+  std::vector<Vec> interface_normals() const;
+  /// Nodal forces on the interface nodes [N/m in 2-D, N in 3-D], held over the next advance();
+  /// each is added to its particle's and enters eq. 12 as a^{F:S} = f / m. Clamped nodes ignore
+  /// them (reactions).
+  void set_interface_loads(const std::vector<Vec>& forces);
   /// External nodal forces on any particles (e.g. a test's tip load) [N/m in 2-D, N in 3-D],
   /// size() entries.
   void set_external_forces(const std::vector<Vec>& forces);
@@ -258,6 +263,10 @@ private:
   /// g~_ab and the reverse pair index of GradientCorrection::quadratic.
   void build_quadratic();
   void build_interface(const Geometry& geometry) requires(D == 2);
+  /// The 3-D interface over Geometry::box's tagged faces (interface_box.cpp).
+  void build_interface(const Geometry& geometry) requires(D == 3);
+  /// Appends every particle as a node of its own (TlsphOptions::interface_particles).
+  void add_particle_nodes();
   /// Partners of the Clamp::odd_image particles.
   void build_images();
   /// The face of fixed clamp k (its given one, or found from the lattice), oriented outwards
@@ -320,9 +329,9 @@ private:
 
   std::vector<std::uint32_t> loaded_;    // free particles with a nonzero external force
   std::vector<std::uint32_t> interface_; // particle of each interface node
-  std::vector<Vec2> interface_n0_;       // reference outward normals
-  std::vector<Vec2> interface_offset_;   // node X minus its particle's X0 (onto the outline)
-  InterfaceMesh interface_mesh_;
+  std::vector<Vec> interface_n0_;        // reference outward normals
+  std::vector<Vec> interface_offset_;    // node X minus its particle's X0 (onto the outline)
+  BasicInterfaceMesh<D> interface_mesh_;
 };
 
 using TlsphSolid = BasicTlsphSolid<2>;

@@ -1,0 +1,240 @@
+#include "fluid_sph/interface_boundary3.hpp"
+
+#include "fsi/core/error.hpp"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+
+namespace fsi::sph {
+
+namespace {
+
+/// The point of triangle (a, b, c) nearest to q as its area coordinates (L0, L1, L2), exactly 0
+/// on the edges and vertices it lies on (Ericson, Real-Time Collision Detection, sec. 5.1.5: the
+/// Voronoi regions of the vertices, edges and face in turn).
+std::array<double, 3> nearest_on_triangle(const Vec3& q, const Vec3& a, const Vec3& b,
+                                          const Vec3& c) {
+  const Vec3 ab = b - a, ac = c - a, ap = q - a;
+  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+  if (d1 <= 0.0 && d2 <= 0.0) return {1.0, 0.0, 0.0};
+  const Vec3 bp = q - b;
+  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+  if (d3 >= 0.0 && d4 <= d3) return {0.0, 1.0, 0.0};
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) {
+    const double v = d1 / (d1 - d3);
+    return {1.0 - v, v, 0.0};
+  }
+  const Vec3 cp = q - c;
+  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if (d6 >= 0.0 && d5 <= d6) return {0.0, 0.0, 1.0};
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) {
+    const double w = d2 / (d2 - d6);
+    return {1.0 - w, 0.0, w};
+  }
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0.0 && d4 - d3 >= 0.0 && d5 - d6 >= 0.0) {
+    const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+    return {0.0, 1.0 - w, w};
+  }
+  const double denom = 1.0 / (va + vb + vc);
+  return {va * denom, vb * denom, vc * denom};
+}
+
+/// Face f's corner-triangle frame at node positions x: t1 along corner 0 -> 1, n out of the solid
+/// (into the fluid), t2 = n x t1.
+struct Frame {
+  Vec3 t1, t2, n;
+};
+Frame frame(const InterfaceMesh3& mesh, const std::vector<Vec3>& x, std::size_t f) {
+  const auto& k = mesh.faces[f];
+  const Vec3 t1 = (x[k[1]] - x[k[0]]).normalized();
+  const Vec3 n = (x[k[1]] - x[k[0]]).cross(x[k[2]] - x[k[0]]).normalized();
+  return {t1, n.cross(t1), n};
+}
+
+} // namespace
+
+InterfaceBoundary3::InterfaceBoundary3(const InterfaceMesh3& mesh, double dp, int layers,
+                                       double spacing)
+    : mesh_(mesh) {
+  if (mesh.faces.empty()) throw InputError("fluid_sph: the interface mesh has no face");
+  if (layers < 1) throw InputError("fluid_sph: interface layers " + std::to_string(layers));
+  if (!(spacing >= 0.0 && spacing <= dp))
+    throw InputError("fluid_sph: interface spacing " + std::to_string(spacing) +
+                     " outside (0, dp]");
+  const double s = spacing > 0.0 ? spacing : dp, depth = layers * dp, tie = 1e-9 * dp;
+  const std::size_t m = mesh.faces.size();
+  // Open edges (of one face only) and the vertices on them: a point whose nearest feature is one
+  // lies beyond the interface's rim.
+  std::map<std::pair<std::size_t, std::size_t>, int> uses;
+  for (const auto& k : mesh.faces)
+    for (std::size_t j = 0; j < 3; ++j) ++uses[std::minmax(k[j], k[(j + 1) % 3])];
+  std::vector<std::uint8_t> rim(mesh.node_count(), 0);
+  for (const auto& [edge, count] : uses)
+    if (count == 1) rim[edge.first] = rim[edge.second] = 1;
+  auto open = [&](std::size_t f, const std::array<double, 3>& area) {
+    const auto& k = mesh.faces[f];
+    std::size_t zero = 0, inside = 0; // a vanishing and a positive area coordinate
+    for (std::size_t j = 0; j < 3; ++j) {
+      if (area[j] <= 0.0)
+        zero = j;
+      else
+        inside = j;
+    }
+    const int on = static_cast<int>((area[0] <= 0.0) + (area[1] <= 0.0) + (area[2] <= 0.0));
+    if (on == 0) return false;
+    if (on == 2) return rim[k[inside]] != 0;                                // a vertex
+    return uses.at(std::minmax(k[(zero + 1) % 3], k[(zero + 2) % 3])) == 1; // an edge
+  };
+  Vec3 lo = mesh.X0[mesh.faces[0][0]], hi = lo;
+  for (const auto& k : mesh.faces)
+    for (std::size_t j = 0; j < 3; ++j)
+      lo = lo.cwiseMin(mesh.X0[k[j]]), hi = hi.cwiseMax(mesh.X0[k[j]]);
+  auto keep = [&](const Vec3& q, std::size_t node, double volume) {
+    double best = std::numeric_limits<double>::max();
+    std::array<std::size_t, 3> faces{kNone, kNone, kNone};
+    std::array<double, 3> L_best{};
+    Vec3 normal = Vec3::Zero(), foot = Vec3::Zero();
+    for (std::size_t f = 0; f < m; ++f) {
+      const auto& k = mesh.faces[f];
+      const Vec3 &a = mesh.X0[k[0]], &b = mesh.X0[k[1]], &c = mesh.X0[k[2]];
+      const auto L = nearest_on_triangle(q, a, b, c);
+      const Vec3 p = L[0] * a + L[1] * b + L[2] * c; // on the corner triangle
+      const double d = (q - p).norm();
+      const Vec3 n = frame(mesh, mesh.X0, f).n;
+      if (d < best - tie) {
+        best = d, L_best = L, foot = p, normal = n, faces = {f, kNone, kNone};
+      } else if (d <= best + tie && (p - foot).norm() <= tie) {
+        normal += n; // an edge or vertex shared with the nearest face: the mean normal
+        // Another normal (a bisector): one of at most two more faces the point's normal averages.
+        const Vec3 n0 = frame(mesh, mesh.X0, faces[0]).n;
+        const bool other = (n - n0).norm() > 1e-9;
+        if (other && faces[1] == kNone)
+          faces[1] = f;
+        else if (other && faces[2] == kNone && (n - frame(mesh, mesh.X0, faces[1]).n).norm() > 1e-9)
+          faces[2] = f;
+      }
+    }
+    if (best >= depth || (q - foot).dot(normal) >= 0.0 || open(faces[0], L_best)) return;
+    // Anchored at x(xi, eta) of the face, offset in its frame.
+    const Frame fr = frame(mesh, mesh.X0, faces[0]);
+    const Vec3 r = q - face_point(mesh, mesh.X0, faces[0], L_best[1], L_best[2]);
+    face_.push_back(faces);
+    node_.push_back(node);
+    parent_.push_back({L_best[1], L_best[2]});
+    offset_.emplace_back(r.dot(fr.t1), r.dot(fr.t2), -r.dot(fr.n));
+    volume_.push_back(volume);
+  };
+  if (!mesh.particle_volume.empty()) { // the solid's own particles
+    for (std::size_t k = mesh.first_particle(); k < mesh.node_count(); ++k)
+      keep(mesh.X0[k], k, mesh.particle_volume[k - mesh.first_particle()]);
+  } else { // lattice points at (i + 1/2) s from the first face's corner 0
+    const Vec3 origin = mesh.X0[mesh.faces[0][0]];
+    std::array<int, 3> i0{}, i1{};
+    for (int c = 0; c < 3; ++c) {
+      const auto uc = static_cast<std::size_t>(c);
+      i0[uc] = static_cast<int>(std::floor((lo[c] - depth - origin[c]) / s)) - 1;
+      i1[uc] = static_cast<int>(std::ceil((hi[c] + depth - origin[c]) / s)) + 1;
+    }
+    for (int k = i0[2]; k <= i1[2]; ++k)
+      for (int j = i0[1]; j <= i1[1]; ++j)
+        for (int i = i0[0]; i <= i1[0]; ++i)
+          keep(origin + s * Vec3(i + 0.5, j + 0.5, k + 0.5), kNone, s * s * s);
+  }
+  if (face_.empty()) throw InputError("fluid_sph: no boundary point fits behind the interface");
+}
+
+std::vector<WallPoint3> InterfaceBoundary3::wall_points(int group) const {
+  std::vector<Vec3> x, n;
+  place(mesh_.X0, x, n);
+  std::vector<WallPoint3> out(size());
+  for (std::size_t p = 0; p < size(); ++p) {
+    // Depth along the point's normal to its face's plane: offset depth / cos(the angle between).
+    const Vec3 n0 = frame(mesh_, mesh_.X0, face_[p][0]).n;
+    const double d = offset_[p].z() / n[p].dot(n0);
+    // A convex edge: the anchor is behind the other face's plane (at a concave one both are the
+    // edge).
+    double corner = 0.0;
+    if (face_[p][1] != kNone) {
+      const Vec3 n1 = frame(mesh_, mesh_.X0, face_[p][1]).n;
+      const Vec3 anchor = face_point(mesh_, mesh_.X0, face_[p][0], parent_[p][0], parent_[p][1]);
+      if ((anchor - mesh_.X0[mesh_.faces[face_[p][1]][0]]).dot(n1) < -1e-9 * offset_[p].z())
+        corner = 0.5 * (n0 - n1).norm();
+    }
+    out[p] = {x[p], n[p], group, d, corner, volume_[p]};
+  }
+  return out;
+}
+
+void InterfaceBoundary3::place(const std::vector<Vec3>& x, std::vector<Vec3>& position,
+                               std::vector<Vec3>& normal) const {
+  position.resize(size());
+  normal.resize(size());
+  for (std::size_t p = 0; p < size(); ++p) {
+    const Frame fr = frame(mesh_, x, face_[p][0]);
+    Vec3 n = fr.n;
+    for (std::size_t j = 1; j < 3 && face_[p][j] != kNone; ++j) n += frame(mesh_, x, face_[p][j]).n;
+    normal[p] = n.normalized();
+    const Vec3& a = offset_[p];
+    position[p] = node_[p] != kNone
+                      ? x[node_[p]]
+                      : Vec3(face_point(mesh_, x, face_[p][0], parent_[p][0], parent_[p][1]) +
+                             a.x() * fr.t1 + a.y() * fr.t2 - a.z() * fr.n);
+  }
+}
+
+double InterfaceBoundary3::signed_distance(const std::vector<Vec3>& x, const Vec3& q) const {
+  double best = std::numeric_limits<double>::max();
+  Vec3 foot = Vec3::Zero(), normal = Vec3::Zero();
+  auto triangle = [&](const Vec3& a, const Vec3& b, const Vec3& c) {
+    const auto L = nearest_on_triangle(q, a, b, c);
+    const Vec3 f = L[0] * a + L[1] * b + L[2] * c;
+    const Vec3 n = (b - a).cross(c - a).normalized();
+    const double d = (q - f).norm(), tie = 1e-12 * (d + (b - a).norm());
+    if (d < best - tie)
+      best = d, foot = f, normal = n;
+    else if (d <= best + tie && (f - foot).norm() <= tie) // the same edge or vertex, another face
+      normal += n;
+  };
+  for (const auto& k : mesh_.faces) {
+    if (mesh_.order == 1) {
+      triangle(x[k[0]], x[k[1]], x[k[2]]);
+    } else { // the four sub-triangles through the mid-side nodes 3 (0-1), 4 (1-2), 5 (2-0)
+      triangle(x[k[0]], x[k[3]], x[k[5]]);
+      triangle(x[k[3]], x[k[1]], x[k[4]]);
+      triangle(x[k[5]], x[k[4]], x[k[2]]);
+      triangle(x[k[3]], x[k[4]], x[k[5]]);
+    }
+  }
+  return (q - foot).dot(normal) >= 0.0 ? best : -best;
+}
+
+void InterfaceBoundary3::interpolate(const std::vector<Vec3>& nodal,
+                                     std::vector<Vec3>& at_points) const {
+  at_points.resize(size());
+  for (std::size_t p = 0; p < size(); ++p)
+    at_points[p] = node_[p] != kNone
+                       ? nodal[node_[p]]
+                       : face_point(mesh_, nodal, face_[p][0], parent_[p][0], parent_[p][1]);
+}
+
+void InterfaceBoundary3::distribute(const std::vector<Vec3>& point_force,
+                                    std::vector<Vec3>& nodal) const {
+  nodal.assign(mesh_.node_count(), Vec3::Zero());
+  for (std::size_t p = 0; p < size(); ++p) {
+    if (node_[p] != kNone) {
+      nodal[node_[p]] += point_force[p];
+      continue;
+    }
+    const auto N = face_shape_functions(mesh_.order, parent_[p][0], parent_[p][1]);
+    const auto& k = mesh_.faces[face_[p][0]];
+    for (std::size_t j = 0; j < 6; ++j) nodal[k[j]] += N[j] * point_force[p];
+  }
+}
+
+} // namespace fsi::sph
