@@ -1,5 +1,6 @@
 #include "fluid_sph/interface_boundary3.hpp"
 
+#include "fsi/core/closest_on_triangle.hpp"
 #include "fsi/core/error.hpp"
 
 #include <Eigen/Geometry>
@@ -11,39 +12,6 @@
 namespace fsi::sph {
 
 namespace {
-
-/// The point of triangle (a, b, c) nearest to q as its area coordinates (L0, L1, L2), exactly 0
-/// on the edges and vertices it lies on (Ericson, Real-Time Collision Detection, sec. 5.1.5: the
-/// Voronoi regions of the vertices, edges and face in turn).
-std::array<double, 3> nearest_on_triangle(const Vec3& q, const Vec3& a, const Vec3& b,
-                                          const Vec3& c) {
-  const Vec3 ab = b - a, ac = c - a, ap = q - a;
-  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
-  if (d1 <= 0.0 && d2 <= 0.0) return {1.0, 0.0, 0.0};
-  const Vec3 bp = q - b;
-  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
-  if (d3 >= 0.0 && d4 <= d3) return {0.0, 1.0, 0.0};
-  const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) {
-    const double v = d1 / (d1 - d3);
-    return {1.0 - v, v, 0.0};
-  }
-  const Vec3 cp = q - c;
-  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
-  if (d6 >= 0.0 && d5 <= d6) return {0.0, 0.0, 1.0};
-  const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) {
-    const double w = d2 / (d2 - d6);
-    return {1.0 - w, 0.0, w};
-  }
-  const double va = d3 * d6 - d5 * d4;
-  if (va <= 0.0 && d4 - d3 >= 0.0 && d5 - d6 >= 0.0) {
-    const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
-    return {0.0, 1.0 - w, w};
-  }
-  const double denom = 1.0 / (va + vb + vc);
-  return {va * denom, vb * denom, vc * denom};
-}
 
 /// Face f's corner-triangle frame at node positions x: t1 along corner 0 -> 1, n out of the solid
 /// (into the fluid), t2 = n x t1.
@@ -77,19 +45,25 @@ InterfaceBoundary3::InterfaceBoundary3(const InterfaceMesh3& mesh, double dp, in
   std::vector<std::uint8_t> rim(mesh.node_count(), 0);
   for (const auto& [edge, count] : uses)
     if (count == 1) rim[edge.first] = rim[edge.second] = 1;
-  auto open = [&](std::size_t f, const std::array<double, 3>& area) {
+  auto open = [&](std::size_t f, TriangleFeature feature) {
     const auto& k = mesh.faces[f];
-    std::size_t zero = 0, inside = 0; // a vanishing and a positive area coordinate
-    for (std::size_t j = 0; j < 3; ++j) {
-      if (area[j] <= 0.0)
-        zero = j;
-      else
-        inside = j;
+    auto edge = [&](std::size_t a, std::size_t b) { return uses.at(std::minmax(k[a], k[b])) == 1; };
+    switch (feature) {
+    case TriangleFeature::vertex_a:
+      return rim[k[0]] != 0;
+    case TriangleFeature::vertex_b:
+      return rim[k[1]] != 0;
+    case TriangleFeature::vertex_c:
+      return rim[k[2]] != 0;
+    case TriangleFeature::edge_ab:
+      return edge(0, 1);
+    case TriangleFeature::edge_bc:
+      return edge(1, 2);
+    case TriangleFeature::edge_ca:
+      return edge(2, 0);
+    default:
+      return false;
     }
-    const int on = static_cast<int>((area[0] <= 0.0) + (area[1] <= 0.0) + (area[2] <= 0.0));
-    if (on == 0) return false;
-    if (on == 2) return rim[k[inside]] != 0;                                // a vertex
-    return uses.at(std::minmax(k[(zero + 1) % 3], k[(zero + 2) % 3])) == 1; // an edge
   };
   Vec3 lo = mesh.X0[mesh.faces[0][0]], hi = lo;
   for (const auto& k : mesh.faces)
@@ -98,17 +72,17 @@ InterfaceBoundary3::InterfaceBoundary3(const InterfaceMesh3& mesh, double dp, in
   auto keep = [&](const Vec3& q, std::size_t node, double volume) {
     double best = std::numeric_limits<double>::max();
     std::array<std::size_t, 3> faces{kNone, kNone, kNone};
-    std::array<double, 3> L_best{};
+    TrianglePoint nearest{0.0, 0.0, TriangleFeature::face};
     Vec3 normal = Vec3::Zero(), foot = Vec3::Zero();
     for (std::size_t f = 0; f < m; ++f) {
       const auto& k = mesh.faces[f];
       const Vec3 &a = mesh.X0[k[0]], &b = mesh.X0[k[1]], &c = mesh.X0[k[2]];
-      const auto L = nearest_on_triangle(q, a, b, c);
-      const Vec3 p = L[0] * a + L[1] * b + L[2] * c; // on the corner triangle
+      const TrianglePoint t = closest_on_triangle(q, a, b, c);
+      const Vec3 p = triangle_point(t, a, b, c); // on the corner triangle
       const double d = (q - p).norm();
       const Vec3 n = frame(mesh, mesh.X0, f).n;
       if (d < best - tie) {
-        best = d, L_best = L, foot = p, normal = n, faces = {f, kNone, kNone};
+        best = d, nearest = t, foot = p, normal = n, faces = {f, kNone, kNone};
       } else if (d <= best + tie && (p - foot).norm() <= tie) {
         normal += n; // an edge or vertex shared with the nearest face: the mean normal
         // Another normal (a bisector): one of at most two more faces the point's normal averages.
@@ -120,13 +94,13 @@ InterfaceBoundary3::InterfaceBoundary3(const InterfaceMesh3& mesh, double dp, in
           faces[2] = f;
       }
     }
-    if (best >= depth || (q - foot).dot(normal) >= 0.0 || open(faces[0], L_best)) return;
+    if (best >= depth || (q - foot).dot(normal) >= 0.0 || open(faces[0], nearest.feature)) return;
     // Anchored at x(xi, eta) of the face, offset in its frame.
     const Frame fr = frame(mesh, mesh.X0, faces[0]);
-    const Vec3 r = q - face_point(mesh, mesh.X0, faces[0], L_best[1], L_best[2]);
+    const Vec3 r = q - face_point(mesh, mesh.X0, faces[0], nearest.v, nearest.w);
     face_.push_back(faces);
     node_.push_back(node);
-    parent_.push_back({L_best[1], L_best[2]});
+    parent_.push_back({nearest.v, nearest.w});
     offset_.emplace_back(r.dot(fr.t1), r.dot(fr.t2), -r.dot(fr.n));
     volume_.push_back(volume);
   };
@@ -192,8 +166,7 @@ double InterfaceBoundary3::signed_distance(const std::vector<Vec3>& x, const Vec
   double best = std::numeric_limits<double>::max();
   Vec3 foot = Vec3::Zero(), normal = Vec3::Zero();
   auto triangle = [&](const Vec3& a, const Vec3& b, const Vec3& c) {
-    const auto L = nearest_on_triangle(q, a, b, c);
-    const Vec3 f = L[0] * a + L[1] * b + L[2] * c;
+    const Vec3 f = triangle_point(closest_on_triangle(q, a, b, c), a, b, c);
     const Vec3 n = (b - a).cross(c - a).normalized();
     const double d = (q - f).norm(), tie = 1e-12 * (d + (b - a).norm());
     if (d < best - tie)

@@ -9,6 +9,7 @@
 //
 // Nodes are struct-of-arrays x, v, a (NodeMotion3), writable every step; call update() after
 // moving them so the normals follow. Every triangle carries a group id chosen by the caller.
+#include "fsi/core/closest_on_triangle.hpp"
 #include "fsi/core/node_motion.hpp"
 #include "fsi/core/types.hpp"
 
@@ -30,17 +31,8 @@ struct WallTriangles {
   std::size_t size() const { return node.size(); }
 };
 
-/// The feature of a triangle a nearest point lies on: a vertex, an edge (edge k joins vertex k
-/// and vertex k + 1 mod 3: ab, bc, ca) or the face's interior.
-enum class TriangleFeature : unsigned char {
-  vertex_a,
-  vertex_b,
-  vertex_c,
-  edge_ab,
-  edge_bc,
-  edge_ca,
-  face
-};
+/// The feature of a triangle a nearest point lies on (fsi/core/closest_on_triangle.hpp).
+using TriangleFeature = fsi::TriangleFeature;
 
 /// Indices of what one add_triangles call created.
 struct TriangleRange {
