@@ -101,7 +101,27 @@ Args parse(const std::vector<std::string>& args) {
   return a;
 }
 
-int dispatch(const Args& a, std::ostream& out, std::ostream& err, bool terminal) {
+/// Under mpirun: what the decomposed run does not support yet (issue 47), refused before any
+/// computation; nothing otherwise.
+void check_decomposable(const Scene& scene, const Args& a, const Ranks& ranks) {
+  if (!ranks.decomposed()) return;
+  auto refuse = [&](const std::string& what) {
+    throw InputError(a.scene + ": not yet supported under mpirun (" + std::to_string(ranks.size()) +
+                     " processes, issue 47): " + what + "; run it without mpirun");
+  };
+  if (scene.dimension != 2) refuse("a 3-D scene");
+  if (!scene.fluid || scene.fluid->type != "emps")
+    refuse(scene.fluid ? "fluid.type " + scene.fluid->type + " (EMPS only)"
+                       : "a scene without fluid");
+  if (!scene.structures.empty()) refuse("structures");
+  if (!a.restart.empty() || scene.checkpoint)
+    refuse("checkpoints (the checkpoint block) and --restart");
+  for (const auto& p : scene.output.probes)
+    if (p.quantity.rfind("wall_force", 0) == 0) refuse("wall_force probes");
+}
+
+int dispatch(const Args& a, std::ostream& out, std::ostream& err, bool terminal,
+             const Ranks& ranks) {
   if (a.command != "run" && a.command != "check" && a.command != "reference")
     throw InputError("fsi: unknown command '" + a.command + "' (see fsi --help)");
   if (a.help) {
@@ -148,12 +168,23 @@ int dispatch(const Args& a, std::ostream& out, std::ostream& err, bool terminal)
     out << a.scene << ": ok\n";
     return 0;
   }
+  check_decomposable(scene, a, ranks);
   auto models = named([&] { return build_models(scene); });
+  if (ranks.decomposed())
+    for (auto& m : models)
+      if (!m->decompose(ranks))
+        throw InputError(a.scene + ": a part of it cannot run under mpirun");
   if (a.threads > 0) set_num_threads(a.threads);
   RunOptions options{a.out, terminal, &err, a.restart};
   options.overwrite = a.overwrite;
+  options.ranks = &ranks;
   const RunResult result = run_scene(scene, models, options);
   if (result.signal != 0) {
+    if (result.checkpoint.empty()) { // under mpirun: no checkpoints yet (issue 47)
+      err << "interrupted by signal " << result.signal << " at step " << result.step
+          << ", t = " << result.time << " s; no checkpoint (not yet under mpirun)\n";
+      return 128 + result.signal;
+    }
     // The command that continues it: the same scene, overrides and threads.
     std::string again = "fsi run " + shell_word(a.scene) + " --out " + shell_word(a.out);
     for (const auto& o : a.overrides) again += " --set " + shell_word(o);
@@ -171,7 +202,7 @@ int dispatch(const Args& a, std::ostream& out, std::ostream& err, bool terminal)
 } // namespace
 
 int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err,
-            bool terminal) {
+            bool terminal, const Ranks& ranks) {
   if (!args.empty() && (args[0] == "--help" || args[0] == "-h" || args[0] == "help")) {
     out << kUsage;
     return 0;
@@ -181,7 +212,7 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
     return 0;
   }
   try {
-    return dispatch(parse(args), out, err, terminal);
+    return dispatch(parse(args), out, err, terminal, ranks);
   } catch (const InputError& e) {
     err << e.what() << '\n';
     return 2;

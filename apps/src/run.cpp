@@ -110,8 +110,9 @@ std::string override_difference(std::vector<std::string> written, std::vector<st
 class Recorder {
 public:
   Recorder(const Scene& scene, const std::vector<std::unique_ptr<Model>>& models,
-           const std::filesystem::path& out, std::optional<int> resume)
-      : scene_(scene), models_(models) {
+           const std::filesystem::path& out, std::optional<int> resume, const Ranks& ranks)
+      : scene_(scene), models_(models), ranks_(ranks) {
+    if (ranks.rank() != 0) return; // rank 0 writes the files
     const auto h5 = out / "fields.h5", xmf = out / "fields.xmf", csv = out / "probes.csv";
     fields_ = resume ? std::make_unique<FieldsFile>(h5, xmf, *resume)
                      : std::make_unique<FieldsFile>(h5, xmf);
@@ -125,6 +126,11 @@ public:
   }
 
   void frame(double time) {
+    for (const auto& m : models_) m->gather_frame();
+    if (ranks_.rank() != 0) {
+      ++frames_;
+      return;
+    }
     fields_->begin_frame(time);
     for (const auto& m : models_) m->write_frame(*fields_, scene_.output.fields);
     fields_->end_frame();
@@ -133,7 +139,7 @@ public:
     probes_->row(time, values);
   }
 
-  int frames() const { return fields_->frames(); }
+  int frames() const { return fields_ ? fields_->frames() : frames_; }
 
 private:
   static std::vector<std::string> probe_names(const Scene& scene) {
@@ -150,6 +156,8 @@ private:
 
   const Scene& scene_;
   const std::vector<std::unique_ptr<Model>>& models_;
+  const Ranks& ranks_;
+  int frames_ = 0; // counted on the ranks without the files
   std::unique_ptr<FieldsFile> fields_;
   std::unique_ptr<ProbesCsv> probes_;
 };
@@ -343,7 +351,19 @@ RunResult run_scene(const Scene& scene, std::vector<std::unique_ptr<Model>>& mod
   if (!(fixed_steps <= kMaxSteps))
     throw InputError(scene.path.string() + ": time: time.end / time.dt = " + format_g(fixed_steps) +
                      " steps; a run takes at most " + format_g(kMaxSteps));
-  const OutputLock lock(options.out, options.restart.empty(), options.overwrite);
+  const OneProcess one;
+  const Ranks& ranks = options.ranks ? *options.ranks : one;
+  const bool root = ranks.rank() == 0;
+  // Rank 0 holds the folder; every rank learns whether it could (InputError on each, printed by
+  // rank 0).
+  std::optional<OutputLock> lock;
+  std::string refused;
+  try {
+    if (root) lock.emplace(options.out, options.restart.empty(), options.overwrite);
+  } catch (const InputError& e) {
+    refused = e.what();
+  }
+  if (!ranks.all(refused.empty())) throw InputError(refused);
   std::ostream& log = *options.log;
   Clock c;
   c.next_frame = std::min(interval, end);
@@ -402,8 +422,9 @@ RunResult run_scene(const Scene& scene, std::vector<std::unique_ptr<Model>>& mod
         .add("end", iso_time(std::chrono::system_clock::now()))
         .add("wall_seconds",
              std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count())
-        .add("threads", num_threads())
-        .add("status", run_status)
+        .add("threads", num_threads());
+    if (ranks.decomposed()) run.add("processes", ranks.size());
+    run.add("status", run_status)
         .add("message", run_message)
         .add("restarted_from", options.restart.string())
         .add("checkpoint", result.checkpoint.string())
@@ -419,6 +440,7 @@ RunResult run_scene(const Scene& scene, std::vector<std::unique_ptr<Model>>& mod
   InterruptGuard interrupt;
   // What a second signal leaves as run.json (it ends the process at once).
   auto update_last_words = [&] {
+    if (!root) return;
     interrupt.set_last_words(
         options.out / "run.json",
         run_json("interrupted",
@@ -452,7 +474,7 @@ RunResult run_scene(const Scene& scene, std::vector<std::unique_ptr<Model>>& mod
   bool state_broken = true;  // false when the run stopped before a step (the step limit)
   update_last_words();
   try {
-    recorder.emplace(scene, models, options.out, resume);
+    recorder.emplace(scene, models, options.out, resume, ranks);
     if (!resume) {
       recorder->frame(0.0);
       c.frames = recorder->frames();
@@ -496,8 +518,12 @@ RunResult run_scene(const Scene& scene, std::vector<std::unique_ptr<Model>>& mod
       progress.update(c.time, c.step);
       if (options.on_step) options.on_step(c.time, c.step);
       if (checkpoint_due()) checkpoint();
-      if ((result.signal = interrupt.received()) != 0) {
-        if (checkpoint_step != c.step) checkpoint();
+      // Decomposed: the ranks stop at the same step (the largest signal any rank received).
+      result.signal = ranks.decomposed()
+                          ? static_cast<int>(ranks.max(static_cast<double>(interrupt.received())))
+                          : interrupt.received();
+      if (result.signal != 0) {
+        if (checkpoint_step != c.step && !ranks.decomposed()) checkpoint();
         status = "interrupted";
         message = "stopped by signal " + std::to_string(result.signal) + " after step " +
                   std::to_string(c.step);
@@ -524,9 +550,13 @@ RunResult run_scene(const Scene& scene, std::vector<std::unique_ptr<Model>>& mod
         for (const auto& m : models) m->flush_logs();
         Clock failed = c;
         failed.time = attempted;
-        write_checkpoint(options.out / "failed_state.h5",
-                         make_archive(scene, models, failed, true));
-        kept += (options.out / "failed_state.h5").string();
+        if (ranks.decomposed()) { // no checkpoints of a decomposed fluid yet (issue 47)
+          kept += "no failed_state.h5 under mpirun";
+        } else {
+          write_checkpoint(options.out / "failed_state.h5",
+                           make_archive(scene, models, failed, true));
+          kept += (options.out / "failed_state.h5").string();
+        }
       } catch (const std::exception& f) {
         kept += std::string("not all written: ") + f.what();
       }
@@ -537,7 +567,8 @@ RunResult run_scene(const Scene& scene, std::vector<std::unique_ptr<Model>>& mod
   }
   // run.json whole or absent (a full disk): written to run.json.tmp, then renamed.
   try {
-    write_file_atomically(options.out / "run.json", run_json(status, message, true));
+    const std::string json = run_json(status, message, true); // collective when decomposed
+    if (root) write_file_atomically(options.out / "run.json", json);
   } catch (const RunError& e) {
     std::error_code ignored;
     std::filesystem::remove(options.out / "run.json", ignored); // not an earlier state's

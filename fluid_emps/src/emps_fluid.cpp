@@ -179,10 +179,14 @@ template <int D> void BasicEmpsFluid<D>::check_crossed(long step, double t) cons
   const auto* crossed = crossed_and_wall.first;
   const auto* wall = crossed_and_wall.second;
   const std::size_t i = first_index(owned(), [&](std::size_t k) { return (*crossed)[k] != 0; });
-  if (i != none)
-    throw RunError("fluid: " + where(particles_, i, step, t) + " is behind wall " +
-                   (D == 2 ? "segment " : "triangle ") + std::to_string((*wall)[i]) +
-                   " (try a smaller time step or a larger alpha_rep)");
+  // Decomposed: every process stops at the same step (collective); the owner names the particle.
+  if (decomposition_->all(i == none)) return;
+  if (i == none)
+    throw RunError("fluid: a particle is behind a wall (on another process), step " +
+                   std::to_string(step) + ", t = " + std::to_string(t) + " s");
+  throw RunError("fluid: " + where(particles_, i, step, t) + " is behind wall " +
+                 (D == 2 ? "segment " : "triangle ") + std::to_string((*wall)[i]) +
+                 " (try a smaller time step or a larger alpha_rep)");
 }
 
 template <int D> void BasicEmpsFluid<D>::advance(double t, double dt) {

@@ -5,6 +5,7 @@
 #include "fsi_app/output/fields_file.hpp"
 #include "fsi_app/output/json.hpp"
 #include "fsi_app/particle_guard.hpp"
+#include "fsi_app/ranks.hpp"
 #include "fsi_app/scene.hpp"
 
 #include <filesystem>
@@ -48,6 +49,12 @@ public:
   /// What the user should know since the last call (e.g. a solver's fallback); the driver
   /// prints each as `note: ...` on the log after the step.
   virtual std::vector<std::string> take_notes() { return {}; }
+  /// Steps from now on decomposed over `ranks` (which outlive the model); false when this model
+  /// cannot be (the run is then refused). After it, particle_count() and report() are global.
+  virtual bool decompose(const Ranks& /*ranks*/) { return false; }
+  /// Collective when decomposed: brings the frame's data to rank 0, where write_frame and probe
+  /// read it (default, and one process: nothing to do).
+  virtual void gather_frame() {}
 };
 
 } // namespace fsi::app

@@ -24,6 +24,8 @@ struct RunOptions {
   bool overwrite = false;
   /// Called after every step with (time, step), e.g. the Python module's progress callback.
   std::function<void(double, long)> on_step = nullptr;
+  /// The processes of the run (null: one); decomposed, files are written by rank 0 only.
+  const Ranks* ranks = nullptr;
 };
 
 /// How a run that did not throw ended.

@@ -55,9 +55,54 @@ std::optional<double> EmpsModel::stable_dt(double courant) const {
 
 void EmpsModel::declare(FieldsFile&) const {}
 
-void EmpsModel::write_frame(FieldsFile& file, const std::vector<std::string>& fields) const {
+bool EmpsModel::decompose(const Ranks& ranks) {
+  decomposition_ = ranks.particle_decomposition();
+  ranks_ = &ranks;
+  fluid_->decompose(*decomposition_);
+  return true;
+}
+
+void EmpsModel::gather_frame() {
+  if (!ranks_) return;
+  constexpr std::size_t k = 8; // values a particle
   const emps::Particles& p = fluid_->particles();
-  const std::size_t n = p.size();
+  const std::size_t owned = fluid_->owned();
+  packed_.resize(k * owned);
+  for (std::size_t i = 0; i < owned; ++i) {
+    double* row = &packed_[k * i];
+    row[0] = p.id[i], row[1] = p.x[i], row[2] = p.y[i], row[3] = p.vx[i], row[4] = p.vy[i];
+    row[5] = p.p[i], row[6] = p.pnd[i], row[7] = p.surface[i];
+  }
+  const std::vector<double> all = ranks_->gather(packed_);
+  const std::size_t n = all.size() / k;
+  std::vector<std::size_t> order(n);
+  for (std::size_t j = 0; j < n; ++j) order[j] = j;
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return all[k * a] < all[k * b]; });
+  auto& g = gathered_;
+  for (auto* v : {&g.x, &g.y, &g.vx, &g.vy, &g.p, &g.pnd}) v->resize(n);
+  g.surface.resize(n);
+  for (std::size_t j = 0; j < n; ++j) {
+    const double* row = &all[k * order[j]];
+    g.x[j] = row[1], g.y[j] = row[2], g.vx[j] = row[3], g.vy[j] = row[4];
+    g.p[j] = row[5], g.pnd[j] = row[6], g.surface[j] = static_cast<std::uint8_t>(row[7]);
+  }
+}
+
+EmpsModel::FrameParticles EmpsModel::frame() const {
+  if (ranks_) {
+    const auto& g = gathered_;
+    return {g.x.size(),  g.x.data(), g.y.data(),   g.vx.data(),
+            g.vy.data(), g.p.data(), g.pnd.data(), g.surface.data()};
+  }
+  const emps::Particles& p = fluid_->particles();
+  return {p.size(),    p.x.data(), p.y.data(),   p.vx.data(),
+          p.vy.data(), p.p.data(), p.pnd.data(), p.surface.data()};
+}
+
+void EmpsModel::write_frame(FieldsFile& file, const std::vector<std::string>& fields) const {
+  const FrameParticles p = frame();
+  const std::size_t n = p.n;
   xy_.resize(2 * n);
   v_.resize(2 * n);
   flag_.resize(n);
@@ -68,25 +113,25 @@ void EmpsModel::write_frame(FieldsFile& file, const std::vector<std::string>& fi
   }
   file.write_grid("particles", xy_,
                   select_fields(fields, {{"velocity", 2, v_.data()},
-                                         {"pressure", 1, p.p.data()},
-                                         {"pnd", 1, p.pnd.data()},
+                                         {"pressure", 1, p.p},
+                                         {"pnd", 1, p.pnd},
                                          {"free_surface", 1, flag_.data()}}));
 }
 
 std::optional<double> EmpsModel::probe(const ProbeSpec& probe) const {
-  const emps::Particles& p = fluid_->particles();
+  const FrameParticles p = frame();
   if (probe.quantity ==
       "surge_front") { // largest x of the bulk: isolated spray (pnd < n0/2) skipped
     double front = -std::numeric_limits<double>::infinity();
     const double bulk = 0.5 * fluid_->n0();
-    for (std::size_t i = 0; i < p.size(); ++i)
+    for (std::size_t i = 0; i < p.n; ++i)
       if (p.pnd[i] >= bulk) front = std::max(front, p.x[i]);
     return front;
   }
   if (probe.quantity == "pressure") { // MPS-weighted mean over particles within r_e (eq. 8)
     const particles::MpsWeight w_e(fluid_->options().r_e());
     double sum = 0.0, weights = 0.0;
-    for (std::size_t i = 0; i < p.size(); ++i) {
+    for (std::size_t i = 0; i < p.n; ++i) {
       const double r = std::hypot(p.x[i] - probe.point->x(), p.y[i] - probe.point->y());
       if (r >= w_e.r_e) continue;
       const double w = w_e.inside(r);
@@ -98,7 +143,7 @@ std::optional<double> EmpsModel::probe(const ProbeSpec& probe) const {
   if (probe.quantity == "mean_pressure") { // plain mean over the particles in the box
     double sum = 0.0;
     std::size_t count = 0;
-    for (std::size_t i = 0; i < p.size(); ++i)
+    for (std::size_t i = 0; i < p.n; ++i)
       if (p.x[i] >= probe.box_min->x() && p.x[i] <= probe.box_max->x() &&
           p.y[i] >= probe.box_min->y() && p.y[i] <= probe.box_max->y())
         sum += p.p[i], ++count;
@@ -106,12 +151,11 @@ std::optional<double> EmpsModel::probe(const ProbeSpec& probe) const {
   }
   if (probe.quantity == "mean_speed" || probe.quantity == "kinetic_energy") {
     double speeds = 0.0, v2 = 0.0;
-    for (std::size_t i = 0; i < p.size(); ++i) {
+    for (std::size_t i = 0; i < p.n; ++i) {
       const double s2 = p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i];
       speeds += std::sqrt(s2), v2 += s2;
     }
-    if (probe.quantity == "mean_speed")
-      return p.size() ? speeds / static_cast<double>(p.size()) : 0.0;
+    if (probe.quantity == "mean_speed") return p.n ? speeds / static_cast<double>(p.n) : 0.0;
     return 0.5 * fluid_->options().density * fluid_->options().volume() * v2; // per m of depth
   }
   if (probe.quantity == "wall_force_x" || probe.quantity == "wall_force_y") {
@@ -160,16 +204,22 @@ std::optional<std::string> EmpsModel::non_finite() const {
   return std::nullopt;
 }
 
+std::size_t EmpsModel::global(std::size_t local) const {
+  return decomposition_ ? static_cast<std::size_t>(decomposition_->sum(static_cast<double>(local)))
+                        : local;
+}
+
 std::optional<ParticleCount> EmpsModel::particle_count() const {
   const auto& o = fluid_->options();
-  return ParticleCount{fluid_->particles().size(), {o.domain_min, o.domain_max}};
+  // Decomposed: the global count, one reduction a step (the guard's collective check).
+  return ParticleCount{global(fluid_->owned()), {o.domain_min, o.domain_max}};
 }
 
 void EmpsModel::report(JsonObject& run) const {
   JsonObject f;
   f.add("particles_initial", static_cast<long long>(initial_count_))
-      .add("particles", static_cast<long long>(fluid_->particles().size()))
-      .add("removed_particles", static_cast<long long>(fluid_->removed()))
+      .add("particles", static_cast<long long>(particle_count()->count))
+      .add("removed_particles", static_cast<long long>(global(fluid_->removed())))
       .add("mean_neighbours", fluid_->mean_neighbours())
       .add("n0", fluid_->n0())
       .add("neighbour_list_builds", static_cast<long long>(fluid_->neighbour_builds()));

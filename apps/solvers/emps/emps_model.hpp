@@ -42,6 +42,12 @@ public:
   /// Pressure (mirror, eqs. 25-26), repulsive (eq. 27 and the wall damper) and viscous (eq. 24)
   /// parts of the wall force on the interfaces' segments (eq. 52, with the sign on the structure).
   std::vector<std::pair<std::string, Vec2>> force_parts() const override;
+  /// The fluid steps over `ranks` (parallel::ParticleDecomposition under mpirun); every rank
+  /// built it from the whole scene.
+  bool decompose(const Ranks& ranks) override;
+  /// Decomposed: every rank's owned particles to rank 0, in id order (one-process files and
+  /// N-process files compare directly).
+  void gather_frame() override;
 
   emps::EmpsFluid& fluid() { return *fluid_; }
   erp::WallSet& walls() { return *walls_; }
@@ -50,16 +56,32 @@ public:
   const FluidAdapter& adapter() const { return *adapter_; }
 
 private:
+  /// The particles a frame and the probes read: the fluid's own, or (decomposed) the gathered.
+  struct FrameParticles {
+    std::size_t n = 0;
+    const double *x, *y, *vx, *vy, *p, *pnd;
+    const std::uint8_t* surface;
+  };
+  FrameParticles frame() const;
+  /// A count over every rank when decomposed (exact: a sum of integers below 2^53).
+  std::size_t global(std::size_t local) const;
   /// [first, last) wall segments of the interfaces (every wall without one).
   std::pair<int, int> interface_segments() const;
 
   std::unique_ptr<erp::WallSet> walls_;
   std::vector<erp::InterfaceWalls> interface_walls_;
+  std::unique_ptr<particles::Decomposition<2>> decomposition_; // before the fluid that uses it
+  const Ranks* ranks_ = nullptr;                               ///< set when decomposed
   std::unique_ptr<emps::EmpsFluid> fluid_;
   std::unique_ptr<FluidAdapter> adapter_;
   std::size_t initial_count_ = 0;
   std::vector<std::string> wall_names_; ///< by wall group: the scene's walls, then the interfaces
   mutable std::vector<double> xy_, v_, flag_; // output buffers
+  std::vector<double> packed_;                // gather_frame: id, x, y, vx, vy, p, pnd, surface
+  struct {
+    std::vector<double> x, y, vx, vy, p, pnd;
+    std::vector<std::uint8_t> surface;
+  } gathered_; // on rank 0, in id order
 };
 
 } // namespace fsi::app::emps_plugin

@@ -1,0 +1,34 @@
+#pragma once
+// The MPI ranks of `mpirun -np N fsi run` (built only with FSI_HAVE_MPI; issue 47). fsi runs
+// decomposed when an MPI launcher started it (its environment names the rank count), so a plain
+// `fsi run` never initialises MPI and behaves as a build without it.
+#include "fsi_app/ranks.hpp"
+#include "parallel/communicator.hpp"
+
+#include <string>
+
+namespace fsi::app {
+
+class MpiRanks final : public Ranks {
+public:
+  MpiRanks() = default; // MPI_COMM_WORLD, after MPI_Init
+  int rank() const override { return comm_.rank(); }
+  int size() const override { return comm_.size(); }
+  bool decomposed() const override { return true; }
+  bool all(bool v) const override { return comm_.all(v); }
+  double max(double v) const override { return comm_.max(v); }
+  std::unique_ptr<particles::Decomposition<2>> particle_decomposition() const override;
+  std::vector<double> gather(const std::vector<double>& local) const override;
+
+private:
+  parallel::Communicator comm_;
+};
+
+/// Whether an MPI launcher started this process (OpenMPI's, or a PMI/PMIx one's, environment).
+bool started_by_mpi_launcher();
+
+/// `fsi ARGS` on the ranks of MPI_COMM_WORLD: MPI_Init, the command, MPI_Finalize. Rank 0 prints;
+/// an internal error (exit 1) on any rank prints there and ends every rank (MPI_Abort).
+int run_cli_ranks(int& argc, char**& argv, const std::vector<std::string>& args, bool terminal);
+
+} // namespace fsi::app

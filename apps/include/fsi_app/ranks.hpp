@@ -1,0 +1,43 @@
+#pragma once
+// The processes a run is spread over (issue 47): one (every plain `fsi run`), or the MPI ranks of
+// `mpirun -np N fsi run` (MpiRanks, apps/src/mpi_ranks.cpp, built only with FSI_HAVE_MPI). The
+// driver writes its files on rank 0; a model decomposed over the ranks gathers each frame there.
+// Every call but rank(), size() and decomposed() is collective.
+#include "particles/decomposition.hpp"
+
+#include <memory>
+#include <vector>
+
+namespace fsi::app {
+
+class Ranks {
+public:
+  virtual ~Ranks() = default;
+  virtual int rank() const = 0;
+  virtual int size() const = 0;
+  /// Whether the run is decomposed over MPI ranks (started by an MPI launcher, np = 1 included).
+  virtual bool decomposed() const = 0;
+  /// True on every rank iff `v` is true on every rank.
+  virtual bool all(bool v) const = 0;
+  virtual double max(double v) const = 0;
+  /// A new exchange hook over these ranks for a 2-D particle fluid.
+  virtual std::unique_ptr<particles::Decomposition<2>> particle_decomposition() const = 0;
+  /// Every rank's `local`, concatenated in rank order, on rank 0 (empty on the others).
+  virtual std::vector<double> gather(const std::vector<double>& local) const = 0;
+};
+
+/// One process, not decomposed: the serial run.
+class OneProcess final : public Ranks {
+public:
+  int rank() const override { return 0; }
+  int size() const override { return 1; }
+  bool decomposed() const override { return false; }
+  bool all(bool v) const override { return v; }
+  double max(double v) const override { return v; }
+  std::unique_ptr<particles::Decomposition<2>> particle_decomposition() const override {
+    return std::make_unique<particles::LocalParticles<2>>();
+  }
+  std::vector<double> gather(const std::vector<double>& local) const override { return local; }
+};
+
+} // namespace fsi::app

@@ -1,0 +1,61 @@
+#include "fsi_app/mpi_ranks.hpp"
+
+#include "fsi_app/cli.hpp"
+#include "parallel/particle_decomposition.hpp"
+
+#include <cstdlib>
+#include <iostream>
+#include <sstream>
+
+namespace fsi::app {
+
+std::unique_ptr<particles::Decomposition<2>> MpiRanks::particle_decomposition() const {
+  return std::make_unique<parallel::ParticleDecomposition<2>>(comm_);
+}
+
+std::vector<double> MpiRanks::gather(const std::vector<double>& local) const {
+  const int count = static_cast<int>(local.size());
+  std::vector<int> counts(static_cast<std::size_t>(size())), offsets(counts.size(), 0);
+  MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm_.comm());
+  std::size_t total = 0;
+  for (std::size_t r = 0; r < counts.size(); ++r) {
+    offsets[r] = static_cast<int>(total);
+    total += static_cast<std::size_t>(counts[r]);
+  }
+  std::vector<double> all(rank() == 0 ? total : 0);
+  MPI_Gatherv(local.data(), count, MPI_DOUBLE, all.data(), counts.data(), offsets.data(),
+              MPI_DOUBLE, 0, comm_.comm());
+  return all;
+}
+
+bool started_by_mpi_launcher() {
+  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_SIZE"})
+    if (std::getenv(name) != nullptr) return true;
+  return false;
+}
+
+int run_cli_ranks(int& argc, char**& argv, const std::vector<std::string>& args, bool terminal) {
+  MPI_Init(&argc, &argv);
+  int code = 0;
+  {
+    const MpiRanks ranks;
+    // Every rank reads the same scene and takes the same decisions, so a bad input or a stopped
+    // run ends every rank with the same status: rank 0 prints it.
+    std::ostringstream quiet_out, quiet_err;
+    const bool root = ranks.rank() == 0;
+    code = run_cli(args, root ? std::cout : quiet_out, root ? std::cerr : quiet_err,
+                   terminal && root, ranks);
+    // A run stopped by what one rank found (a particle behind a wall): that rank names it.
+    if (code == 3 && !root && quiet_err.str().find("(on another process)") == std::string::npos)
+      std::cerr << "rank " << ranks.rank() << ": " << quiet_err.str();
+    if (code == 1) { // unexpected, perhaps on this rank only: the others may wait for it
+      if (!root) std::cerr << "rank " << ranks.rank() << ": " << quiet_err.str();
+      std::cerr.flush();
+      MPI_Abort(MPI_COMM_WORLD, 1);
+    }
+  }
+  MPI_Finalize();
+  return code;
+}
+
+} // namespace fsi::app
