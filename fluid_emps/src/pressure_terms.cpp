@@ -77,7 +77,7 @@ template <int D> VecSum<D> BasicEmpsFluid<D>::fluid_gradient(std::size_t i, doub
 }
 
 // v^{n+1} = v* - dt/rho <grad p>^ERP, x^{n+1} = x* + dt (v^{n+1} - v*) (eqs. 10, 14, 25-27),
-// and in 2-D the wall force of eq. 52 on each face (not kept in 3-D yet).
+// and the wall force of eq. 52 on each face (in 3-D without the viscous mirror term yet).
 template <int D> void BasicEmpsFluid<D>::pressure_gradient(double dt) {
   Timer timer(times_.pressure_gradient);
   ParticleSet& p = particles_;
@@ -92,6 +92,8 @@ template <int D> void BasicEmpsFluid<D>::pressure_gradient(double dt) {
   if constexpr (D == 2) {
     walls_.forces.resize(n);
     for (std::size_t k = 0; k < erp::max_faces; ++k) f_wall[k] = components(walls_.viscous[k]);
+  } else {
+    for (TriangleForces& f : walls_.forces) f.resize(n);
   }
   parallel_for_balanced(n, [&](std::size_t i) {
     VecD<D> grad;
@@ -129,10 +131,22 @@ template <int D> void BasicEmpsFluid<D>::pressure_gradient(double dt) {
              // behind two or three faces (edges, corners) once
       const VecSum<D> fluid = fluid_gradient(i, nullptr);
       for (int a = 0; a < D; ++a) grad[a] = c_grad * fluid[static_cast<std::size_t>(a)];
-      grad += walls_.terms.corner_mirror_pressure(i);
+      const Vec3 corner = walls_.terms.corner_mirror_pressure(i);
+      grad += corner;
+      std::array<Vec3, max_faces3> wall = split_corner_term(corner, walls_.hits, i);
       for (std::size_t k = 0; k < max_faces3; ++k) {
         if (walls_.hits[k].triangle[i] < 0) continue;
-        grad += walls_.terms.mirror_pressure(i, k) + walls_.terms.contact(i, k, dt);
+        const Vec3 face = walls_.terms.mirror_pressure(i, k) + walls_.terms.contact(i, k, dt);
+        grad += face;
+        wall[k] += face;
+      }
+      // eq. 52 without the viscous mirror term: f_wall = -V (R_ref <grad p>_i' + f_rep), per face
+      for (std::size_t k = 0; k < max_faces3; ++k) {
+        TriangleForces& f = walls_.forces[k];
+        const erp::TriangleHits& h = walls_.hits[k];
+        f.triangle[i] = h.triangle[i];
+        f.bary[i] = h.triangle[i] >= 0 ? h.bary[i] : Vec3::Zero();
+        f.f[i] = h.triangle[i] >= 0 ? Vec3(-V * wall[k]) : Vec3::Zero();
       }
     }
     const VecD<D> dv = -dt * inv_rho * grad;
@@ -151,7 +165,12 @@ template <int D> const WallForces& BasicEmpsFluid<D>::wall_forces() const requir
   return walls_.forces;
 }
 
+template <int D> const WallForces3& BasicEmpsFluid<D>::triangle_forces() const requires(D == 3) {
+  return walls_.forces;
+}
+
 template const WallForces& BasicEmpsFluid<2>::wall_forces() const;
+template const WallForces3& BasicEmpsFluid<3>::triangle_forces() const;
 template WallForceParts BasicEmpsFluid<2>::wall_force_parts(int, int) const;
 template void BasicEmpsFluid<2>::density_and_pressure();
 template void BasicEmpsFluid<3>::density_and_pressure();

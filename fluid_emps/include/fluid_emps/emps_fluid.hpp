@@ -14,7 +14,7 @@
 // Written once for D = 2 and 3 (docs/architecture.md, "Two and three dimensions"): the
 // fluid-fluid terms, the time integration, the diagnostics and the state are D-generic; the ERP
 // walls are segments (WallSet, WallTerms) in 2-D and triangles (TriangleWallSet, SpaceWallTerms)
-// in 3-D, static in 3-D so far and without the wall forces of eq. 52 (#43).
+// in 3-D, static in 3-D so far; the 3-D wall forces of eq. 52 without the viscous mirror term yet.
 #include "fluid_emps/options.hpp"
 #include "fluid_emps/pair_sums.hpp"
 #include "fluid_emps/particles.hpp"
@@ -99,6 +99,23 @@ struct PlaneWalls {
   long hits_layout = -1; ///< the fluid's layout when `hits` were computed (-1: stale)
 };
 
+/// The 3-D wall force of the last step on face k of each particle (eq. 52 without the viscous
+/// mirror term yet: the pressure mirror, the images behind two or three walls and the contact
+/// term, times V_i): the wall receives -f at the point of `triangle` with barycentric coordinates
+/// `bary` (x_wall = bary[0] x_a + bary[1] x_b + bary[2] x_c); triangle = -1 where the particle has
+/// no such face. The images behind several walls are split over those faces along their normals
+/// (split_corner_term); f summed over the faces is what the walls add to the particle's momentum.
+struct TriangleForces {
+  std::vector<int> triangle;
+  std::vector<Vec3> bary, f;
+  void resize(std::size_t n) {
+    triangle.resize(n);
+    bary.resize(n);
+    f.resize(n);
+  }
+};
+using WallForces3 = std::array<TriangleForces, max_faces3>;
+
 /// The 3-D fluid's walls: triangles (static so far), their index, the hits of up to three faces
 /// (the nearest triangle, the other planes of a concave edge or corner) and the wall terms.
 struct SpaceWalls {
@@ -107,6 +124,7 @@ struct SpaceWalls {
   erp::TriangleLocator locator;
   SpaceHits hits;
   SpaceWallTerms terms;
+  WallForces3 forces;
   bool corner_faces;
 };
 
@@ -150,6 +168,8 @@ public:
 
   const ParticleSet& particles() const { return particles_; }
   const WallForces& wall_forces() const requires(D == 2);
+  /// The last step's wall force of each particle on each of its faces (3-D, TriangleForces).
+  const WallForces3& triangle_forces() const requires(D == 3);
   /// The last step's force on segments [first, last) of the WallSet, by part (sequential sum:
   /// the same for every thread count).
   WallForceParts wall_force_parts(int first, int last) const requires(D == 2);

@@ -24,6 +24,11 @@ namespace fsi::emps {
 inline constexpr std::size_t max_faces3 = 3;
 using SpaceHits = std::array<erp::TriangleHits, max_faces3>;
 
+/// The images' term c behind two or three walls (SpaceWallTerms::corner_mirror_pressure) split
+/// over the faces that make it: c = sum_k c_k n_k by least squares over the faces' normals, share
+/// k = c_k n_k, the remainder (zero with three faces) on face 0; the shares sum to c to round-off.
+std::array<Vec3, max_faces3> split_corner_term(const Vec3& c, const SpaceHits& hits, std::size_t i);
+
 /// The sums of the viscous mirror term at x_i' (without the 2d/(lambda0 n0) factor).
 struct MirrorViscous3 {
   Vec3 laplacian = Vec3::Zero(); ///< R <lap v>_i' (eq. 24)
