@@ -3,6 +3,7 @@
 // interface loads in as FE nodal forces (eq. 59), FE node motion out (eqs. 60-62), both through
 // the node correspondence fe_node (NCR, eq. 50) of the structure's interface (fem::interface_of).
 #include "coupling/interface.hpp"
+#include "fem/fem_part.hpp"
 #include "structure_fem/interface_mesh.hpp"
 #include "structure_fem/structure.hpp"
 
@@ -35,6 +36,22 @@ private:
   const fem::BasicFeInterface<dim>& interface_;
   fem::Vector forces_; ///< the external forces set last, dim per FE node
   std::optional<fem::StructureState> saved_;
+};
+
+/// S on the structure of a scene part: the part advances and checkpoints it, so that the part's
+/// Newton counters cover coupled runs too and checkpoints keep them. save_state / restore_state
+/// do not roll the counters back: they count every solve, re-run evaluations too. The part and
+/// the interface must outlive the adapter.
+template <class Family> class PartAdapter final : public BasicFeAdapter<Family> {
+public:
+  PartAdapter(BasicFemPart<Family>& part, const fem::BasicFeInterface<Family::dim>& interface)
+      : BasicFeAdapter<Family>(part.structure(), interface), part_(part) {}
+  void advance(double t, double dt) override { part_.advance(t, dt); }
+  void write_state(StateArchive& archive) const override { part_.write_state(archive); }
+  void read_state(const StateArchive& archive) override { part_.read_state(archive); }
+
+private:
+  BasicFemPart<Family>& part_;
 };
 
 using FeAdapter = BasicFeAdapter<fem::T6>;

@@ -155,25 +155,11 @@ std::unique_ptr<fem::Structure> build_structure(const Scene& scene, const Struct
   return structure;
 }
 
-// S (eq. 67) on the T6 structure; it advances the model, so the model's Newton counters cover
-// coupled runs too, and checkpoints the model with them. save_state / restore_state do not roll
-// the counters back: they count every solve, re-run evaluations too.
-class FemModel::Adapter final : public FeAdapter {
-public:
-  explicit Adapter(FemModel& model)
-      : FeAdapter(model.structure(), model.interface_), model_(model) {}
-  void advance(double t, double dt) override { model_.advance(t, dt); }
-  void write_state(StateArchive& archive) const override { model_.write_state(archive); }
-  void read_state(const StateArchive& archive) override { model_.read_state(archive); }
-
-private:
-  FemModel& model_;
-};
-
 FemModel::FemModel(const Scene& scene, const StructureBlock& block)
     : BasicFemPart(block.name, build_structure(scene, block)),
       interface_(fem::interface_of(structure_->mesh(), block.as<StructureSpec>().interface)),
-      frame_(tank_frame(scene, block)), adapter_(std::make_unique<Adapter>(*this)) {
+      frame_(tank_frame(scene, block)),
+      adapter_(std::make_unique<PartAdapter<fem::T6>>(*this, interface_)) {
   for (const auto& p : scene.output.probes)
     if (p.structure == block.name)
       probe_nodes_.emplace_back(p.name, probe_node(scene, structure_->mesh(), p));

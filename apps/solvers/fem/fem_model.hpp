@@ -3,6 +3,7 @@
 // scene's constant loads and, coupled, the interface loads; also the coupler's S through the
 // interface its tagged boundary describes.
 #include "coupling/interface.hpp"
+#include "fem/fe_adapter.hpp"
 #include "fem/fem_part.hpp"
 #include "fem/fem_spec.hpp"
 #include "fsi_app/solver_plugin.hpp"
@@ -64,11 +65,10 @@ public:
   const fem::FeInterface& interface() const { return interface_; }
 
 private:
-  class Adapter;
   fem::FeInterface interface_;
   std::optional<WallFrame> frame_; // the clamped_motion wall's motion (tank-frame probes)
   std::vector<std::pair<std::string, int>> probe_nodes_; // probe name -> node
-  std::unique_ptr<Adapter> adapter_;
+  std::unique_ptr<PartAdapter<fem::T6>> adapter_;
   bool lu_noted_ = false;
 };
 

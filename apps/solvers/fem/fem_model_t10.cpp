@@ -38,6 +38,7 @@ fem::TetMesh build_tet_mesh(const Scene& scene, const StructureBlock& block) {
     }
     std::vector<std::string> groups = spec.clamped;
     groups.insert(groups.end(), spec.sliding.begin(), spec.sliding.end());
+    groups.insert(groups.end(), spec.interface.begin(), spec.interface.end());
     for (const auto& l : spec.loads) groups.push_back(l.boundary);
     return fem::read_gmsh_t10(spec.mesh.file.string(), groups);
   } catch (const InputError& e) {
@@ -125,14 +126,15 @@ fem::TetMesh checked_tet_mesh(const Scene& scene, const StructureBlock& block) {
 }
 
 FemModelT10::FemModelT10(const Scene& scene, const StructureBlock& block)
-    : BasicFemPart(block.name, build_structure_t10(scene, block)) {
+    : BasicFemPart(block.name, build_structure_t10(scene, block)),
+      interface_(fem::interface_of(structure_->mesh(), block.as<StructureSpec>().interface)) {
   for (const auto& p : scene.output.probes)
     if (p.structure == block.name)
       probe_nodes_.emplace_back(p.name, probe_node(scene, structure_->mesh(), p));
 }
 
 coupling::StructureSolver& FemModelT10::coupling_solver() {
-  throw std::logic_error("a 3-D FE structure is not coupled (3-D scenes take no fluid yet)");
+  throw std::logic_error("a 3-D FE structure couples through coupling_solver3(), not the 2-D S");
 }
 
 void FemModelT10::declare(FieldsFile& file) const {

@@ -1,8 +1,11 @@
 #pragma once
 // The FE structure of one entry of a 3-D scene (dimension: 3, structures[].type: fem): the T10
-// solid (a box mesh or a Gmsh file) under gravity and the scene's constant face loads. 3-D
-// scenes take no fluid yet (read_scene refuses one), so the part is never coupled: it shows no
-// 2-D interface and occupies no 2-D area.
+// solid (a box mesh or a Gmsh file) under gravity and the scene's constant face loads; its
+// interface, the 6-node faces of the tagged surfaces (fem::interface_of, NCR eq. 50), and the
+// coupler's S on it (PartAdapter<T10>: interface loads in as nodal forces, node motion out). The
+// plug-in API (StructurePart) is 2-D: the part shows no 2-D interface or area, and a 3-D fluid
+// couples through interface() and coupling_solver3().
+#include "fem/fe_adapter.hpp"
 #include "fem/fem_part.hpp"
 #include "fem/fem_spec.hpp"
 #include "fsi_app/solver_plugin.hpp"
@@ -32,11 +35,18 @@ public:
   std::optional<double> probe(const ProbeSpec& probe) const override;
   const InterfaceMesh& interface_mesh() const override { return no_interface_; }
   std::vector<Polygon> occupied_area() const override { return {}; }
-  /// Never called: a 3-D scene has no fluid to couple to (throws std::logic_error).
+  /// The 2-D S: throws std::logic_error (a 3-D structure's S is coupling_solver3()).
   coupling::StructureSolver& coupling_solver() override;
+
+  /// The tagged interface surfaces' 6-node faces with their FE nodes (NCR, eq. 50).
+  const fem::FeInterface3& interface() const { return interface_; }
+  /// The coupler's S (eq. 67) on the T10 structure through interface().
+  coupling::StructureSolver3& coupling_solver3() { return adapter_; }
 
 private:
   InterfaceMesh no_interface_;
+  fem::FeInterface3 interface_;
+  PartAdapter<fem::T10> adapter_{*this, interface_};
   std::vector<std::pair<std::string, int>> probe_nodes_; // probe name -> node
 };
 
