@@ -21,7 +21,7 @@ double point_segment_distance(const Vec2& p, const Vec2& a, const Vec2& b, doubl
 } // namespace
 
 template <int D>
-void BasicTlsphSolid<D>::build_interface(const Geometry& geometry) requires(D == 2) {
+void BasicTlsphSolid<D>::build_outline_interface(const Geometry& geometry) requires(D == 2) {
   const auto& outline = geometry.outline;
   const std::size_t m = outline.size(), n = size();
   if (m == 0) return;
@@ -159,7 +159,7 @@ template <int D> std::vector<VecD<D>> BasicTlsphSolid<D>::interface_normals() co
   return out;
 }
 
-template void BasicTlsphSolid<2>::build_interface(const Geometry&);
+template void BasicTlsphSolid<2>::build_outline_interface(const Geometry&);
 template void BasicTlsphSolid<2>::add_particle_nodes();
 template BasicInterfaceMesh<2> BasicTlsphSolid<2>::interface_mesh() const;
 template std::vector<Vec2> BasicTlsphSolid<2>::interface_positions() const;

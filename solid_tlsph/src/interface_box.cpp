@@ -20,7 +20,7 @@ constexpr std::array<const char*, 6> kFaceTags = {"x-", "x+", "y-", "y+", "z-", 
 } // namespace
 
 template <int D>
-void BasicTlsphSolid<D>::build_interface(const Geometry& geometry) requires(D == 3) {
+void BasicTlsphSolid<D>::build_box_interface(const Geometry& geometry) requires(D == 3) {
   if (geometry.box.empty()) return;
   if (geometry.box.size() != 2) throw InputError("tlsph: a box is {lo, hi}");
   const double dp = options_.dp;
@@ -112,6 +112,6 @@ void BasicTlsphSolid<D>::build_interface(const Geometry& geometry) requires(D ==
   add_particle_nodes();
 }
 
-template void BasicTlsphSolid<3>::build_interface(const Geometry&);
+template void BasicTlsphSolid<3>::build_box_interface(const Geometry&);
 
 } // namespace fsi::tlsph

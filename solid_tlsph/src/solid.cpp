@@ -117,7 +117,10 @@ BasicTlsphSolid<D>::BasicTlsphSolid(Geometry geometry, Options options)
       }
   }
   build_reference();
-  build_interface(geometry);
+  if constexpr (D == 2)
+    build_outline_interface(geometry);
+  else
+    build_box_interface(geometry);
   build_images();
   if (quadratic_ && options_.hourglass > 0.0) { // k_ab = hourglass E V_a w_ab; not on images
     const std::size_t pairs = pair_b_.size();

@@ -262,9 +262,10 @@ private:
   void build_reference();
   /// g~_ab and the reverse pair index of GradientCorrection::quadratic.
   void build_quadratic();
-  void build_interface(const Geometry& geometry) requires(D == 2);
+  /// The 2-D interface along the tagged outline (interface.cpp).
+  void build_outline_interface(const Geometry& geometry) requires(D == 2);
   /// The 3-D interface over Geometry::box's tagged faces (interface_box.cpp).
-  void build_interface(const Geometry& geometry) requires(D == 3);
+  void build_box_interface(const Geometry& geometry) requires(D == 3);
   /// Appends every particle as a node of its own (TlsphOptions::interface_particles).
   void add_particle_nodes();
   /// Partners of the Clamp::odd_image particles.
