@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <iostream>
 #include <sstream>
+#include <string>
 
 namespace fsi::app {
 
@@ -29,9 +30,12 @@ std::vector<double> MpiRanks::gather(const std::vector<double>& local) const {
 }
 
 bool started_by_mpi_launcher() {
-  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_SIZE"})
+  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"}) // OpenMPI's mpirun; Hydra, PMI-2
     if (std::getenv(name) != nullptr) return true;
-  return false;
+  // A PMIx launcher, but not the environment a singleton MPI program (e.g. pvpython) hands its
+  // children: OpenMPI marks that one ess=singleton.
+  const char* ess = std::getenv("OMPI_MCA_ess");
+  return std::getenv("PMIX_RANK") != nullptr && (ess == nullptr || std::string(ess) != "singleton");
 }
 
 int run_cli_ranks(int& argc, char**& argv, const std::vector<std::string>& args, bool terminal) {
