@@ -5,25 +5,18 @@
 #include "fsi/core/parallel.hpp"
 #include "fsi_app/interrupt.hpp"
 #include "fsi_app/output/checkpoint_file.hpp"
+#include "fsi_app/output/output_folder.hpp"
 #include "fsi_app/output/probes_csv.hpp"
 #include "fsi_app/output/text_file.hpp"
 #include "fsi_app/progress.hpp"
+#include "fsi_app/run_state.hpp"
 #include "fsi_app/version.hpp"
 
 #include <algorithm>
-#include <cerrno>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
-#include <cstring>
 #include <ctime>
-#include <fcntl.h>
-#include <fstream>
-#include <iomanip>
 #include <limits>
-#include <sstream>
-#include <sys/file.h>
-#include <unistd.h>
 
 namespace fsi::app {
 
@@ -45,64 +38,6 @@ std::string json_strings(const std::vector<std::string>& items) {
   for (std::size_t i = 0; i < items.size(); ++i)
     out += (i ? ", " : "") + JsonObject::quote(items[i]);
   return out + "]";
-}
-
-std::string format_g(double v) {
-  std::ostringstream out;
-  out << v;
-  return out.str();
-}
-
-/// Strings as one int64 array (bytes, each string ended by 0), for the checkpoint.
-std::vector<std::int64_t> encode_strings(const std::vector<std::string>& items) {
-  std::vector<std::int64_t> out;
-  for (const auto& s : items) {
-    for (const char ch : s) out.push_back(static_cast<unsigned char>(ch));
-    out.push_back(0);
-  }
-  return out;
-}
-std::vector<std::string> decode_strings(const std::vector<std::int64_t>& bytes) {
-  std::vector<std::string> out;
-  std::string current;
-  for (const std::int64_t b : bytes) {
-    if (b == 0) {
-      out.push_back(current);
-      current.clear();
-    } else {
-      current += static_cast<char>(b);
-    }
-  }
-  return out;
-}
-
-/// `--set A --set B` for messages ("none" when empty).
-std::string describe_overrides(const std::vector<std::string>& items) {
-  std::string out;
-  for (const auto& s : items) out += (out.empty() ? "--set " : " --set ") + s;
-  return out.empty() ? "no --set" : out;
-}
-
-/// A restart must give the overrides of the run that wrote the checkpoint (a time.end of its own
-/// is allowed: extending a run). Empty when they agree, else what differs.
-std::string override_difference(std::vector<std::string> written, std::vector<std::string> given) {
-  auto is_end = [](const std::string& s) { return s.rfind("time.end=", 0) == 0; };
-  if (std::any_of(given.begin(), given.end(), is_end)) {
-    std::erase_if(written, is_end);
-    std::erase_if(given, is_end);
-  }
-  if (written == given) return {};
-  std::vector<std::string> missing, extra;
-  for (const auto& w : written)
-    if (std::find(given.begin(), given.end(), w) == given.end()) missing.push_back(w);
-  for (const auto& g : given)
-    if (std::find(written.begin(), written.end(), g) == written.end()) extra.push_back(g);
-  std::string what =
-      "written with " + describe_overrides(written) + ", this run has " + describe_overrides(given);
-  if (!missing.empty()) what += "; missing: " + describe_overrides(missing);
-  if (!extra.empty()) what += "; not in the checkpoint: " + describe_overrides(extra);
-  if (missing.empty() && extra.empty()) what += " (another order)";
-  return what + "; give the checkpoint's overrides";
 }
 
 /// fields.h5 / fields.xmf, probes.csv and the models' logs; new, or continued after a restart
@@ -162,181 +97,6 @@ private:
   std::unique_ptr<ProbesCsv> probes_;
 };
 
-/// The driver's own state, checkpointed under "driver/" beside the models'.
-struct Clock {
-  long step = 0;
-  double time = 0.0, next_frame = 0.0;
-  int frames = 0;
-  double dt_min = std::numeric_limits<double>::infinity(), dt_max = 0.0;
-};
-
-StateArchive make_archive(const Scene& scene, const std::vector<std::unique_ptr<Model>>& models,
-                          const Clock& c, bool failed) {
-  StateArchive a;
-  a.put_integer("driver/step", c.step);
-  a.put_real("driver/time", c.time);
-  a.put_real("driver/next_frame", c.next_frame);
-  a.put_integer("driver/frames", c.frames);
-  a.put_real("driver/dt_min", c.dt_min);
-  a.put_real("driver/dt_max", c.dt_max);
-  a.put_real("driver/dt", scene.time.dt.value_or(0.0));
-  a.put_integer("driver/threads", num_threads());
-  a.put_integer("driver/failed", failed);
-  a.put("driver/overrides", encode_strings(scene.overrides));
-  a.put_integer("driver/scene_digest", static_cast<std::int64_t>(scene.digest));
-  for (const auto& m : models) m->write_state(a);
-  return a;
-}
-
-/// Why a checkpoint's step does not fit the scene's: dt = 0 is a Courant-stepped run. Six
-/// digits, or 17 when six would print the two steps alike.
-std::string step_mismatch(double written, double scene) {
-  const auto print = significant;
-  const int digits = print(written, 6) == print(scene, 6) ? 17 : 6;
-  if (written == 0.0)
-    return "written by a Courant-stepped run (time.courant); the scene has a fixed time.dt = " +
-           print(scene, digits) + " s";
-  if (scene == 0.0)
-    return "written with a fixed time.dt = " + print(written, digits) +
-           " s; the scene is Courant-stepped (time.courant)";
-  return "written with time.dt = " + print(written, digits) +
-         " s; the scene has time.dt = " + print(scene, digits) + " s";
-}
-
-/// Reads the driver's state and the models' from a restart checkpoint.
-Clock read_archive(const Scene& scene, std::vector<std::unique_ptr<Model>>& models,
-                   const std::filesystem::path& file, std::ostream& log) {
-  const StateArchive a = read_checkpoint(file);
-  Clock c;
-  try {
-    if (a.integer("driver/failed") != 0)
-      throw InputError("the state of a failed step, kept for inspection; restart from a "
-                       "checkpoint_*.h5 written before it");
-    if (a.real("driver/dt") != scene.time.dt.value_or(0.0))
-      throw InputError(step_mismatch(a.real("driver/dt"), scene.time.dt.value_or(0.0)));
-    c.step = a.integer("driver/step");
-    c.time = a.real("driver/time");
-    c.next_frame = a.real("driver/next_frame");
-    c.frames = static_cast<int>(a.integer("driver/frames"));
-    c.dt_min = a.real("driver/dt_min");
-    c.dt_max = a.real("driver/dt_max");
-    for (auto& m : models) m->read_state(a);
-    // After the state (a checkpoint of another mesh names its key first); checkpoints written
-    // before the overrides were recorded have no entry.
-    if (a.all_integers().count("driver/overrides")) {
-      const std::string diff =
-          override_difference(decode_strings(a.integers("driver/overrides")), scene.overrides);
-      if (!diff.empty()) throw InputError(diff);
-    }
-    // A scene edited since the checkpoint (checkpoints before the digest have none).
-    if (a.all_integers().count("driver/scene_digest") &&
-        static_cast<std::uint64_t>(a.integer("driver/scene_digest")) != scene.digest)
-      throw InputError("written for another version of " + scene.path.string() +
-                       ": the scene was edited since (a restart may change time.end only, in the "
-                       "file or by --set); restore the scene, or start a new run");
-    if (c.time > scene.time.end * (1.0 + 1e-12))
-      throw InputError("at t = " + format_g(c.time) +
-                       " s, past time.end = " + format_g(scene.time.end) + " s of this run");
-  } catch (const InputError& e) {
-    throw InputError(file.string() + ": " + e.what());
-  }
-  if (a.integer("driver/threads") != num_threads())
-    log << "note: " << file.string() << " was written with " << a.integer("driver/threads")
-        << " threads, this run has " << num_threads()
-        << " (results do not depend on the thread count: docs/reliability.md, Determinism)\n";
-  return c;
-}
-
-std::filesystem::path checkpoint_path(const std::filesystem::path& out, long step) {
-  char name[48];
-  std::snprintf(name, sizeof name, "checkpoint_%09ld.h5", step);
-  return out / name;
-}
-
-/// Deletes all but the newest `keep` checkpoint_*.h5 up to `step` (later ones belong to a run
-/// that a restart abandoned; they are overwritten as this one gets there).
-void prune_checkpoints(const std::filesystem::path& out, long step, int keep) {
-  std::vector<std::pair<long, std::filesystem::path>> found;
-  for (const auto& entry : std::filesystem::directory_iterator(out)) {
-    const std::string name = entry.path().filename().string();
-    long s = 0;
-    char tail[8] = {};
-    if (std::sscanf(name.c_str(), "checkpoint_%ld%7s", &s, tail) == 2 &&
-        std::string(tail) == ".h5" && s <= step)
-      found.emplace_back(s, entry.path());
-  }
-  std::sort(found.begin(), found.end());
-  for (std::size_t i = 0; i + static_cast<std::size_t>(keep) < found.size(); ++i)
-    std::filesystem::remove(found[i].second);
-}
-
-/// The files a run writes in its output folder (and their temporary names).
-bool is_run_file(const std::string& name) {
-  static const std::vector<std::string> files = {"fields.h5",      "fields.xmf",   "probes.csv",
-                                                 "run.json",       "coupling.csv", "interface.h5",
-                                                 "failed_state.h5"};
-  std::string base = name;
-  if (base.ends_with(".tmp")) base.resize(base.size() - 4);
-  if (std::find(files.begin(), files.end(), base) != files.end()) return true;
-  long step = 0;
-  char tail[8] = {};
-  return std::sscanf(base.c_str(), "checkpoint_%ld%7s", &step, tail) == 2 &&
-         std::string(tail) == ".h5";
-}
-
-/// One run per output folder: flock on DIR/.lock, held until the process ends or the run
-/// returns. Taken before anything else is written; a folder of another run is refused unless
-/// `overwrite` (then exactly the run files are deleted).
-class OutputLock {
-public:
-  OutputLock(const std::filesystem::path& out, bool fresh, bool overwrite) {
-    namespace fs = std::filesystem;
-    const std::string dir = out.string();
-    std::error_code ec;
-    if (fs::exists(out, ec) && !fs::is_directory(out, ec))
-      throw InputError(dir + ": --out: exists and is not a folder; give a folder");
-    fs::create_directories(out, ec);
-    if (ec) throw InputError(dir + ": --out: cannot create the folder (" + ec.message() + ")");
-    const fs::path lock = out / ".lock";
-    fd_ = open(lock.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-    if (fd_ < 0)
-      throw InputError(dir + ": --out: cannot write in this folder (" + std::strerror(errno) + ")");
-    if (flock(fd_, LOCK_EX | LOCK_NB) != 0) {
-      close(fd_);
-      throw InputError(dir + ": --out: another fsi run is writing to this folder (it holds " +
-                       lock.string() + "); give another --out");
-    }
-    if (!fresh) return;
-    std::vector<fs::path> found;
-    for (const auto& entry : fs::directory_iterator(out, ec))
-      if (is_run_file(entry.path().filename().string())) found.push_back(entry.path());
-    std::sort(found.begin(), found.end());
-    if (!found.empty() && !overwrite) {
-      close(fd_);
-      std::string names;
-      for (std::size_t i = 0; i < found.size() && i < 4; ++i)
-        names += (i ? ", " : "") + found[i].filename().string();
-      if (found.size() > 4) names += ", ...";
-      throw InputError(dir + ": --out holds the files of an earlier run (" + names +
-                       "); give another folder, --restart from one of its checkpoints, or "
-                       "--overwrite to delete them");
-    }
-    for (const auto& f : found) {
-      fs::remove(f, ec);
-      if (ec) {
-        close(fd_);
-        throw InputError(f.string() + ": --overwrite: cannot delete (" + ec.message() + ")");
-      }
-    }
-  }
-  ~OutputLock() { close(fd_); }
-  OutputLock(const OutputLock&) = delete;
-  OutputLock& operator=(const OutputLock&) = delete;
-
-private:
-  int fd_ = -1;
-};
-
 } // namespace
 
 double max_steps() {
@@ -349,8 +109,9 @@ RunResult run_scene(const Scene& scene, std::vector<std::unique_ptr<Model>>& mod
   // Fixed step: the number of steps, the last one shortened to end exactly at time.end.
   const double fixed_steps = scene.time.dt ? end / *scene.time.dt : 0.0;
   if (!(fixed_steps <= kMaxSteps))
-    throw InputError(scene.path.string() + ": time: time.end / time.dt = " + format_g(fixed_steps) +
-                     " steps; a run takes at most " + format_g(kMaxSteps));
+    throw InputError(scene.path.string() +
+                     ": time: time.end / time.dt = " + significant(fixed_steps, 6) +
+                     " steps; a run takes at most " + significant(kMaxSteps, 6));
   const OneProcess one;
   const Ranks& ranks = options.ranks ? *options.ranks : one;
   const bool root = ranks.rank() == 0;
@@ -365,7 +126,7 @@ RunResult run_scene(const Scene& scene, std::vector<std::unique_ptr<Model>>& mod
   }
   if (!ranks.all(refused.empty())) throw InputError(refused);
   std::ostream& log = *options.log;
-  Clock c;
+  RunClock c;
   c.next_frame = std::min(interval, end);
   std::optional<int> resume;
   long checkpoint_step = -1; // step of the last checkpoint on disk
@@ -399,11 +160,12 @@ RunResult run_scene(const Scene& scene, std::vector<std::unique_ptr<Model>>& mod
     for (const auto& m : models)
       if (auto s = m->stable_dt(*scene.time.courant)) dt = std::min(dt, *s);
     if (!(dt > 0.0) || !((end - c.time) / dt <= kMaxSteps))
-      throw RunError(
-          "time step: the stable step is " + format_g(dt) + " s at step " + std::to_string(c.step) +
-          ", t = " + format_g(c.time) + " s: reaching time.end = " + format_g(end) +
-          " s would take " + format_g((end - c.time) / dt) + " more steps, above the limit of " +
-          format_g(kMaxSteps) + " (check time.courant, fluid.viscosity, fluid.sound_speed)");
+      throw RunError("time step: the stable step is " + significant(dt, 6) + " s at step " +
+                     std::to_string(c.step) + ", t = " + significant(c.time, 6) +
+                     " s: reaching time.end = " + significant(end, 6) + " s would take " +
+                     significant((end - c.time) / dt, 6) + " more steps, above the limit of " +
+                     significant(kMaxSteps, 6) +
+                     " (check time.courant, fluid.viscosity, fluid.sound_speed)");
     // Land on the next frame without a sliver of a step: what is left of the frame in one step
     // if it fits, in two equal ones if it is under two steps.
     const double left = c.next_frame - c.time;
@@ -445,7 +207,7 @@ RunResult run_scene(const Scene& scene, std::vector<std::unique_ptr<Model>>& mod
         options.out / "run.json",
         run_json("interrupted",
                  "stopped at once by a second signal after step " + std::to_string(c.step) +
-                     " (t = " + format_g(c.time) + " s); " +
+                     " (t = " + significant(c.time, 6) + " s); " +
                      (result.checkpoint.empty()
                           ? std::string("no checkpoint was written")
                           : "continue from the last checkpoint, " + result.checkpoint.string()),
@@ -495,7 +257,7 @@ RunResult run_scene(const Scene& scene, std::vector<std::unique_ptr<Model>>& mod
       for (std::size_t k = 0; k < models.size(); ++k)
         if (auto what = models[k]->non_finite())
           throw RunError(*what + " after step " + std::to_string(c.step + 1) +
-                         ", t = " + format_g(attempted) + " s");
+                         ", t = " + significant(attempted, 6) + " s");
       for (std::size_t k = 0; k < models.size(); ++k)
         if (particles[k])
           check_particle_loss(*particles[k], *models[k]->particle_count(), c.step + 1, c.time,
@@ -548,7 +310,7 @@ RunResult run_scene(const Scene& scene, std::vector<std::unique_ptr<Model>>& mod
                  (options.out / "fields.xmf").string() + ", ";
         }
         for (const auto& m : models) m->flush_logs();
-        Clock failed = c;
+        RunClock failed = c;
         failed.time = attempted;
         if (ranks.decomposed()) { // no checkpoints of a decomposed fluid yet (issue 47)
           kept += "no failed_state.h5 under mpirun";
