@@ -99,4 +99,29 @@ void solve(benchmark::State& state, P& p, const fem::SparseMatrix& K, fem::Linea
   state.counters["iterations"] = solver->iterations();
 }
 
+/// One Newton iteration's linear work with cg_amg, factorize(K) and a solve, after a first one
+/// outside the timing: the hierarchy rebuilt every time (rebuild_ratio 0) or kept
+/// (LinearSolverOptions::amg_rebuild_ratio; the same K, so it is never judged stale).
+template <class P>
+void amg_iteration(benchmark::State& state, P& p, const fem::SparseMatrix& K,
+                   double rebuild_ratio) {
+  fem::LinearSolverOptions o{fem::LinearSolverKind::cg_amg, 1e-10, 0};
+  o.amg_rebuild_ratio = rebuild_ratio;
+  auto solver = fem::make_linear_solver(o);
+  solver->set_near_null_space(
+      fem::rigid_body_modes<P::Point::RowsAtCompileTime>(*p.dofs, p.mesh.X));
+  solver->analyze(K);
+  solver->factorize(K);
+  solver->solve(p.rhs);
+  const long setups = solver->setups();
+  for (auto _ : state) {
+    solver->factorize(K);
+    benchmark::DoNotOptimize(solver->solve(p.rhs));
+  }
+  set_counters(state, p);
+  state.counters["iterations"] = solver->iterations();
+  state.counters["setups_per_iteration"] =
+      static_cast<double>(solver->setups() - setups) / static_cast<double>(state.iterations());
+}
+
 } // namespace fsi::bench

@@ -170,6 +170,9 @@ void validate(const LinearSolverOptions& o) {
   if (o.amg_coarse_size < 1)
     throw InputError("linear_solver: amg_coarse_size = " + std::to_string(o.amg_coarse_size) +
                      ": must be >= 1");
+  if (!(o.amg_rebuild_ratio == 0.0 || o.amg_rebuild_ratio >= 1.0))
+    throw InputError("linear_solver: amg_rebuild_ratio = " + std::to_string(o.amg_rebuild_ratio) +
+                     ": must be 0 (rebuild at every factorisation) or >= 1");
 }
 
 std::unique_ptr<LinearSolver> make_linear_solver(const LinearSolverOptions& o) {

@@ -88,6 +88,12 @@ void SmoothedAggregation::setup(const SparseMatrix& A, const NearNullSpace& near
                    std::to_string(op(levels_.size() - 1).rows()) + " dofs)");
 }
 
+void SmoothedAggregation::refresh(const SparseMatrix& A, const NearNullSpace& near_null_space) {
+  if (levels_.size() < 2 || A.rows() != op(0).rows()) return setup(A, near_null_space);
+  A0_ = &A;
+  levels_[0].inv_diagonal = inverse_diagonal(A);
+}
+
 void SmoothedAggregation::cycle(std::size_t l) {
   Level& L = levels_[l];
   if (l + 1 == levels_.size()) {

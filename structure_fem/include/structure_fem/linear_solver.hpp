@@ -33,6 +33,11 @@ struct LinearSolverOptions {
   /// cg_amg: multigrid levels are added until one has at most this many dofs (>= 1), which is
   /// then factorised.
   int amg_coarse_size = 2000;
+  /// cg_amg: the hierarchy is kept across factorize() calls (only the finest level takes the
+  /// new K) until a solve needs more than this many times the iterations of the first solve
+  /// after the last build; the next factorize() then rebuilds it. 0: rebuilt at every
+  /// factorize(); else >= 1.
+  double amg_rebuild_ratio = 1.5;
 };
 
 /// Throws InputError naming the field, its value and the allowed range.
@@ -54,6 +59,9 @@ public:
   virtual int iterations() const { return 1; }
   /// Factorisations done by the fallback LU since construction (ldlt_or_lu; else 0).
   virtual long fallbacks() const { return 0; }
+  /// Preconditioner hierarchies built since construction (cg_amg; else 0): fewer than the
+  /// factorize() calls when they are reused (LinearSolverOptions::amg_rebuild_ratio).
+  virtual long setups() const { return 0; }
 };
 
 std::unique_ptr<LinearSolver> make_linear_solver(const LinearSolverOptions& options);

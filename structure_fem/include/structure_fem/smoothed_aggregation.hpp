@@ -28,6 +28,11 @@ public:
   /// by reference: it must outlive every apply(). Throws RunError if a diagonal entry is not
   /// positive or the coarsest factorisation fails.
   void setup(const SparseMatrix& A, const NearNullSpace& near_null_space);
+  /// Keeps the hierarchy built by setup() for an earlier A and puts a new A of the same size on
+  /// the finest level (its smoother's diagonal recomputed): the V-cycle stays symmetric positive
+  /// definite, a preconditioner lagged as in Newton-Krylov methods. With one level (the finest
+  /// is the coarsest, factorised) it is setup() again. Throws RunError as setup().
+  void refresh(const SparseMatrix& A, const NearNullSpace& near_null_space);
   /// z = M^-1 r: one V-cycle from z = 0. Allocates nothing.
   void apply(const Vector& r, Vector& z);
   /// Dofs of each level, finest first.

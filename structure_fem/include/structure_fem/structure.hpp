@@ -132,6 +132,8 @@ public:
 
   /// Factorisations the default solver did by LU since construction (LinearSolver::fallbacks).
   long linear_solver_fallbacks() const { return solver_->fallbacks(); }
+  /// Preconditioner hierarchies built since construction (cg_amg; LinearSolver::setups).
+  long linear_solver_setups() const { return solver_->setups(); }
 
   /// The report of the last advance().
   const StepReport& last_report() const { return report_; }
