@@ -1,5 +1,6 @@
 // Clamped particles: their prescribed motion (fixed, or a Clamp's position and velocity) and
-// the odd images of a fixed clamp (u_g = -u_p mirrored across the clamp's face).
+// the odd images of a fixed clamp (u_g = -u_p mirrored across the clamp's face; u_g = +u_p
+// mirrored across two faces in the corner where two clamps meet).
 #include <cmath>
 #include <string>
 #include <utility>
@@ -47,9 +48,9 @@ template <int D> void BasicTlsphSolid<D>::clamp_face(std::size_t k, Vec& point, 
 
 template <int D> void BasicTlsphSolid<D>::build_images() {
   const std::size_t n = size(), clamps = options_.clamps.size();
-  image_partner_.assign(n, none), image_of_.assign(n, none);
+  image_partner_.assign(n, none), image_sign_.assign(n, -1.0);
   imaged_.assign(clamps, 0);
-  std::vector<Vec> face_point(clamps), face_normal(clamps);
+  std::vector<Vec> face_point(clamps, Vec::Zero()), face_normal(clamps, Vec::Zero());
   for (std::size_t k = 0; k < clamps; ++k) {
     const BasicClamp<D>& c = options_.clamps[k];
     imaged_[k] = c.odd_image && !c.position;
@@ -59,14 +60,26 @@ template <int D> void BasicTlsphSolid<D>::build_images() {
     if (any) clamp_face(k, face_point[k], face_normal[k]);
   }
   const double tol = 1e-6 * options_.dp;
+  auto mirror = [&](const Vec& X, std::size_t k) {
+    return Vec(X - 2.0 * (X - face_point[k]).dot(face_normal[k]) * face_normal[k]);
+  };
+  auto free_at = [&](const Vec& M) { // the free particle at M, or none
+    const std::size_t p = nearest_particle(M);
+    return !clamped_[p] && (at(X0_, p) - M).norm() <= tol ? p : none;
+  };
   for (std::size_t g = 0; g < n; ++g) {
     if (!imaged(g)) continue;
     const std::size_t k = clamped_[g] - 1u;
-    const Vec nrm = face_normal[k], X = at(X0_, g);
-    const Vec M = X - 2.0 * (X - face_point[k]).dot(nrm) * nrm; // mirror position
-    const std::size_t p = nearest_particle(M);
-    if (!clamped_[p] && (at(X0_, p) - M).norm() <= tol) {
-      image_partner_[g] = p, image_of_[p] = g;
+    const Vec M = mirror(at(X0_, g), k);
+    std::size_t p = free_at(M);
+    // In the corner of two clamps: mirrored across the other's face too, u_g = +u_p.
+    for (std::size_t k2 = 0; p == none && k2 < clamps; ++k2)
+      if (k2 != k && imaged_[k2] && face_normal[k2].norm() > 0.0) {
+        p = free_at(mirror(M, k2));
+        if (p != none) image_sign_[g] = 1.0;
+      }
+    if (p != none) {
+      image_partner_[g] = p;
       images_ = true;
       continue;
     }
@@ -79,6 +92,15 @@ template <int D> void BasicTlsphSolid<D>::build_images() {
                          std::to_string(pair_b_[q]) +
                          " but has no free particle at its mirror position (odd_image)");
   }
+  image_start_.assign(n + 1, 0); // each free particle's images, in particle order
+  for (std::size_t g = 0; g < n; ++g)
+    if (image_partner_[g] != none) ++image_start_[image_partner_[g] + 1];
+  for (std::size_t p = 0; p < n; ++p) image_start_[p + 1] += image_start_[p];
+  image_list_.assign(image_start_[n], 0);
+  std::vector<std::uint32_t> next(image_start_.begin(), image_start_.end() - 1);
+  for (std::size_t g = 0; g < n; ++g)
+    if (image_partner_[g] != none)
+      image_list_[next[image_partner_[g]]++] = static_cast<std::uint32_t>(g);
   for (auto& a : image_a_) a.assign(n, 0.0);
 }
 
@@ -87,10 +109,11 @@ template <int D> void BasicTlsphSolid<D>::prescribe(double t) {
     if (!clamped_[i]) return;
     const BasicClamp<D>& c = options_.clamps[clamped_[i] - 1u];
     const std::size_t p = image_partner_[i];
-    if (p != none) { // u_g = -u_p, v_g = -v_p
+    if (p != none) { // u_g = s u_p, v_g = s v_p
+      const double s = image_sign_[i];
       for (int k = 0; k < D; ++k) {
-        x_[k][i] = X0_[k][i] - (x_[k][p] - X0_[k][p]);
-        v_[k][i] = -v_[k][p], a_[k][i] = -a_[k][p];
+        x_[k][i] = X0_[k][i] + s * (x_[k][p] - X0_[k][p]);
+        v_[k][i] = s * v_[k][p], a_[k][i] = s * a_[k][p];
       }
     } else if (c.position) {
       const Vec X = at(X0_, i);

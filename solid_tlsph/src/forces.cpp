@@ -87,13 +87,14 @@ template <int D> void BasicTlsphSolid<D>::compute_acceleration() {
     throw RunError(s.str());
   }
   if (!images_) return;
-  // f_p = -dPi/dx_p with x_g = X_g - (x_p - X_p): minus the force on the image g, per unit
+  // f_p = -dPi/dx_p with x_g = X_g + s (x_p - X_p): s times the force on each image g, per unit
   // mass of p.
   parallel_for(size(), [&](std::size_t p) {
-    const std::size_t img = image_of_[p];
-    if (img == none) return;
-    const double r = V0_[img] / V0_[p];
-    for (int i = 0; i < D; ++i) a_[i][p] -= r * image_a_[i][img];
+    for (std::uint32_t j = image_start_[p]; j < image_start_[p + 1]; ++j) {
+      const std::size_t img = image_list_[j];
+      const double r = image_sign_[img] * (V0_[img] / V0_[p]);
+      for (int i = 0; i < D; ++i) a_[i][p] += r * image_a_[i][img];
+    }
   });
 }
 

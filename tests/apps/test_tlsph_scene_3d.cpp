@@ -7,6 +7,7 @@
 #include "tlsph/tlsph_model3.hpp"
 #include "tlsph/tlsph_spec.hpp"
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <string>
@@ -71,8 +72,12 @@ TEST_CASE("tlsph 3-D scene: the tip falls freely until the clamp's wave reaches 
 
 TEST_CASE("tlsph 3-D scene: what is 2-D only is refused naming the key", "[apps][tlsph][3d]") {
   const std::vector<std::pair<std::string, std::string>> cases = {
-      {"structures[0].interface=[top]",
-       "structures[0].interface: is 2-D only (a 3-D TL-SPH solid has no coupling interface yet)"},
+      {"structures[0].interface=[x+]",
+       "structures[0].interface: no face of the box is named 'x+' (left, right, bottom, top, back, "
+       "front)"},
+      {"structures[0].interface_particles=true",
+       "structures[0].interface_particles: is 2-D only (a 3-D TL-SPH solid couples through its "
+       "box's faces)"},
       {"structures[0].dp=0.05",
        "structures[0].dp: fewer than 3 particles across the region (1.200000 x 0.100000 x "
        "0.100000 m)"},
@@ -87,4 +92,25 @@ TEST_CASE("tlsph 3-D scene: what is 2-D only is refused naming the key", "[apps]
                        "1000.0}\n";
   CHECK(error_of(region, {}) ==
         "b.yaml:12: structures[0].region.polygon: is 2-D only (a 3-D region is a box: min, max)");
+  CHECK(error_of(box_scene + "    interface: [front, up]\n", {}) ==
+        "b.yaml:16: structures[0].interface: no face of the box is named 'up' (left, right, "
+        "bottom, top, back, front)");
+}
+
+TEST_CASE("tlsph 3-D scene: interface names the box's faces as the fem type does",
+          "[apps][tlsph][3d]") {
+  // The beam's faces x = 1 (right) and y = 0.1 (top) over 44 x 4 x 4 particles (the box continued
+  // 4 dp into the clamp at x < 0): 6 x 6 nodes on the one, 46 x 6 on the other, 6 shared.
+  const Scene s = parse_scene(box_scene + "    interface: [right, top]\n", "b.yaml", {});
+  tlsph_plugin::TlsphModel3 model(s, s.structures[0]);
+  const InterfaceMesh3& mesh = model.interface_mesh3();
+  CHECK(mesh.node_count() == 6 * 6 + 46 * 6 - 6);
+  double x_max = 0.0, y_min = 1.0;
+  for (const Vec3& X : mesh.X0) x_max = std::max(x_max, X.x()), y_min = std::min(y_min, X.y());
+  CHECK(std::abs(x_max - 1.0) < 1e-15);
+  CHECK(y_min == 0.0); // the right face reaches down to y = 0
+  const auto x = model.coupling_solver3().interface_motion().x; // at rest: the nodes at X0
+  double moved = 0.0;
+  for (std::size_t k = 0; k < x.size(); ++k) moved = std::max(moved, (x[k] - mesh.X0[k]).norm());
+  CHECK(moved < 1e-15);
 }

@@ -131,42 +131,49 @@ TEST_CASE("tlsph 3-D: a stretched block's forces restore it, conserve momentum a
 
 TEST_CASE("tlsph 3-D: next to an odd-image clamp the force is -dPi/dx (central difference)",
           "[solid_tlsph][3d]") {
-  for (const GradientCorrection c : both) {
-    TlsphOptions3 o;
-    o.dp = 0.01;
-    o.gradient_correction = c;
-    o.material = {1.0e6, 0.3, 1000.0, fsi::materials::PlaneModel::plane_strain};
-    Clamp3 clamp;
-    clamp.contains = [](const Vec3& X) { return X.x() < 0.0; }; // face x = 0, found
-    o.clamps.push_back(clamp);
-    TlsphSolid3 s(fill_box(Vec3(-0.03, 0.0, 0.0), Vec3(0.06, 0.04, 0.04), o.dp), o);
-    std::vector<Vec3> x(s.size());
-    for (std::size_t i = 0; i < s.size(); ++i) {
-      const Vec3 X = s.reference_position(i);
-      x[i] = X + 0.02 * Vec3(X.y() * X.z() / 0.04, X.x() * X.x() / 0.06, 0.5 * X.x());
-    }
-    s.set_positions(x);
-    // a free particle at the clamp face's corner, and one inside next to the face
-    for (const Vec3& X : {Vec3(0.005, 0.005, 0.035), Vec3(0.005, 0.025, 0.015)}) {
-      const std::size_t p = s.nearest_particle(X);
-      REQUIRE_FALSE(s.clamped(p));
-      const Vec3 f = 1000.0 * s.volume(p) * s.acceleration(p);
-      Vec3 grad;
-      const double d = 1e-8;
-      for (int k = 0; k < 3; ++k) {
-        std::vector<Vec3> xp = x, xm = x;
-        xp[p](k) += d, xm[p](k) -= d;
-        s.set_positions(xp);
-        const double Pp = s.energies().strain;
-        s.set_positions(xm);
-        grad(k) = (Pp - s.energies().strain) / (2.0 * d);
+  // One clamp at x < 0; or a second at y < 0 meeting it (the corner's images: u_g = +u_p).
+  for (const bool corner : {false, true})
+    for (const GradientCorrection c : both) {
+      TlsphOptions3 o;
+      o.dp = 0.01;
+      o.gradient_correction = c;
+      o.material = {1.0e6, 0.3, 1000.0, fsi::materials::PlaneModel::plane_strain};
+      Clamp3 clamp;
+      clamp.contains = [](const Vec3& X) { return X.x() < 0.0; }; // face x = 0, found
+      o.clamps.push_back(clamp);
+      if (corner) {
+        clamp.contains = [](const Vec3& X) { return X.y() < 0.0; }; // face y = 0
+        o.clamps.push_back(clamp);
+      }
+      const double y0 = corner ? -0.03 : 0.0;
+      TlsphSolid3 s(fill_box(Vec3(-0.03, y0, 0.0), Vec3(0.06, 0.04, 0.04), o.dp), o);
+      std::vector<Vec3> x(s.size());
+      for (std::size_t i = 0; i < s.size(); ++i) {
+        const Vec3 X = s.reference_position(i);
+        x[i] = X + 0.02 * Vec3(X.y() * X.z() / 0.04, X.x() * X.x() / 0.06, 0.5 * X.x());
       }
       s.set_positions(x);
-      INFO(name(c) << ": particle " << p << " f = " << f.transpose()
-                   << ", -dPi/dx = " << -grad.transpose());
-      CHECK((f + grad).norm() < 1e-5 * f.norm());
+      // a free particle at the clamp face's corner, and one inside next to the face
+      for (const Vec3& X : {Vec3(0.005, 0.005, 0.035), Vec3(0.005, 0.025, 0.015)}) {
+        const std::size_t p = s.nearest_particle(X);
+        REQUIRE_FALSE(s.clamped(p));
+        const Vec3 f = 1000.0 * s.volume(p) * s.acceleration(p);
+        Vec3 grad;
+        const double d = 1e-8;
+        for (int k = 0; k < 3; ++k) {
+          std::vector<Vec3> xp = x, xm = x;
+          xp[p](k) += d, xm[p](k) -= d;
+          s.set_positions(xp);
+          const double Pp = s.energies().strain;
+          s.set_positions(xm);
+          grad(k) = (Pp - s.energies().strain) / (2.0 * d);
+        }
+        s.set_positions(x);
+        INFO(name(c) << (corner ? ", two clamps" : "") << ": particle " << p
+                     << " f = " << f.transpose() << ", -dPi/dx = " << -grad.transpose());
+        CHECK((f + grad).norm() < 1e-5 * f.norm());
+      }
     }
-  }
 }
 
 TEST_CASE("tlsph 3-D: pure bending's strain energy is the lattice midpoint rule's, "

@@ -58,34 +58,10 @@ std::unique_ptr<tlsph::TlsphSolid> build_solid(const Scene& scene, const Structu
 
 } // namespace
 
-// S (eq. 67 of the EMPS paper; eq. 12's a^{F:S} of the RKGC paper): nodal loads on the surface
-// particles in, their motion out; the solid sub-steps within the coupler's step.
-class TlsphModel::Adapter final : public coupling::StructureSolver {
-public:
-  explicit Adapter(TlsphModel& model) : model_(model) {}
-  void initialize() override {}
-  void set_interface_loads(const coupling::InterfaceLoads& loads) override {
-    model_.solid().set_interface_loads(loads.f);
-  }
-  void advance(double t, double dt) override { model_.advance(t, dt); }
-  coupling::InterfaceMotion interface_motion() const override {
-    const tlsph::TlsphSolid& s = *model_.solid_;
-    return {s.interface_positions(), s.interface_velocities(), s.interface_accelerations()};
-  }
-  void save_state() override { saved_ = model_.solid().save(); }
-  void restore_state() override { model_.solid().restore(saved_); }
-  void write_state(StateArchive& archive) const override { model_.write_state(archive); }
-  void read_state(const StateArchive& archive) override { model_.read_state(archive); }
-
-private:
-  TlsphModel& model_;
-  tlsph::TlsphState saved_;
-};
-
 TlsphModel::TlsphModel(const Scene& scene, const StructureBlock& block)
     : StructurePart(block.name), outline_(block.as<TlsphSpec>().outline),
       solid_(build_solid(scene, block)), interface_(solid_->interface_mesh()),
-      frame_(tank_frame(scene, block)), adapter_(std::make_unique<Adapter>(*this)) {
+      frame_(tank_frame(scene, block)) {
   for (const auto& p : scene.output.probes) {
     if (p.structure != block.name) continue;
     const auto nearest = static_cast<std::uint32_t>(solid_->nearest_particle(*p.point));
@@ -98,12 +74,6 @@ TlsphModel::TlsphModel(const Scene& scene, const StructureBlock& block)
       fail_at(scene, p.line, p.key + ".point", e.what());
     }
   }
-}
-
-TlsphModel::~TlsphModel() = default;
-
-coupling::StructureSolver& TlsphModel::coupling_solver() {
-  return *adapter_;
 }
 
 std::vector<Polygon> TlsphModel::occupied_area() const {

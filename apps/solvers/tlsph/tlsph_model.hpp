@@ -5,6 +5,7 @@
 #include "fsi_app/solver_plugin.hpp"
 #include "fsi_app/wall_motion.hpp"
 #include "solid_tlsph/solid.hpp"
+#include "tlsph/tlsph_adapter.hpp"
 #include "tlsph/tlsph_spec.hpp"
 
 #include <memory>
@@ -16,7 +17,6 @@ class TlsphModel final : public StructurePart {
 public:
   /// Throws InputError (scene file and line) for options the solver refuses.
   TlsphModel(const Scene& scene, const StructureBlock& block);
-  ~TlsphModel() override;
   void advance(double time, double dt) override;
   /// The particles as a point grid named after the structure.
   void write_frame(FieldsFile& file, const std::vector<std::string>& fields) const override;
@@ -30,12 +30,11 @@ public:
   void read_state(const StateArchive& archive) override;
   const InterfaceMesh& interface_mesh() const override { return interface_; }
   std::vector<Polygon> occupied_area() const override;
-  coupling::StructureSolver& coupling_solver() override;
+  coupling::StructureSolver& coupling_solver() override { return adapter_; }
 
   tlsph::TlsphSolid& solid() { return *solid_; }
 
 private:
-  class Adapter;
   std::vector<Vec2> outline_;
   std::unique_ptr<tlsph::TlsphSolid> solid_;
   InterfaceMesh interface_;
@@ -46,7 +45,7 @@ private:
   };
   std::vector<Probe> probes_;
   std::optional<WallFrame> frame_; // the clamped_motion wall's motion (tank-frame probes)
-  std::unique_ptr<Adapter> adapter_;
+  TlsphAdapter<2, TlsphModel> adapter_{*this};
   long steps_ = 0, substeps_ = 0;
   mutable std::vector<double> xy_, u_, v_; // output buffers
 };

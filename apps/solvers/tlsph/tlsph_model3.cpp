@@ -1,17 +1,28 @@
 #include "tlsph/tlsph_model3.hpp"
 
+#include "fem/fem_model_t10.hpp"
 #include "fsi/core/error.hpp"
 #include "fsi/core/state_archive.hpp"
 #include "fsi_app/finite_guard.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace fsi::app::tlsph_plugin {
 
 namespace {
 
+// A box face by the scene's name (fem_plugin::box_sides(): left, right, bottom, top, back, front)
+// as the library's tag (x-, x+, y-, y+, z-, z+; interface_box.cpp).
+std::string face_tag(const std::string& side) {
+  const auto& sides = fem_plugin::box_sides();
+  const auto k = std::find(sides.begin(), sides.end(), side) - sides.begin();
+  return {static_cast<char>('x' + k / 2), k % 2 ? '+' : '-'};
+}
+
 // The scene's keys (read into the 2-D options, tlsph_scene.cpp) as the 3-D solid's options,
-// gravity and fixed clamped boxes (odd images across each box's face, found from the lattice).
+// gravity, fixed clamped boxes (odd images across each box's face, found from the lattice) and
+// the wetted faces (none named: every face, as the 2-D outline's edges).
 tlsph::TlsphOptions3 options3(const Scene& scene, const TlsphSpec& t) {
   const tlsph::TlsphOptions& o2 = t.options;
   tlsph::TlsphOptions3 o;
@@ -21,6 +32,7 @@ tlsph::TlsphOptions3 options3(const Scene& scene, const TlsphSpec& t) {
   o.pair_damping = o2.pair_damping, o.mass_damping = o2.mass_damping;
   o.hourglass = o2.hourglass;
   o.gravity = scene.gravity3;
+  for (const auto& side : o2.interface_tags) o.interface_tags.push_back(face_tag(side));
   for (const Box3& box : t.clamped3) {
     tlsph::Clamp3 c;
     c.contains = [box](const Vec3& X) {
@@ -44,7 +56,8 @@ std::unique_ptr<tlsph::TlsphSolid3> build_solid3(const Scene& scene, const Struc
 } // namespace
 
 TlsphModel3::TlsphModel3(const Scene& scene, const StructureBlock& block)
-    : StructurePart(block.name), solid_(build_solid3(scene, block)) {
+    : StructurePart(block.name), solid_(build_solid3(scene, block)),
+      interface3_(solid_->interface_mesh()) {
   for (const auto& p : scene.output.probes) {
     if (p.structure != block.name) continue;
     const Vec3 X = *p.point3;
@@ -61,7 +74,7 @@ TlsphModel3::TlsphModel3(const Scene& scene, const StructureBlock& block)
 }
 
 coupling::StructureSolver& TlsphModel3::coupling_solver() {
-  throw std::logic_error("a 3-D TL-SPH solid is not coupled (3-D scenes take no fluid for it)");
+  throw std::logic_error("a 3-D TL-SPH solid's S is coupling_solver3()");
 }
 
 void TlsphModel3::advance(double time, double dt) {
@@ -108,6 +121,7 @@ std::optional<double> TlsphModel3::probe(const ProbeSpec& probe) const {
 void TlsphModel3::report(JsonObject& run) const {
   JsonObject s;
   s.add("particles", static_cast<long long>(solid_->size()))
+      .add("interface_nodes", static_cast<long long>(interface3_.node_count()))
       .add("substeps_mean",
            steps_ ? static_cast<double>(substeps_) / static_cast<double>(steps_) : 0.0);
   run.add("structure_" + name(), s);

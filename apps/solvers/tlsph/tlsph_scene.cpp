@@ -1,6 +1,7 @@
 // The TL-SPH solid's scene keys, each declared once where it is read.
 #include "tlsph/tlsph_spec.hpp"
 
+#include "fem/fem_model_t10.hpp"
 #include "fsi/core/error.hpp"
 #include "fsi_app/material_reader.hpp"
 #include "structure_fem/gmsh_reader.hpp"
@@ -126,14 +127,19 @@ std::shared_ptr<const SolverSpec> read_tlsph(Section& s) {
                             "motion; empty: they stay fixed");
   t.options.interface_tags =
       s.names("interface", {},
-              "region edge tags wetted by the fluid (a rectangle: bottom, right, top, left)");
-  if (three_d) { // a 3-D solid stands alone: no walls, no fluid
+              "region edge tags wetted by the fluid (a rectangle: bottom, right, top, left; a "
+              "3-D box: its faces left, right, bottom, top, back, front, as the fem type's)");
+  if (three_d) { // no walls; the interface on the box's faces, named as the fem type's
     if (!t.clamped_motion.empty())
       s.fail("clamped_motion", "is 2-D only (3-D scenes: fixed clamps)");
-    if (!t.options.interface_tags.empty())
-      s.fail("interface", "is 2-D only (a 3-D TL-SPH solid has no coupling interface yet)");
+    const auto& faces = fem_plugin::box_sides();
+    for (const auto& tag : t.options.interface_tags)
+      if (std::find(faces.begin(), faces.end(), tag) == faces.end())
+        s.fail("interface",
+               "no face of the box is named '" + tag + "' (left, right, bottom, top, back, front)");
     if (t.options.interface_particles)
-      s.fail("interface_particles", "is 2-D only (a 3-D TL-SPH solid is not coupled yet)");
+      s.fail("interface_particles", "is 2-D only (a 3-D TL-SPH solid couples through its box's "
+                                    "faces)");
     const Vec3 size = t.box.max - t.box.min;
     if (t.options.dp * 3.0 > size.minCoeff())
       s.fail("dp", "fewer than 3 particles across the region (" + std::to_string(size.x()) + " x " +

@@ -43,8 +43,10 @@ template <int D> struct BasicClamp {
   /// as its odd image, u_g = -u_p (so u = 0 on the face); every clamped particle carries no
   /// strain energy, those without a partner stay at X0, and the force on p gains minus the
   /// force on its image (f_p = -dPi/dx_p with x_g(x_p)). A clamped particle within 2h of a free
-  /// one without a partner is an InputError. false: the paper's clamp (the clamped particles
-  /// held, with their own F and stress; the beams are then soft by ~ 3 dp / L,
+  /// one without a partner is an InputError. In the corner where two odd-image clamps meet, a
+  /// clamped particle whose mirror is clamped takes the free particle mirrored across both faces
+  /// as its partner, u_g = +u_p (the odd image of the odd image). false: the paper's clamp (the
+  /// clamped particles held, with their own F and stress; the beams are then soft by ~ 3 dp / L,
   /// docs/solid_tlsph.md).
   bool odd_image = true;
   /// The face; when unset (face_normal = 0) it is found from the reference lattice: the line
@@ -320,9 +322,13 @@ private:
   // image rows) and the residual r_ab (scratch, compute_stress).
   std::vector<double> pair_fit_, pair_k_;
   std::array<std::vector<double>, D> pair_r_;
-  // Clamp::odd_image: the free partner of each image particle (none = not an image), and the
-  // image of each free particle; scratch force per unit mass of the images.
-  std::vector<std::size_t> image_partner_, image_of_;
+  // Clamp::odd_image: the free partner of each image particle (none = not an image) and its sign
+  // s (u_g = s u_p: -1 across one face, +1 across two in the corner where two clamps meet), the
+  // images of each free particle (rows image_start_ into image_list_); scratch force per unit
+  // mass of the images.
+  std::vector<std::size_t> image_partner_;
+  std::vector<double> image_sign_;
+  std::vector<std::uint32_t> image_start_, image_list_;
   std::array<std::vector<double>, D> image_a_;
   std::vector<std::uint8_t> imaged_; // per clamp: a fixed clamp with odd_image
   bool images_ = false;
