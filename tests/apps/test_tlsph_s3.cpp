@@ -226,5 +226,7 @@ TEST_CASE("tlsph S 3-D: a clamped square plate under a pressure through S relaxe
   CHECK(w_fe < -1e-4);
   CHECK(std::abs(w - w_before) < 1e-4 * std::abs(w));
   CHECK(w / w_fe - 1.0 > quadrature);
+  // A regression guard on the measured +17.7 %, not an accuracy criterion: issue 46's 3 % is not
+  // met at H/dp = 4 (the split above).
   CHECK(w / w_fe - 1.0 < 0.18);
 }
