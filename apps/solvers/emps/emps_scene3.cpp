@@ -42,7 +42,7 @@ void read_tank(Section& s, FluidSpec3& f) {
   const bool doc = s.context().documenting();
   if (!doc && s.has("tank") && s.has("tank_file"))
     s.fail("tank_file", "give either tank (a box) or tank_file (a surface), not both");
-  if (auto t = s.block("tank", "(dimension 3, type emps) a closed box tank of 12 triangles, its "
+  if (auto t = s.block("tank", "(dimension 3) a closed box tank of 12 triangles, its "
                                "inside min..max (the fluid's walls; 2-D scenes give wall "
                                "polylines)")) {
     f.tank_line = t->line();
@@ -50,9 +50,10 @@ void read_tank(Section& s, FluidSpec3& f) {
   }
   if (!doc && !s.has("tank_file")) return;
   const std::filesystem::path path =
-      s.file("tank_file", "(dimension 3, type emps) the tank's walls as an STL surface (ASCII "
-                          "or binary), each facet's normal pointing into the fluid; checked as "
-                          "geometry_erp's read_stl (docs/geometry_erp.md)");
+      s.file("tank_file",
+             "(dimension 3; optional, instead of tank) the tank's walls as an STL surface (ASCII "
+             "or binary), each facet's normal pointing into the fluid; checked as "
+             "geometry_erp's read_stl (docs/geometry_erp.md)");
   if (doc) return;
   f.tank_line = s.line();
   f.tank_path = path.string();
