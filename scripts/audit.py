@@ -281,8 +281,9 @@ for name, old, new, names in [
     ("plane_in_3d", "density: 1000.0", "density: 1000.0\n      plane: strain",
      ["material.plane", "2-D only"]),
     ("box_side_unknown", "clamped: [left]", "clamped: [x_min]", ["clamped", "x_min"]),
-    ("emps_in_3d", "structures:", "fluid: {type: emps}\nstructures:",
-     ["fluid.type", "emps is not yet available in 3-D"]),
+    ("emps_2d_key_in_3d", "structures:", "fluid: {type: emps, density: 1000, l0: 0.02, "
+     "sound_speed: 20, convex_corners: false}\nstructures:",
+     ["fluid.convex_corners", "not available in 3-D yet"]),
     ("fluid_beside_structure_in_3d", "structures:",
      "fluid: {type: sph, density: 1000, l0: 0.02, sound_speed: 20, regions: [{min: [0, 0, 0], "
      "max: [0.2, 0.2, 0.2]}]}\nstructures:", ["structures", "beside a 3-D fluid"]),
@@ -310,6 +311,27 @@ for name, old, new, names in [
      ["output.probes[5].quantity", "not yet available in a 3-D"]),
 ]:
     scene_case("h3d_" + name, edit(H3, old, new), names)
+
+# The 3-D EMPS fluid (issue 43): its tank's STL file checked before any computation, FILE named.
+E3 = open(os.path.join(ROOT, "data/scenes/hydrostatic_tank_emps_3d_stl.yaml")).read().replace(
+    "../meshes/", os.path.join(ROOT, "data/meshes/"))
+STL = open(os.path.join(ROOT, "data/meshes/hydrostatic_tank_emps_3d.stl")).read()
+flipped_stl = write("flipped.stl",  # the first floor facet's normal against its vertex order
+                    STL.replace("facet normal 0.0 1.0 0.0", "facet normal 0.0 -1.0 0.0", 1))
+short_stl = write("short.stl", "solid t\n  facet normal 0 0 1\n    outer loop\n      vertex 0 0\n")
+TANK = "tank_file: " + os.path.join(ROOT, "data/meshes/hydrostatic_tank_emps_3d.stl")
+for name, old, new, names in [  # the scene file named
+    ("stl_missing", TANK, "tank_file: no_such.stl", ["fluid.tank_file", "file not found"]),
+    ("wall_contact_viscous", "wall_model: default", "wall_model: default\n  wall_contact: viscous",
+     ["fluid.wall_contact", "not available in 3-D yet"]),
+]:
+    scene_case("e3d_" + name, edit(E3, old, new), names)
+for name, stl, names in [  # the STL file named, `FILE:LINE: what`
+    ("stl_flipped_facet", flipped_stl, [os.path.basename(flipped_stl) + ":30:", "flipped"]),
+    ("stl_malformed", short_stl, [os.path.basename(short_stl) + ":4:", "vertex"]),
+]:
+    f = write("scenes/e3d_%s.yaml" % name, edit(E3, TANK, "tank_file: " + stl))
+    case("scene", "e3d_" + name, ["check", f], "error", names)
 
 # ---------------------------------------------------------------- command line
 out = path("out")

@@ -94,7 +94,8 @@ ProbeSpec read_probe(Section s) {
                "kinetic_energy (J per m of depth; 3-D: J) of all particles; velocity_x|y|z, "
                "the kernel-weighted velocity at a point (type sph); wall_force_x|y, "
                "the fluid's force on the coupled structure (on all walls without one), "
-               "N/m, of the last step");
+               "N/m, of the last step; (3-D, type emps) particles, their count, and wall_gap, "
+               "the smallest distance of a particle centre to its nearest wall, m");
   p.structure = s.text("structure", "", "structure name, for displacement probes");
   p.node = s.optional_integer("node", Range::non_negative(), "FE node index (or give point)");
   const std::string point_doc = "reference position of the FE node or the TL-SPH point, or the "
@@ -103,8 +104,15 @@ ProbeSpec read_probe(Section s) {
     p.point3 = s.optional_vec3("point", point_doc);
   else
     p.point = s.optional_vec2("point", point_doc);
-  p.box_min = s.optional_vec2("min", "mean_pressure: lower-left corner of the box, m");
-  p.box_max = s.optional_vec2("max", "mean_pressure: upper-right corner of the box, m");
+  const std::string min_doc = "mean_pressure: lower-left corner of the box, m ([x, y, z] in 3-D)";
+  const std::string max_doc = "mean_pressure: upper-right corner of the box, m ([x, y, z] in 3-D)";
+  if (s.context().dimension == 3 && !s.context().documenting()) {
+    p.box3_min = s.optional_vec3("min", min_doc);
+    p.box3_max = s.optional_vec3("max", max_doc);
+  } else {
+    p.box_min = s.optional_vec2("min", min_doc);
+    p.box_max = s.optional_vec2("max", max_doc);
+  }
   p.part = s.choice("part", kForceParts, "total",
                     "wall_force: the wall term carried: pressure (mirror, eqs. 25-26), repulsive "
                     "(eq. 27 and wall damping), viscous (eq. 24) or their total");
@@ -132,9 +140,11 @@ ProbeSpec read_probe(Section s) {
     const bool at_point = p.quantity == "pressure" || p.quantity.starts_with("velocity_");
     if (at_point && !p.point && !p.point3) s.fail("point", "required key missing");
     if (p.quantity == "mean_pressure") {
-      if (!p.box_min) s.fail("min", "required key missing");
-      if (!p.box_max) s.fail("max", "required key missing");
-      if (p.box_max->x() <= p.box_min->x() || p.box_max->y() <= p.box_min->y())
+      if (!p.box_min && !p.box3_min) s.fail("min", "required key missing");
+      if (!p.box_max && !p.box3_max) s.fail("max", "required key missing");
+      if (p.box3_min && !((*p.box3_max - *p.box3_min).minCoeff() > 0.0))
+        s.fail("max", "must lie above min on every axis");
+      if (p.box_min && (p.box_max->x() <= p.box_min->x() || p.box_max->y() <= p.box_min->y()))
         s.fail("max", "must lie above and right of min");
     }
   }

@@ -28,11 +28,12 @@ struct ProbeSpec {
   std::optional<int> node;    ///< FE node index, or
   std::optional<Vec2> point;  ///< reference position of a node / a fluid point
   std::optional<Vec3> point3; ///< the same in a 3-D scene
-  std::optional<Vec2> box_min, box_max; ///< mean_pressure: the box averaged over
-  std::string part = "total";           ///< wall_force: total|pressure|repulsive|viscous
-  bool interpolate = false;             ///< tlsph: kernel interpolation at point, not nearest
-  int line = 0;                         ///< scene line, for late messages
-  std::string key;                      ///< its path in messages, `output.probes[2]`
+  std::optional<Vec2> box_min, box_max;   ///< mean_pressure: the box averaged over
+  std::optional<Vec3> box3_min, box3_max; ///< the same in a 3-D scene
+  std::string part = "total";             ///< wall_force: total|pressure|repulsive|viscous
+  bool interpolate = false;               ///< tlsph: kernel interpolation at point, not nearest
+  int line = 0;                           ///< scene line, for late messages
+  std::string key;                        ///< its path in messages, `output.probes[2]`
 };
 
 struct OutputSpec {

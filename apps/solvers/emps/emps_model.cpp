@@ -1,8 +1,9 @@
 #include "emps/emps_model.hpp"
 
+#include "emps/emps_report.hpp"
+
 #include "fsi/core/error.hpp"
 #include "fsi_app/finite_guard.hpp"
-#include "fsi_app/output/json_options.hpp"
 #include "fsi_app/wall_motion.hpp"
 #include "particles/kernels.hpp"
 
@@ -216,29 +217,8 @@ std::optional<ParticleCount> EmpsModel::particle_count() const {
 }
 
 void EmpsModel::report(JsonObject& run) const {
-  JsonObject f;
-  f.add("particles_initial", static_cast<long long>(initial_count_))
-      .add("particles", static_cast<long long>(particle_count()->count))
-      .add("removed_particles", static_cast<long long>(global(fluid_->removed())))
-      .add("mean_neighbours", fluid_->mean_neighbours())
-      .add("n0", fluid_->n0())
-      .add("neighbour_list_builds", static_cast<long long>(fluid_->neighbour_builds()));
-  if (fluid_->options().wall.gap_courant > 0)
-    f.add("wall_gap_limited_steps", static_cast<long long>(fluid_->gap_limited_steps()));
-  emps::FluidOptions options = fluid_->options(); // the visitor takes its members by reference
-  JsonOptions resolved; // every key as the run used it: the wall model's preset and each term
-  emps::visit_options(options, resolved);
-  f.add("options", resolved.object);
-  const emps::StepTimes& t = fluid_->times();
-  JsonObject seconds; // this process's wall seconds per part of the fluid's step
-  seconds.add("neighbours", t.neighbours)
-      .add("walls", t.walls)
-      .add("viscosity", t.viscosity)
-      .add("density", t.density)
-      .add("pressure_gradient", t.pressure_gradient)
-      .add("other", t.other);
-  f.add("seconds", seconds);
-  run.add("fluid", f);
+  run.add("fluid", fluid_report(*fluid_, initial_count_, particle_count()->count,
+                                global(fluid_->removed())));
 }
 
 } // namespace fsi::app::emps_plugin

@@ -1,8 +1,9 @@
-// The EMPS fluid as a plug-in: its scene keys (emps_scene.cpp), its model, its fields, probes and
-// memory footprint.
+// The EMPS fluid as a plug-in: its scene keys (emps_scene.cpp, 3-D: emps_scene3.cpp), its model
+// (3-D: EmpsModel3, picked by scene.dimension), its fields, probes and memory footprint.
 #include "emps/emps_plugin.hpp"
 
 #include "emps/emps_model.hpp"
+#include "emps/emps_model3.hpp"
 #include "fsi_app/fluid_regions.hpp"
 
 #include <cmath>
@@ -29,6 +30,7 @@ double bytes_per_particle(double capacity) {
 }
 
 Footprint footprint(const Scene& scene) {
+  if (scene.dimension == 3) return footprint3(scene);
   const FluidSpec& f = scene.fluid->as<FluidSpec>();
   const emps::FluidOptions o = fluid_options(scene);
   const double reach = (1.0 + o.skin) * o.re_over_l0; // as EmpsFluid sizes its rows
@@ -39,14 +41,21 @@ Footprint footprint(const Scene& scene) {
 
 // Against the scene: the regions and the fluid probes lie in the domain (given or derived).
 void check(const Scene& scene, Section& s, std::vector<Section>& probes) {
+  if (scene.dimension == 3) return check3(scene, s, probes);
   const emps::FluidOptions o = fluid_options(scene);
   check_in_domain(scene, s, probes, scene.fluid->as<FluidSpec>().area,
                   {o.domain_min, o.domain_max});
+  for (std::size_t i = 0; i < scene.output.probes.size(); ++i) {
+    const std::string& q = scene.output.probes[i].quantity;
+    if (q == "particles" || q == "wall_gap")
+      probes[i].fail("quantity", q + " is a probe of 3-D scenes (dimension: 3) for type emps");
+  }
 }
 
 // The interfaces as ERP walls (eqs. 47-51) check their meshes; the regions are filled.
 void validate(const Scene& scene, const std::vector<InterfaceMesh>& interfaces,
               const std::vector<Polygon>& solid) {
+  if (scene.dimension == 3) return validate3(scene);
   erp::WallSet walls;
   for (const auto& mesh : interfaces) erp::InterfaceWalls(walls, mesh, 0);
   const FluidSpec& f = scene.fluid->as<FluidSpec>();
@@ -60,11 +69,16 @@ FluidPlugin plugin() {
           "explicit MPS with ERP polygon walls (Mitsume 2023)",
           read_fluid,
           check,
-          make_fluid_part<EmpsModel>,
+          [](const Scene& scene, const std::vector<InterfaceMesh>& interfaces,
+             const std::vector<Polygon>& solid) -> std::unique_ptr<FluidPart> {
+            if (scene.dimension == 3) return std::make_unique<EmpsModel3>(scene);
+            return make_fluid_part<EmpsModel>(scene, interfaces, solid);
+          },
           validate,
           footprint,
           {"velocity", "pressure", "pnd", "free_surface"},
-          {"surge_front", "pressure", "mean_pressure", "mean_speed", "kinetic_energy"}};
+          {"surge_front", "pressure", "mean_pressure", "mean_speed", "kinetic_energy", "particles",
+           "wall_gap"}};
 }
 
 } // namespace fsi::app::emps_plugin

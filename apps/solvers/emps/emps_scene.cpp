@@ -4,8 +4,16 @@
 namespace fsi::app::emps_plugin {
 
 std::shared_ptr<const SolverSpec> read_fluid(Section& s) {
-  if (!s.context().documenting() && s.context().dimension == 3)
-    s.fail("type", "emps is not yet available in 3-D (dimension: 3 takes fluid type sph)");
+  const bool doc = s.context().documenting();
+  if (!doc && s.context().dimension == 3) return read_fluid3(s);
+  if (doc) {
+    FluidSpec3 documented;
+    read_tank(s, documented);
+  } else {
+    for (const char* key : {"tank", "tank_file"})
+      if (s.has(key))
+        s.fail(key, "is a key of 3-D scenes (dimension: 3); in 2-D the tank is a wall polyline");
+  }
   auto spec = std::make_shared<FluidSpec>();
   OptionReader reader(s);
   emps::visit_options(spec->options, reader);

@@ -1,0 +1,251 @@
+#include "emps/emps_model3.hpp"
+
+#include "emps/emps_report.hpp"
+
+#include "fluid_sph/sph_fluid.hpp"
+#include "fsi/core/error.hpp"
+#include "fsi/core/format.hpp"
+#include "geometry_erp/box_walls.hpp"
+#include "geometry_erp/triangle_locator.hpp"
+#include "particles/kernels.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace fsi::app::emps_plugin {
+
+namespace {
+
+bool inside(const Vec3& p, const Vec3& lo, const Vec3& hi) {
+  return (p - lo).minCoeff() >= 0.0 && (hi - p).minCoeff() >= 0.0;
+}
+
+// The box around the tank (box or surface) and the regions.
+std::pair<Vec3, Vec3> bounds(const FluidSpec3& f) {
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  if (f.tank) lo = f.tank->min, hi = f.tank->max;
+  if (f.tank_surface)
+    for (const Vec3& p : f.tank_surface->points) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  for (const Box& r : f.regions) lo = lo.cwiseMin(r.min), hi = hi.cwiseMax(r.max);
+  return {lo, hi};
+}
+
+} // namespace
+
+emps::FluidOptions3 fluid_options3(const Scene& scene) {
+  const FluidSpec3& f = scene.fluid->as<FluidSpec3>();
+  emps::FluidOptions3 o = f.options;
+  o.gravity = scene.gravity3;
+  if (f.domain) {
+    o.domain_min = f.domain->min, o.domain_max = f.domain->max;
+  } else {
+    const auto [lo, hi] = bounds(f);
+    o.domain_min = lo - Vec3::Constant(4.0 * o.r_e()),
+    o.domain_max = hi + Vec3::Constant(4.0 * o.r_e());
+  }
+  return o;
+}
+
+std::vector<Vec3> fill_regions3(const FluidSpec3& f) {
+  std::vector<Vec3> out;
+  for (std::size_t i = 0; i < f.regions.size(); ++i)
+    for (const Vec3& p : sph::fill_box(f.regions[i].min, f.regions[i].max, f.options.l0)) {
+      bool earlier = false;
+      for (std::size_t j = 0; j < i; ++j)
+        earlier = earlier || inside(p, f.regions[j].min, f.regions[j].max);
+      if (!earlier) out.push_back(p);
+    }
+  return out;
+}
+
+std::unique_ptr<erp::TriangleWallSet> tank_walls(const FluidSpec3& f) {
+  auto walls = std::make_unique<erp::TriangleWallSet>();
+  if (f.tank) erp::add_box_tank(*walls, f.tank->min, f.tank->max, false, 0);
+  if (f.tank_surface) walls->add_triangles(f.tank_surface->points, f.tank_surface->triangles, 0);
+  return walls;
+}
+
+void check3(const Scene& scene, Section& s, std::vector<Section>& probes) {
+  const FluidSpec3& f = scene.fluid->as<FluidSpec3>();
+  const emps::FluidOptions3 o = fluid_options3(scene);
+  for (std::size_t i = 0; i < f.regions.size(); ++i) {
+    const Box& r = f.regions[i];
+    if (!inside(r.min, o.domain_min, o.domain_max) || !inside(r.max, o.domain_min, o.domain_max))
+      s.fail("domain", "fluid region " + std::to_string(i) + " reaches outside the domain");
+    if (f.tank &&
+        (!inside(r.min, f.tank->min, f.tank->max) || !inside(r.max, f.tank->min, f.tank->max)))
+      s.fail("regions", "fluid region " + std::to_string(i) + " reaches outside the tank");
+  }
+  for (std::size_t i = 0; i < scene.output.probes.size(); ++i) {
+    const ProbeSpec& p = scene.output.probes[i];
+    if (p.point3 && !inside(*p.point3, o.domain_min, o.domain_max))
+      probes[i].fail("point", "the point is outside the fluid domain");
+  }
+}
+
+// Bytes per fluid particle in 3-D, as emps_plugin.cpp counts 2-D: the registered particle
+// arrays, the lattice positions, neighbour rows of `capacity` (EmpsFluid3's) with the build
+// positions, the cell grid, three faces of erp::TriangleHits (137 B) and of TriangleForces
+// (52 B), the scratch and keep arrays and the output buffers; no saved state (not coupled).
+Footprint footprint3(const Scene& scene) {
+  const FluidSpec3& f = scene.fluid->as<FluidSpec3>();
+  const emps::FluidOptions3 o = fluid_options3(scene);
+  const double reach = (1.0 + o.skin) * o.re_over_l0;
+  const double capacity = std::ceil(2.0 * 4.0 / 3.0 * std::numbers::pi * std::pow(reach, 3)) + 16;
+  const auto particle = static_cast<double>(emps::Particles3().fields.bytes_per_particle());
+  const double per_particle =
+      particle + 24 + (capacity * 4 + 4 + 24) + 8 + 3 * 137 + 3 * 52 + 24 + 1 + (24 + 24 + 8);
+  Footprint e;
+  for (const Box& r : f.regions) e.count += (r.max - r.min).prod() / std::pow(o.l0, 3);
+  double cells = 1.0;
+  for (int c = 0; c < 3; ++c)
+    cells *= std::ceil((o.domain_max[c] - o.domain_min[c]) / (o.r_e() * (1.0 + o.skin))) + 2.0;
+  e.bytes = e.count * per_particle + cells * 8.0;
+  e.key = "l0";
+  e.counts = significant(e.count, 3) + " particles (fluid region volume / l0^3) and " +
+             significant(cells, 3) + " cells";
+  check_index_range(e, cells);
+  return e;
+}
+
+void validate3(const Scene& scene) {
+  const FluidSpec3& f = scene.fluid->as<FluidSpec3>();
+  const std::vector<Vec3> x = fill_regions3(f);
+  if (x.empty()) fail_at(scene, f.regions.front().line, "fluid.regions", "no particle fits");
+  const std::unique_ptr<erp::TriangleWallSet> walls = tank_walls(f);
+  if (walls->triangles().size() == 0) return;
+  const erp::TriangleLocator locator(*walls, f.options.r_e());
+  erp::TriangleHits hits;
+  locator.query(x, hits);
+  for (std::size_t i = 0; i < x.size(); ++i)
+    if (hits.crossed[i]) {
+      const std::string at = "(" + significant(x[i].x(), 6) + ", " + significant(x[i].y(), 6) +
+                             ", " + significant(x[i].z(), 6) + ") m";
+      if (f.tank_surface)
+        fail_at(scene, f.tank_line, "fluid.tank_file",
+                f.tank_path + ": the fluid at " + at + " lies behind facet " +
+                    std::to_string(hits.triangle[i] + 1) +
+                    " (each facet's normal must point into the fluid)");
+      fail_at(scene, f.regions.front().line, "fluid.regions",
+              "the fluid at " + at + " lies behind a wall of the tank");
+    }
+}
+
+EmpsModel3::EmpsModel3(const Scene& scene) {
+  const FluidSpec3& f = scene.fluid->as<FluidSpec3>();
+  validate3(scene);
+  const std::vector<Vec3> positions = fill_regions3(f);
+  initial_count_ = positions.size();
+  walls_ = tank_walls(f);
+  locator_ = std::make_unique<erp::TriangleLocator>(*walls_, f.options.r_e());
+  try {
+    fluid_ = std::make_unique<emps::EmpsFluid3>(fluid_options3(scene), positions, *walls_);
+  } catch (const InputError& e) {
+    fail_at(scene, scene.fluid->line, "fluid", e.what());
+  }
+}
+
+coupling::FluidSolver& EmpsModel3::coupling_solver() {
+  throw RunError("fluid_emps: a 3-D fluid is not coupled to structures (not yet available)");
+}
+
+void EmpsModel3::advance(double time, double dt) {
+  fluid_->advance(time, dt);
+}
+
+std::optional<double> EmpsModel3::stable_dt(double courant) const {
+  return fluid_->stable_dt(courant);
+}
+
+void EmpsModel3::write_frame(FieldsFile& file, const std::vector<std::string>& fields) const {
+  const auto& p = fluid_->particles();
+  const std::size_t n = p.size();
+  xyz_.resize(3 * n);
+  v_.resize(3 * n);
+  flag_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    for (int c = 0; c < 3; ++c)
+      xyz_[3 * i + c] = p.position[c][i], v_[3 * i + c] = p.velocity[c][i];
+    flag_[i] = p.surface[i];
+  }
+  file.write_grid("particles", xyz_,
+                  select_fields(fields, {{"velocity", 3, v_.data()},
+                                         {"pressure", 1, p.p.data()},
+                                         {"pnd", 1, p.pnd.data()},
+                                         {"free_surface", 1, flag_.data()}}),
+                  3);
+}
+
+std::optional<double> EmpsModel3::probe(const ProbeSpec& probe) const {
+  const auto& p = fluid_->particles();
+  const std::size_t n = p.size();
+  const auto x = [&](std::size_t i) {
+    return Vec3(p.position[0][i], p.position[1][i], p.position[2][i]);
+  };
+  if (probe.quantity == "surge_front") { // largest x of the bulk (pnd >= n0/2), as in 2-D
+    double front = -std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < n; ++i)
+      if (p.pnd[i] >= 0.5 * fluid_->n0()) front = std::max(front, p.position[0][i]);
+    return front;
+  }
+  if (probe.quantity == "pressure") { // MPS-weighted mean over particles within r_e (eq. 8)
+    const particles::MpsWeight w_e(fluid_->options().r_e());
+    double sum = 0.0, weights = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double r = (x(i) - *probe.point3).norm();
+      if (r >= w_e.r_e) continue;
+      const double w = w_e.inside(r);
+      sum += w * p.p[i], weights += w;
+    }
+    return weights > 0.0 ? sum / weights : 0.0;
+  }
+  if (probe.quantity == "mean_pressure") { // plain mean over the particles in the box
+    double sum = 0.0;
+    std::size_t count = 0;
+    for (std::size_t i = 0; i < n; ++i)
+      if (inside(x(i), *probe.box3_min, *probe.box3_max)) sum += p.p[i], ++count;
+    return count > 0 ? sum / static_cast<double>(count) : 0.0;
+  }
+  if (probe.quantity == "particles") return static_cast<double>(n);
+  if (probe.quantity == "wall_gap") {
+    locator_->query(p.position[0], p.position[1], p.position[2], hits_);
+    double gap = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < n; ++i)
+      if (hits_.triangle[i] >= 0) gap = std::min(gap, hits_.crossed[i] ? -hits_.r[i] : hits_.r[i]);
+    return gap;
+  }
+  if (probe.quantity == "kinetic_energy") return fluid_->kinetic_energy(); // J
+  if (probe.quantity == "mean_speed") {
+    double speeds = 0.0;
+    for (std::size_t i = 0; i < n; ++i)
+      speeds +=
+          std::sqrt(p.velocity[0][i] * p.velocity[0][i] + p.velocity[1][i] * p.velocity[1][i] +
+                    p.velocity[2][i] * p.velocity[2][i]);
+    return n ? speeds / static_cast<double>(n) : 0.0;
+  }
+  return std::nullopt;
+}
+
+std::optional<ParticleCount> EmpsModel3::particle_count() const {
+  const auto& o = fluid_->options();
+  return ParticleCount{fluid_->particles().size(), {o.domain_min, o.domain_max}};
+}
+
+void EmpsModel3::report(JsonObject& run) const {
+  JsonObject f =
+      fluid_report(*fluid_, initial_count_, fluid_->particles().size(), fluid_->removed());
+  f.add("wall_triangles", static_cast<long long>(walls_->triangles().size()));
+  run.add("fluid", f);
+}
+
+void EmpsModel3::write_state(StateArchive& archive) const {
+  fluid_->write_state(archive, "fluid/");
+}
+
+void EmpsModel3::read_state(const StateArchive& archive) {
+  fluid_->read_state(archive, "fluid/");
+}
+
+} // namespace fsi::app::emps_plugin
