@@ -285,7 +285,8 @@ for name, old, new, names in [
      ["fluid.type", "emps is not yet available in 3-D"]),
     ("fluid_beside_structure_in_3d", "structures:",
      "fluid: {type: sph, density: 1000, l0: 0.02, sound_speed: 20, regions: [{min: [0, 0, 0], "
-     "max: [0.2, 0.2, 0.2]}]}\nstructures:", ["structures", "beside a 3-D fluid"]),
+     "max: [0.2, 0.2, 0.2]}]}\nstructures:",
+     ["structures[0].interface", "needs the boundary tags"]),
 ]:
     scene_case("c3d_" + name, edit(C3, old, new), names)
 

@@ -139,7 +139,7 @@ void check3(const Scene& scene, Section& s, std::vector<Section>& probes) {
     const ProbeSpec& p = scene.output.probes[i];
     if (p.quantity == "wall_force_x" || p.quantity == "wall_force_y")
       probes[i].fail("quantity", p.quantity + " is not yet available in a 3-D scene");
-    if (p.point3 && !inside(*p.point3, o.domain_min, o.domain_max))
+    if (p.point3 && p.structure.empty() && !inside(*p.point3, o.domain_min, o.domain_max))
       probes[i].fail("point", "the point is outside the fluid domain");
   }
   try {
