@@ -286,7 +286,8 @@ for name, old, new, names in [
      ["fluid.convex_corners", "not available in 3-D yet"]),
     ("fluid_beside_structure_in_3d", "structures:",
      "fluid: {type: sph, density: 1000, l0: 0.02, sound_speed: 20, regions: [{min: [0, 0, 0], "
-     "max: [0.2, 0.2, 0.2]}]}\nstructures:", ["structures", "beside a 3-D fluid"]),
+     "max: [0.2, 0.2, 0.2]}]}\nstructures:",
+     ["structures[0].interface", "needs the boundary tags"]),
 ]:
     scene_case("c3d_" + name, edit(C3, old, new), names)
 
@@ -805,10 +806,14 @@ for scene in sorted(os.listdir(SCENES)):
     text = open(os.path.join(SCENES, scene)).read() if scene.endswith(".yaml") else ""
     if "\nstructures:" not in text:
         continue
+    # A 3-D coupled scene as TL-SPH: the 3-D solid has no coupling interface yet (issue 46).
+    coupled3d = "\ndimension: 3" in text and "\nfluid:" in text
     for kind in ("fem", "tlsph"):
+        refused = coupled3d and kind == "tlsph"
         case("issue41", "any_structure_%s_%s" % (scene[:-5], kind),
-             ["check", os.path.join(SCENES, scene), "--set", "structures[0].type=" + kind], "ok",
-             timeout=120)
+             ["check", os.path.join(SCENES, scene), "--set", "structures[0].type=" + kind],
+             "error" if refused else "ok",
+             ["structures[0].interface", "2-D only"] if refused else (), timeout=120)
 cantilever = os.path.join(SCENES, "cantilever.yaml")
 
 

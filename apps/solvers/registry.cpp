@@ -7,6 +7,7 @@
 #include "tlsph/tlsph_plugin.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 
 namespace fsi::app {
 
@@ -59,6 +60,17 @@ const FluidPlugin* find_fluid_plugin(std::string_view name) {
 
 const StructurePlugin* find_structure_plugin(std::string_view name) {
   return find(structure_plugins(), name);
+}
+
+// The 3-D coupling of a part that has none: a caller asked what the plug-in does not give.
+coupling::FluidSolver3& FluidPart::coupling_solver3() {
+  throw std::logic_error("fluid part: this fluid type has no 3-D coupling (coupling_solver3)");
+}
+const InterfaceMesh3& StructurePart::interface_mesh3() const {
+  throw std::logic_error("structure '" + name() + "': its type has no 3-D interface");
+}
+coupling::StructureSolver3& StructurePart::coupling_solver3() {
+  throw std::logic_error("structure '" + name() + "': its type has no 3-D coupling");
 }
 
 } // namespace fsi::app

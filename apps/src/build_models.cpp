@@ -15,7 +15,10 @@ bool coupled(const Scene& scene) {
 std::vector<std::unique_ptr<Model>> build_models(const Scene& scene) {
   std::vector<std::unique_ptr<Model>> models;
   if (coupled(scene)) {
-    models.push_back(std::make_unique<CoupledModel>(scene));
+    if (scene.dimension == 3)
+      models.push_back(std::make_unique<CoupledModel3>(scene));
+    else
+      models.push_back(std::make_unique<CoupledModel>(scene));
     return models;
   }
   if (scene.fluid) models.push_back(find_fluid_plugin(scene.fluid->type)->build(scene, {}, {}));
@@ -26,20 +29,26 @@ std::vector<std::unique_ptr<Model>> build_models(const Scene& scene) {
 
 void check_models(const Scene& scene) {
   std::vector<InterfaceMesh> interfaces;
+  std::vector<InterfaceMesh3> interfaces3;
   std::vector<Polygon> solid;
   std::size_t nodes = 0;
   for (std::size_t i = 0; i < scene.structures.size(); ++i) {
     StructureOutline o = find_structure_plugin(scene.structures[i].type)->validate(scene, i);
     nodes += o.interface.node_count();
     interfaces.push_back(std::move(o.interface));
+    interfaces3.push_back(std::move(o.interface3));
     solid.insert(solid.end(), o.occupied.begin(), o.occupied.end());
   }
   const bool both = coupled(scene);
-  if (scene.fluid)
-    find_fluid_plugin(scene.fluid->type)
-        ->validate(scene, both ? interfaces : std::vector<InterfaceMesh>{},
-                   both ? solid : std::vector<Polygon>{});
-  if (both) open_replay(scene, nodes);
+  const FluidPlugin* fluid = scene.fluid ? find_fluid_plugin(scene.fluid->type) : nullptr;
+  if (fluid && both && scene.dimension == 3) {
+    refuse_history3(scene);
+    if (fluid->validate3) fluid->validate3(scene, interfaces3);
+  } else if (fluid) {
+    fluid->validate(scene, both ? interfaces : std::vector<InterfaceMesh>{},
+                    both ? solid : std::vector<Polygon>{});
+  }
+  if (both && scene.dimension == 2) open_replay(scene, nodes);
 }
 
 } // namespace fsi::app

@@ -12,16 +12,16 @@ namespace fsi::app {
 
 // The fluid adapter as the coupler sees it, keeping the last wall motion it was given: what
 // interface.h5 records as the motion of the step.
-class CoupledModel::FluidTap final : public coupling::FluidSolver {
+template <int D> class BasicCoupledModel<D>::FluidTap final : public coupling::BasicFluidSolver<D> {
 public:
-  explicit FluidTap(coupling::FluidSolver& fluid) : fluid_(fluid) {}
+  explicit FluidTap(coupling::BasicFluidSolver<D>& fluid) : fluid_(fluid) {}
   void initialize() override { fluid_.initialize(); }
-  void set_interface_motion(const coupling::InterfaceMotion& m) override {
+  void set_interface_motion(const coupling::BasicInterfaceMotion<D>& m) override {
     motion_ = m;
     fluid_.set_interface_motion(m);
   }
   void advance(double t, double dt) override { fluid_.advance(t, dt); }
-  const coupling::InterfaceLoads& interface_loads() const override {
+  const coupling::BasicInterfaceLoads<D>& interface_loads() const override {
     return fluid_.interface_loads();
   }
   void save_state() override { fluid_.save_state(); }
@@ -30,12 +30,51 @@ public:
   void finalize() override { fluid_.finalize(); }
   void write_state(StateArchive& archive) const override { fluid_.write_state(archive); }
   void read_state(const StateArchive& archive) override { fluid_.read_state(archive); }
-  const coupling::InterfaceMotion& motion() const { return motion_; }
+  const coupling::BasicInterfaceMotion<D>& motion() const { return motion_; }
 
 private:
-  coupling::FluidSolver& fluid_;
-  coupling::InterfaceMotion motion_;
+  coupling::BasicFluidSolver<D>& fluid_;
+  coupling::BasicInterfaceMotion<D> motion_;
 };
+
+namespace {
+
+// The plug-in API of dimension D: the structure's interface and S, the fluid built on the
+// interfaces (2-D also keeping the structures' areas free) and its F.
+template <int D> const BasicInterfaceMesh<D>& interface_of(const StructurePart& s) {
+  if constexpr (D == 2)
+    return s.interface_mesh();
+  else
+    return s.interface_mesh3();
+}
+template <int D> coupling::BasicStructureSolver<D>& structure_solver(StructurePart& s) {
+  if constexpr (D == 2)
+    return s.coupling_solver();
+  else
+    return s.coupling_solver3();
+}
+template <int D> coupling::BasicFluidSolver<D>& fluid_solver(FluidPart& f) {
+  if constexpr (D == 2)
+    return f.coupling_solver();
+  else
+    return f.coupling_solver3();
+}
+template <int D>
+std::unique_ptr<FluidPart> build_fluid(const Scene& scene,
+                                       const std::vector<BasicInterfaceMesh<D>>& interfaces,
+                                       const std::vector<Polygon>& solid) {
+  const FluidPlugin& plugin = *find_fluid_plugin(scene.fluid->type);
+  if constexpr (D == 2) {
+    return plugin.build(scene, interfaces, solid);
+  } else {
+    if (!plugin.build3) // the scene reader refuses such a scene first
+      fail_at(scene, scene.fluid->line, "fluid.type",
+              scene.fluid->type + " has no 3-D coupling to structures");
+    return plugin.build3(scene, interfaces);
+  }
+}
+
+} // namespace
 
 std::unique_ptr<InterfaceHistory> open_replay(const Scene& scene, std::size_t nodes) {
   const CouplingSpec c = scene.coupling.value_or(CouplingSpec{});
@@ -50,39 +89,56 @@ std::unique_ptr<InterfaceHistory> open_replay(const Scene& scene, std::size_t no
   return replay;
 }
 
-CoupledModel::~CoupledModel() = default;
+void refuse_history3(const Scene& scene) {
+  const CouplingSpec c = scene.coupling.value_or(CouplingSpec{});
+  if (c.record_interface)
+    fail_at(scene, c.line, "coupling.record_interface",
+            "interface.h5 is not yet written in 3-D; leave record_interface out");
+  const coupling::SchemeNeeds needs =
+      coupling::builtin_registry<3>().scheme_needs(c.options.scheme);
+  if (needs.prescribed_motion || needs.prescribed_loads)
+    fail_at(scene, c.line, "coupling.scheme",
+            c.options.scheme + " replays interface.h5, which is not yet read in 3-D");
+}
 
-CoupledModel::CoupledModel(const Scene& scene) {
-  std::vector<InterfaceMesh> interfaces;
+template <int D> BasicCoupledModel<D>::~BasicCoupledModel() = default;
+
+template <int D> BasicCoupledModel<D>::BasicCoupledModel(const Scene& scene) {
+  if constexpr (D == 3) refuse_history3(scene);
+  std::vector<BasicInterfaceMesh<D>> interfaces;
   std::vector<Polygon> solid;
-  std::vector<coupling::StructureSolver*> members;
+  std::vector<coupling::BasicStructureSolver<D>*> members;
   for (std::size_t i = 0; i < scene.structures.size(); ++i) {
     const StructurePlugin& plugin = *find_structure_plugin(scene.structures[i].type);
     structures_.push_back(plugin.build(scene, i));
-    interfaces.push_back(structures_.back()->interface_mesh());
-    const auto area = structures_.back()->occupied_area();
-    solid.insert(solid.end(), area.begin(), area.end());
-    members.push_back(&structures_.back()->coupling_solver());
+    interfaces.push_back(interface_of<D>(*structures_.back()));
+    if constexpr (D == 2) {
+      const auto area = structures_.back()->occupied_area();
+      solid.insert(solid.end(), area.begin(), area.end());
+    }
+    members.push_back(&structure_solver<D>(*structures_.back()));
   }
-  fluid_ = find_fluid_plugin(scene.fluid->type)->build(scene, interfaces, solid);
-  group_ = std::make_unique<coupling::StructureGroup>(std::move(members));
+  fluid_ = build_fluid<D>(scene, interfaces, solid);
+  group_ = std::make_unique<coupling::BasicStructureGroup<D>>(std::move(members));
   const CouplingSpec c = scene.coupling.value_or(CouplingSpec{});
-  tap_ = std::make_unique<FluidTap>(fluid_->coupling_solver());
+  tap_ = std::make_unique<FluidTap>(fluid_solver<D>(*fluid_));
   record_ = c.record_interface;
-  const auto& registry = coupling::builtin_registry();
+  const auto& registry = coupling::builtin_registry<D>();
   needs_ = registry.scheme_needs(c.options.scheme);
-  coupling::Participants p;
+  coupling::BasicParticipants<D> p;
   if (needs_.fluid) p.fluid = tap_.get();
   if (needs_.structure) p.structure = group_.get();
-  std::size_t nodes = 0;
-  for (const auto& mesh : interfaces) nodes += mesh.node_count();
-  replay_ = open_replay(scene, nodes);
-  if (replay_) {
-    InterfaceHistory* h = replay_.get();
-    if (needs_.prescribed_motion)
-      p.prescribed_motion = [h](double t) { return h->motion_at(t); };
-    else
-      p.prescribed_loads = [h](double t) { return h->loads_at(t); };
+  if constexpr (D == 2) {
+    std::size_t nodes = 0;
+    for (const auto& mesh : interfaces) nodes += mesh.node_count();
+    replay_ = open_replay(scene, nodes);
+    if (replay_) {
+      InterfaceHistory* h = replay_.get();
+      if (needs_.prescribed_motion)
+        p.prescribed_motion = [h](double t) { return h->motion_at(t); };
+      else
+        p.prescribed_loads = [h](double t) { return h->loads_at(t); };
+    }
   }
   try {
     scheme_ = registry.make_scheme(c.options, p);
@@ -92,30 +148,33 @@ CoupledModel::CoupledModel(const Scene& scene) {
   scheme_->initialize(0.0);
 }
 
-std::optional<double> CoupledModel::stable_dt(double courant) const {
+template <int D> std::optional<double> BasicCoupledModel<D>::stable_dt(double courant) const {
   std::optional<double> dt = fluid_->stable_dt(courant);
   for (const auto& s : structures_)
     if (auto d = s->stable_dt(courant)) dt = dt ? std::min(*dt, *d) : *d;
   return dt;
 }
 
-void CoupledModel::advance(double time, double dt) {
+template <int D> void BasicCoupledModel<D>::advance(double time, double dt) {
   scheme_->advance(time, dt);
   // The motion the fluid used (one_way_structure: the structure's, there is no fluid).
-  if (history_)
-    history_->append(time + dt, needs_.fluid ? tap_->motion() : scheme_->interface_motion(),
-                     scheme_->interface_loads());
+  if constexpr (D == 2)
+    if (history_)
+      history_->append(time + dt, needs_.fluid ? tap_->motion() : scheme_->interface_motion(),
+                       scheme_->interface_loads());
 }
 
-void CoupledModel::open_logs(const std::filesystem::path& out, bool resume) {
+template <int D>
+void BasicCoupledModel<D>::open_logs(const std::filesystem::path& out, bool resume) {
   if (record_ && resume)
     throw InputError("coupling.record_interface: a restarted run cannot continue "
                      "interface.h5; run without --restart or without record_interface");
-  if (record_) {
-    history_ = std::make_unique<InterfaceHistoryWriter>(out / "interface.h5",
-                                                        scheme_->interface_motion().size());
-    history_->append(0.0, scheme_->interface_motion(), scheme_->interface_loads());
-  }
+  if constexpr (D == 2)
+    if (record_) {
+      history_ = std::make_unique<InterfaceHistoryWriter>(out / "interface.h5",
+                                                          scheme_->interface_motion().size());
+      history_->append(0.0, scheme_->interface_motion(), scheme_->interface_loads());
+    }
   const std::filesystem::path file = out / "coupling.csv";
   if (resume) // the header and one row per step before the checkpoint
     keep_lines(file, 1 + static_cast<std::size_t>(scheme_->summary().steps));
@@ -124,59 +183,73 @@ void CoupledModel::open_logs(const std::filesystem::path& out, bool resume) {
   if (!resume) {
     *step_log_ << "step,time,dt,iterations,residual_initial,residual_final,omega,converged,"
                   "seconds_fluid,seconds_structure,seconds_coupler";
-    for (const auto& [name, f] : fluid_->force_parts())
-      *step_log_ << ",fx_" << name << ",fy_" << name;
+    if constexpr (D == 2)
+      for (const auto& [name, f] : fluid_->force_parts())
+        *step_log_ << ",fx_" << name << ",fy_" << name;
+    else
+      *step_log_ << ",fx_total,fy_total,fz_total";
     *step_log_ << '\n';
   }
-  // The fluid's force on the structures (N/m) of the step's last iteration, by the term that
-  // carries it (FluidPart::force_parts).
-  scheme_->set_step_callback(
-      [log = step_log_.get(), fluid = fluid_.get()](const coupling::StepStats& s) {
-        *log << s.step << ',' << s.t << ',' << s.dt << ',' << s.iterations << ','
-             << s.residual_initial << ',' << s.residual_final << ',';
-        if (s.omega) *log << *s.omega;
-        *log << ',' << (s.converged ? 1 : 0) << ',' << s.time_fluid << ',' << s.time_structure
-             << ',' << s.time_coupler;
-        for (const auto& [name, f] : fluid->force_parts()) *log << ',' << f.x() << ',' << f.y();
-        *log << '\n';
-        if (s.step % 1000 == 999) log->flush();
-      });
+  scheme_->set_step_callback([log = step_log_.get(), self = this](const coupling::StepStats& s) {
+    *log << s.step << ',' << s.t << ',' << s.dt << ',' << s.iterations << ',' << s.residual_initial
+         << ',' << s.residual_final << ',';
+    if (s.omega) *log << *s.omega;
+    *log << ',' << (s.converged ? 1 : 0) << ',' << s.time_fluid << ',' << s.time_structure << ','
+         << s.time_coupler;
+    self->write_forces(*log);
+    *log << '\n';
+    if (s.step % 1000 == 999) log->flush();
+  });
 }
 
-void CoupledModel::flush_logs() {
+// The fluid's force on the structures of the step's last iteration: 2-D (N/m) by the term that
+// carries it (FluidPart::force_parts), 3-D (N) the sum of the loads the structures took.
+template <int D> void BasicCoupledModel<D>::write_forces(std::ostream& log) const {
+  if constexpr (D == 2) {
+    for (const auto& [name, f] : fluid_->force_parts()) log << ',' << f.x() << ',' << f.y();
+  } else {
+    Vec3 total = Vec3::Zero();
+    for (const Vec3& f : scheme_->interface_loads().f) total += f;
+    log << ',' << total.x() << ',' << total.y() << ',' << total.z();
+  }
+}
+
+template <int D> void BasicCoupledModel<D>::flush_logs() {
   if (step_log_) step_log_->flush();
 }
 
-void CoupledModel::declare(FieldsFile& file) const {
+template <int D> void BasicCoupledModel<D>::declare(FieldsFile& file) const {
   for (const auto& s : structures_) s->declare(file);
 }
 
-void CoupledModel::write_frame(FieldsFile& file, const std::vector<std::string>& fields) const {
+template <int D>
+void BasicCoupledModel<D>::write_frame(FieldsFile& file,
+                                       const std::vector<std::string>& fields) const {
   fluid_->write_frame(file, fields);
   for (const auto& s : structures_) s->write_frame(file, fields);
 }
 
-std::optional<double> CoupledModel::probe(const ProbeSpec& probe) const {
+template <int D> std::optional<double> BasicCoupledModel<D>::probe(const ProbeSpec& probe) const {
   for (const auto& s : structures_)
     if (auto v = s->probe(probe)) return v;
   return fluid_->probe(probe);
 }
 
-std::optional<std::string> CoupledModel::non_finite() const {
+template <int D> std::optional<std::string> BasicCoupledModel<D>::non_finite() const {
   if (auto what = fluid_->non_finite()) return what;
   for (const auto& st : structures_)
     if (auto what = st->non_finite()) return what;
   return std::nullopt;
 }
 
-std::vector<std::string> CoupledModel::take_notes() {
+template <int D> std::vector<std::string> BasicCoupledModel<D>::take_notes() {
   std::vector<std::string> notes = fluid_->take_notes();
   for (const auto& st : structures_)
     for (auto& n : st->take_notes()) notes.push_back(std::move(n));
   return notes;
 }
 
-void CoupledModel::report(JsonObject& run) const {
+template <int D> void BasicCoupledModel<D>::report(JsonObject& run) const {
   fluid_->report(run);
   for (const auto& st : structures_) st->report(run);
   const auto& s = scheme_->summary();
@@ -193,5 +266,8 @@ void CoupledModel::report(JsonObject& run) const {
       .add("seconds_coupler", s.time_coupler);
   run.add("coupling", c);
 }
+
+template class BasicCoupledModel<2>;
+template class BasicCoupledModel<3>;
 
 } // namespace fsi::app

@@ -452,8 +452,10 @@ Scene read_scene(Section top) {
     scene.walls.push_back(read_wall(w));
   }
   auto structure_sections = top.list("structures", "the structures");
-  if (scene.dimension == 3 && scene.fluid && !structure_sections.empty())
-    top.fail("structures", "a structure beside a 3-D fluid (coupled) is not yet available");
+  if (scene.dimension == 3 && scene.fluid && !structure_sections.empty() &&
+      !find_fluid_plugin(scene.fluid->type)->build3)
+    fluid_section->fail("type", "fluid type " + scene.fluid->type +
+                                    " is not yet coupled to structures in 3-D");
   for (auto& st : structure_sections) {
     StructureBlock& b = scene.structures.emplace_back();
     b.key = st.path();

@@ -4,7 +4,9 @@
 // against it, the structures not solved; one that replays loads: the structures under them, the
 // fluid not solved). The part not solved stays at its initial state in fields and probes. It
 // knows the solvers only through their plug-in interfaces (solver_plugin.hpp); the structures'
-// interfaces are concatenated in scene order (coupling::StructureGroup).
+// interfaces are concatenated in scene order (coupling::StructureGroup). BasicCoupledModel<D> for
+// D = 2 (CoupledModel) and 3 (CoupledModel3: the plug-ins' build3, interface_mesh3 and
+// coupling_solver3; interface.h5 is 2-D, so recording and replay are refused in 3-D).
 #include "coupling/registry.hpp"
 #include "coupling/scheme.hpp"
 #include "coupling/structure_group.hpp"
@@ -22,20 +24,25 @@ class InterfaceHistoryWriter;
 /// nullptr for a scheme that replays none. InputError (`FILE:LINE: coupling.motion|loads: what`)
 /// for a recording whose node count differs from the `nodes` of the scene's interfaces.
 std::unique_ptr<InterfaceHistory> open_replay(const Scene& scene, std::size_t nodes);
+/// A 3-D scene's coupling block: InputError (`FILE:LINE: coupling.KEY: what`) for what interface.h5
+/// (2-D) cannot do, record_interface or a one-way scheme.
+void refuse_history3(const Scene& scene);
 
-class CoupledModel final : public Model {
+template <int D> class BasicCoupledModel final : public Model {
 public:
+  using Scheme = coupling::BasicCouplingScheme<D>;
   /// Throws InputError (scene file and line) for coupling options the scheme rejects.
   /// one_way_*: InputError (`FILE:LINE: coupling.motion|loads: what`) for a recorded file whose
   /// node count differs from the interface's.
-  explicit CoupledModel(const Scene& scene);
-  ~CoupledModel() override;
+  explicit BasicCoupledModel(const Scene& scene);
+  ~BasicCoupledModel() override;
   void advance(double time, double dt) override;
   /// The smallest of the fluid's and the structures' stable steps for the Courant number
   /// (time.courant): the coupling step follows the fluid's step.
   std::optional<double> stable_dt(double courant) const override;
   /// DIR/coupling.csv: one row per coupling step (iterations, residuals of eq. 68, relaxation,
-  /// convergence, wall times), flushed every 1000 rows and at the end. With
+  /// convergence, wall times, the fluid's force: 2-D its force_parts fx_, fy_; 3-D the loads'
+  /// sum fx_total, fy_total, fz_total, N), flushed every 1000 rows and at the end. With
   /// coupling.record_interface also DIR/interface.h5 (row 0 at t = 0, then one row per step;
   /// not continued across a restart: refused with InputError).
   void open_logs(const std::filesystem::path& out, bool resume) override;
@@ -51,15 +58,16 @@ public:
   void write_state(StateArchive& archive) const override { scheme_->write_state(archive); }
   void read_state(const StateArchive& archive) override { scheme_->read_state(archive); }
 
-  const coupling::CouplingScheme& scheme() const { return *scheme_; }
+  const Scheme& scheme() const { return *scheme_; }
   FluidPart& fluid() { return *fluid_; }
   StructurePart& structure(std::size_t i) { return *structures_[i]; }
 
 private:
+  void write_forces(std::ostream& log) const; ///< the force columns of coupling.csv's row
   std::vector<std::unique_ptr<StructurePart>> structures_;
   std::unique_ptr<FluidPart> fluid_;
-  std::unique_ptr<coupling::StructureGroup> group_;
-  std::unique_ptr<coupling::CouplingScheme> scheme_;
+  std::unique_ptr<coupling::BasicStructureGroup<D>> group_;
+  std::unique_ptr<Scheme> scheme_;
   std::unique_ptr<std::ofstream> step_log_;
   // Recording and one-way replay.
   class FluidTap;
@@ -69,5 +77,10 @@ private:
   bool record_ = false;
   coupling::SchemeNeeds needs_; ///< what the scheme couples (the registry's declaration)
 };
+
+extern template class BasicCoupledModel<2>;
+extern template class BasicCoupledModel<3>;
+using CoupledModel = BasicCoupledModel<2>;
+using CoupledModel3 = BasicCoupledModel<3>;
 
 } // namespace fsi::app

@@ -31,6 +31,10 @@ public:
   /// last step, N/m, split into the terms that carry it (e.g. pressure, repulsive, viscous), so
   /// that coupling.csv shows what carries the load. Names are fixed for the part's lifetime.
   virtual std::vector<std::pair<std::string, Vec2>> force_parts() const { return {}; }
+  /// The 3-D F (a part built by FluidPlugin::build3) against the interfaces it was built with,
+  /// their nodes concatenated in the order given. Default: throws std::logic_error naming the
+  /// part (a fluid without 3-D coupling).
+  virtual coupling::FluidSolver3& coupling_solver3();
 };
 
 /// A structure in a run: stand-alone, or the coupler's S through the interface it describes.
@@ -44,6 +48,10 @@ public:
   /// The area the structure occupies, kept free of fluid particles.
   virtual std::vector<Polygon> occupied_area() const = 0;
   virtual coupling::StructureSolver& coupling_solver() = 0;
+  /// The 3-D coupling interface (triangular faces), in the reference configuration, and the 3-D
+  /// S through it. Defaults: throw std::logic_error naming the structure (no 3-D coupling).
+  virtual const InterfaceMesh3& interface_mesh3() const;
+  virtual coupling::StructureSolver3& coupling_solver3();
 
 private:
   std::string name_;
@@ -64,6 +72,7 @@ struct Footprint {
 struct StructureOutline {
   InterfaceMesh interface;
   std::vector<Polygon> occupied;
+  InterfaceMesh3 interface3 = {}; ///< a 3-D scene's (StructurePart::interface_mesh3)
 };
 
 /// A plug-in's functions and names, in this order (each plug-in's plugin() lists them so).
@@ -86,6 +95,14 @@ struct FluidPlugin {
   std::function<Footprint(const Scene&)> footprint;
   std::vector<std::string> fields;           ///< output fields it writes
   std::vector<std::string> probe_quantities; ///< probes it answers (without a `structure`)
+  /// A 3-D coupled scene's fluid (scene.dimension 3 with structures): interfaces as `build`'s,
+  /// the structures' InterfaceMesh3 in scene order. Empty: the type has no 3-D coupling (the
+  /// scene reader refuses such a scene at fluid.type).
+  std::function<std::unique_ptr<FluidPart>(const Scene&, const std::vector<InterfaceMesh3>&)>
+      build3 = {};
+  /// The input checks build3 makes, without building the solver (`fsi check`); empty: none
+  /// beyond `validate`'s.
+  std::function<void(const Scene&, const std::vector<InterfaceMesh3>&)> validate3 = {};
 };
 
 /// As FluidPlugin: the functions and names in this order.

@@ -3,8 +3,8 @@
 // solid (a box mesh or a Gmsh file) under gravity and the scene's constant face loads; its
 // interface, the 6-node faces of the tagged surfaces (fem::interface_of, NCR eq. 50), and the
 // coupler's S on it (PartAdapter<T10>: interface loads in as nodal forces, node motion out). The
-// plug-in API (StructurePart) is 2-D: the part shows no 2-D interface or area, and a 3-D fluid
-// couples through interface() and coupling_solver3().
+// part shows no 2-D interface or area; a 3-D fluid couples through interface_mesh3() and
+// coupling_solver3().
 #include "fem/fe_adapter.hpp"
 #include "fem/fem_part.hpp"
 #include "fem/fem_spec.hpp"
@@ -41,7 +41,9 @@ public:
   /// The tagged interface surfaces' 6-node faces with their FE nodes (NCR, eq. 50).
   const fem::FeInterface3& interface() const { return interface_; }
   /// The coupler's S (eq. 67) on the T10 structure through interface().
-  coupling::StructureSolver3& coupling_solver3() { return adapter_; }
+  coupling::StructureSolver3& coupling_solver3() override { return adapter_; }
+  /// interface()'s mesh: what the fluid of a 3-D coupled scene is built on.
+  const InterfaceMesh3& interface_mesh3() const override { return interface_.mesh; }
 
 private:
   InterfaceMesh no_interface_;

@@ -126,9 +126,11 @@ Footprint footprint(const Scene& scene, std::size_t index) {
 // The mesh (read or generated) and its tags; the outline the part would show.
 StructureOutline validate(const Scene& scene, std::size_t index) {
   const StructureBlock& block = scene.structures[index];
-  if (scene.dimension == 3) { // no fluid: no interface or area to show
-    checked_tet_mesh(scene, block);
-    return {};
+  if (scene.dimension == 3) { // the 3-D interface (FemModelT10::interface_mesh3), no area
+    StructureOutline o;
+    o.interface3 =
+        fem::interface_of(checked_tet_mesh(scene, block), block.as<StructureSpec>().interface).mesh;
+    return o;
   }
   const fem::Mesh mesh = checked_mesh(scene, block);
   return {fem::interface_of(mesh, block.as<StructureSpec>().interface).mesh,

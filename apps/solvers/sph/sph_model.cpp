@@ -1,7 +1,8 @@
 #include "sph/sph_model.hpp"
 
+#include "sph/boundary_adapter.hpp"
+
 #include "fsi/core/error.hpp"
-#include "fsi/core/state_archive.hpp"
 #include "fsi_app/finite_guard.hpp"
 #include "fsi_app/fluid_regions.hpp"
 #include "fsi_app/wall_motion.hpp"
@@ -20,140 +21,6 @@ sph::SphOptions sph_options(const Scene& scene) {
   o.periodic_x = o.inflow.on(); // the channel wraps in x
   std::tie(o.domain_min, o.domain_max) = f.area.domain_or_box(scene, 8.0 * o.dp);
   return o;
-}
-
-// F (eq. 66) with sub-cycling: one coupler step of the interface motion from its state at the
-// fluid's time (start_) to the one given (end_), crossed by the fluid's own acoustic steps. Per
-// acoustic step the nodes move on the line between the two, the boundary points follow them
-// (edge_point), with the step's mean velocity and the coupler step's mean acceleration
-// (v_end - v_start) / Dt (fluid.interface_acceleration; else zero) as the wall's time-averaged
-// velocity and acceleration (eq. 17). The
-// loads are the points' impulse over the coupler step / Dt, distributed to the nodes: the
-// structure receives exactly the momentum the fluid lost to it.
-class SphModel::Adapter final : public coupling::FluidSolver {
-public:
-  explicit Adapter(SphModel& model) : model_(model) {
-    for (const auto& b : model.boundaries_) {
-      offset_.push_back(nodes_);
-      nodes_ += b.mesh().node_count();
-      points_ += b.size();
-    }
-    start_.x.clear();
-    for (const auto& b : model.boundaries_)
-      start_.x.insert(start_.x.end(), b.mesh().X0.begin(), b.mesh().X0.end());
-    start_.v.assign(nodes_, Vec2::Zero());
-    start_.a.assign(nodes_, Vec2::Zero());
-    end_ = start_;
-    loads_ = coupling::InterfaceLoads::zeros(nodes_);
-    a_.resize(model.boundaries_.size());
-  }
-  void initialize() override {}
-  void set_interface_motion(const coupling::InterfaceMotion& m) override {
-    if (m.size() != nodes_)
-      throw RunError("fluid_sph: interface motion of " + std::to_string(m.size()) +
-                     " nodes, the fluid's interfaces have " + std::to_string(nodes_));
-    end_ = m;
-  }
-  void advance(double t, double dt) override;
-  const coupling::InterfaceLoads& interface_loads() const override { return loads_; }
-  void save_state() override {
-    model_.fluid_->save(saved_);
-    saved_start_ = start_;
-  }
-  void restore_state() override {
-    model_.fluid_->restore(saved_);
-    start_ = saved_start_;
-  }
-  std::optional<double> stable_dt() const override { return model_.fluid_->advection_dt(); }
-  void write_state(StateArchive& archive) const override {
-    model_.fluid_->write_state(archive, "fluid/");
-    if (nodes_ == 0) return;
-    archive.put("fluid/interface/motion", flatten(start_));
-  }
-  void read_state(const StateArchive& archive) override {
-    model_.fluid_->read_state(archive, "fluid/");
-    if (nodes_ == 0) return;
-    const auto& m = archive.reals("fluid/interface/motion", 6 * nodes_);
-    for (std::size_t k = 0; k < nodes_; ++k) {
-      start_.x[k] = {m[6 * k], m[6 * k + 1]};
-      start_.v[k] = {m[6 * k + 2], m[6 * k + 3]};
-      start_.a[k] = {m[6 * k + 4], m[6 * k + 5]};
-    }
-  }
-
-private:
-  static std::vector<double> flatten(const coupling::InterfaceMotion& m) {
-    std::vector<double> out;
-    out.reserve(6 * m.size());
-    for (std::size_t k = 0; k < m.size(); ++k)
-      out.insert(out.end(),
-                 {m.x[k].x(), m.x[k].y(), m.v[k].x(), m.v[k].y(), m.a[k].x(), m.a[k].y()});
-    return out;
-  }
-
-  SphModel& model_;
-  std::vector<std::size_t> offset_; ///< first coupler node of each interface
-  std::size_t nodes_ = 0, points_ = 0;
-  coupling::InterfaceMotion start_, end_, saved_start_;
-  coupling::InterfaceLoads loads_;
-  sph::SphFluid::State saved_;
-  // Work arrays, sized once.
-  std::vector<std::vector<Vec2>> a_;
-  std::vector<Vec2> nodal_a_, position_, normal_, point_a_, impulse_, nodal_f_;
-};
-
-void SphModel::Adapter::advance(double t, double dt) {
-  sph::SphFluid& f = *model_.fluid_;
-  const auto& bs = model_.boundaries_;
-  const double t_end = t + dt, inv_dt = 1.0 / dt;
-  nodal_a_.resize(nodes_);
-  // The wall acceleration of eq. 16's dummy pressure: the step's mean (v_end - v_start) / Dt
-  // with fluid.interface_acceleration, else zero (docs/fluid_sph.md: explicit coupling with a
-  // light structure feeds it back unstably).
-  const bool mean_a = model_.interface_acceleration_;
-  for (std::size_t k = 0; k < nodes_; ++k)
-    nodal_a_[k] = mean_a ? Vec2((end_.v[k] - start_.v[k]) * inv_dt) : Vec2::Zero();
-  for (std::size_t j = 0; j < bs.size(); ++j) {
-    const auto first = nodal_a_.begin() + static_cast<std::ptrdiff_t>(offset_[j]);
-    a_[j].assign(first, first + static_cast<std::ptrdiff_t>(bs[j].mesh().node_count()));
-  }
-  impulse_.assign(points_, Vec2::Zero());
-  sph::WallParticles& w = f.moved_walls();
-  while (f.time() < t_end - 1e-12 * std::max(1.0, std::abs(t_end))) {
-    const double h = std::min(f.next_dt(), t_end - f.time());
-    const double s = std::min(1.0, (f.time() + h - t) * inv_dt), inv_h = 1.0 / h;
-    std::size_t a = model_.first_point_;
-    for (std::size_t j = 0; j < bs.size(); ++j) {
-      const std::size_t n = bs[j].mesh().node_count();
-      std::vector<Vec2>& x = model_.interface_x_[j];
-      for (std::size_t k = 0; k < n; ++k)
-        x[k] = (1.0 - s) * start_.x[offset_[j] + k] + s * end_.x[offset_[j] + k];
-      bs[j].place(x, position_, normal_);
-      bs[j].interpolate(a_[j], point_a_);
-      for (std::size_t p = 0; p < bs[j].size(); ++p, ++a) {
-        for (int c = 0; c < 2; ++c) {
-          w.v[c][a] = (position_[p][c] - w.x[c][a]) * inv_h; // mean over the acoustic step (eq. 17)
-          w.a[c][a] = point_a_[p][c];
-          w.x[c][a] = position_[p][c];
-          w.n[c][a] = normal_[p][c];
-        }
-      }
-    }
-    f.advance(h);
-    for (std::size_t p = 0; p < points_; ++p)
-      impulse_[p] += f.wall_force(model_.first_point_ + p) * h;
-  }
-  std::size_t first = 0;
-  for (std::size_t j = 0; j < bs.size(); ++j) {
-    position_.assign(impulse_.begin() + static_cast<std::ptrdiff_t>(first),
-                     impulse_.begin() + static_cast<std::ptrdiff_t>(first + bs[j].size()));
-    for (auto& q : position_) q *= inv_dt; // mean force over the coupler step
-    bs[j].distribute(position_, nodal_f_);
-    std::copy(nodal_f_.begin(), nodal_f_.end(),
-              loads_.f.begin() + static_cast<std::ptrdiff_t>(offset_[j]));
-    first += bs[j].size();
-  }
-  start_ = end_;
 }
 
 namespace {
@@ -218,7 +85,8 @@ SphModel::SphModel(const Scene& scene, const std::vector<InterfaceMesh>& interfa
   tracked_ = !interfaces.empty() || has_wall_force_probe(scene);
   interface_acceleration_ = f.interface_acceleration;
   if (tracked_) fluid_->track_wall_forces(interfaces.empty() ? 0 : first_point_);
-  adapter_ = std::make_unique<Adapter>(*this);
+  adapter_ = std::make_unique<BoundaryAdapter<2>>(*fluid_, boundaries_, interface_x_, first_point_,
+                                                  interface_acceleration_);
 }
 
 SphModel::~SphModel() = default;

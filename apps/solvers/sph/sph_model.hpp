@@ -1,7 +1,8 @@
 #pragma once
 // The SPH fluid of a scene (fluid.type: sph) on the scene's walls (dummy particles, static or
 // with the walls' prescribed motion) and, coupled, on boundary points of each structure's
-// interface mesh (fluid_sph/interface_boundary.hpp), whose forces return to the interface nodes.
+// interface mesh (fluid_sph/interface_boundary.hpp), whose forces return to the interface nodes
+// (BoundaryAdapter<2>).
 #include "fluid_sph/interface_boundary.hpp"
 #include "fluid_sph/sph_fluid.hpp"
 #include "fsi_app/solver_plugin.hpp"
@@ -10,6 +11,8 @@
 #include <memory>
 
 namespace fsi::app::sph_plugin {
+
+template <int D> class BoundaryAdapter;
 
 /// The solver options of the scene's fluid block; without a domain, the box around walls and
 /// regions with a margin of 8 l0 (the walls' 4 dummy layers and a kernel support).
@@ -49,11 +52,10 @@ public:
   Vec2 wall_force() const;
 
 private:
-  class Adapter;
   std::vector<sph::InterfaceBoundary> boundaries_;
   std::vector<std::vector<Vec2>> interface_x_; // each interface's nodes where its points are now
   std::unique_ptr<sph::SphFluid> fluid_;
-  std::unique_ptr<Adapter> adapter_;
+  std::unique_ptr<BoundaryAdapter<2>> adapter_;
   std::size_t initial_count_ = 0, first_point_ = 0;
   bool tracked_ = false, interface_acceleration_ = false;
   Vec2 wall_force_ = Vec2::Zero();     // uncoupled: the walls' mean force over the last advance

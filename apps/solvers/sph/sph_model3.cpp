@@ -1,12 +1,16 @@
 #include "sph/sph_model3.hpp"
 
+#include "sph/boundary_adapter.hpp"
+
 #include "fsi/core/error.hpp"
 #include "fsi/core/format.hpp"
 #include "fsi/core/state_archive.hpp"
 #include "fsi_app/fluid_regions.hpp"
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <unordered_set>
 
 namespace fsi::app::sph_plugin {
 
@@ -26,6 +30,67 @@ std::pair<Vec3, Vec3> bounds(const SphSpec3& f) {
 
 bool velocity_probe(const std::string& q) {
   return q == "velocity_x" || q == "velocity_y" || q == "velocity_z";
+}
+
+// Rows of boundary points behind an interface (the 2-D default of fluid.interface_layers).
+constexpr int kInterfaceLayers = 4;
+
+// Each interface's boundary points (lattice at spacing l0); InputError naming the fluid block.
+std::vector<sph::InterfaceBoundary3> boundaries_of(const Scene& scene,
+                                                   const std::vector<InterfaceMesh3>& interfaces) {
+  const double dp = scene.fluid->as<SphSpec3>().options.dp;
+  std::vector<sph::InterfaceBoundary3> out;
+  try {
+    for (const auto& mesh : interfaces) out.emplace_back(mesh, dp, kInterfaceLayers);
+  } catch (const InputError& e) {
+    fail_at(scene, scene.fluid->line, "fluid", e.what());
+  }
+  return out;
+}
+
+// The options checked and the fluid's particles: the regions' fill less what lies behind an
+// interface or within l0/2 of it (its signed distance at the reference positions); InputError
+// naming the fluid block when none is left.
+std::vector<Vec3> checked_fluid(const Scene& scene,
+                                const std::vector<sph::InterfaceBoundary3>& bs) {
+  const SphSpec3& f = scene.fluid->as<SphSpec3>();
+  try {
+    sph_options3(scene).validate();
+  } catch (const InputError& e) {
+    fail_at(scene, scene.fluid->line, "fluid", e.what());
+  }
+  std::vector<Vec3> out;
+  for (const Vec3& p : fill_regions3(f)) {
+    bool solid = false;
+    for (const auto& b : bs)
+      solid = solid || b.signed_distance(b.mesh().X0, p) < 0.5 * f.options.dp;
+    if (!solid) out.push_back(p);
+  }
+  if (out.empty())
+    fail_at(scene, f.regions.front().line, "fluid.regions", "no particle fits the regions");
+  return out;
+}
+
+// The tank's dummies less those whose dp cell of the tank's lattice holds one of `points` (a
+// structure's boundary points): where a structure stands in the tank's wall, the fluid sees it
+// and not a rigid wall.
+std::vector<sph::WallPoint3> tank_walls(const SphSpec3& f,
+                                        const std::vector<sph::WallPoint3>& points) {
+  if (!f.tank) return {};
+  const double dp = f.options.dp;
+  const auto cell = [lo = f.tank->min, dp](const Vec3& x) {
+    std::int64_t key = 0;
+    for (int c = 0; c < 3; ++c)
+      key = (key << 21) + static_cast<std::int64_t>(std::floor((x[c] - lo[c]) / dp)) + (1 << 20);
+    return key;
+  };
+  std::unordered_set<std::int64_t> taken;
+  for (const auto& p : points) taken.insert(cell(p.x));
+  std::vector<sph::WallPoint3> out;
+  for (const auto& w :
+       sph::box_walls(f.tank->min, f.tank->max, dp, 4, 1, {false, false, f.periodic_z}))
+    if (!taken.count(cell(w.x))) out.push_back(w);
+  return out;
 }
 
 } // namespace
@@ -74,7 +139,7 @@ void check3(const Scene& scene, Section& s, std::vector<Section>& probes) {
     const ProbeSpec& p = scene.output.probes[i];
     if (p.quantity == "wall_force_x" || p.quantity == "wall_force_y")
       probes[i].fail("quantity", p.quantity + " is not yet available in a 3-D scene");
-    if (p.point3 && !inside(*p.point3, o.domain_min, o.domain_max))
+    if (p.point3 && p.structure.empty() && !inside(*p.point3, o.domain_min, o.domain_max))
       probes[i].fail("point", "the point is outside the fluid domain");
   }
   try {
@@ -105,37 +170,48 @@ Footprint footprint3(const Scene& scene) {
   return e;
 }
 
-void validate3(const Scene& scene) {
-  const SphSpec3& f = scene.fluid->as<SphSpec3>();
-  try {
-    sph_options3(scene).validate();
-  } catch (const InputError& e) {
-    fail_at(scene, scene.fluid->line, "fluid", e.what());
-  }
-  if (fill_regions3(f).empty())
-    fail_at(scene, f.regions.front().line, "fluid.regions", "no particle fits the regions");
+void validate3(const Scene& scene, const std::vector<InterfaceMesh3>& interfaces) {
+  checked_fluid(scene, boundaries_of(scene, interfaces));
 }
 
-SphModel3::SphModel3(const Scene& scene) {
+SphModel3::SphModel3(const Scene& scene, const std::vector<InterfaceMesh3>& interfaces)
+    : boundaries_(boundaries_of(scene, interfaces)) {
   const SphSpec3& f = scene.fluid->as<SphSpec3>();
-  validate3(scene);
-  const std::vector<Vec3> positions = fill_regions3(f);
+  const std::vector<Vec3> positions = checked_fluid(scene, boundaries_);
   initial_count_ = positions.size();
-  const std::vector<sph::WallPoint3> walls =
-      f.tank ? sph::box_walls(f.tank->min, f.tank->max, f.options.dp, 4, 1,
-                              {false, false, f.periodic_z})
-             : std::vector<sph::WallPoint3>{};
+  // The interfaces' points (group 1 + j) after the tank's dummies (group 0); the guard's exact
+  // surface of interface j: its flat triangles where its points are now (interface_x_).
+  std::vector<sph::WallPoint3> points;
+  std::vector<sph::SphFluid3::Distance> distances(1);
+  for (std::size_t j = 0; j < boundaries_.size(); ++j) {
+    const auto p = boundaries_[j].wall_points(static_cast<int>(1 + j));
+    points.insert(points.end(), p.begin(), p.end());
+    interface_x_.push_back(interfaces[j].X0);
+    distances.emplace_back(
+        [this, j](const Vec3& q) { return boundaries_[j].signed_distance(interface_x_[j], q); });
+  }
+  std::vector<sph::WallPoint3> walls = tank_walls(f, points);
+  first_point_ = walls.size();
+  walls.insert(walls.end(), points.begin(), points.end());
   try {
-    fluid_ = std::make_unique<sph::SphFluid3>(sph_options3(scene), positions, walls);
+    fluid_ = std::make_unique<sph::SphFluid3>(sph_options3(scene), positions, walls,
+                                              std::move(distances));
   } catch (const InputError& e) {
     fail_at(scene, scene.fluid->line, "fluid", e.what());
   }
+  if (!boundaries_.empty()) fluid_->track_wall_forces(first_point_);
+  adapter_ =
+      std::make_unique<BoundaryAdapter<3>>(*fluid_, boundaries_, interface_x_, first_point_, false);
 }
 
 SphModel3::~SphModel3() = default;
 
 coupling::FluidSolver& SphModel3::coupling_solver() {
-  throw RunError("fluid_sph: a 3-D fluid is not coupled to structures (not yet available)");
+  throw RunError("fluid_sph: a 3-D fluid couples through coupling_solver3()");
+}
+
+coupling::FluidSolver3& SphModel3::coupling_solver3() {
+  return *adapter_;
 }
 
 void SphModel3::advance(double time, double dt) {
@@ -183,6 +259,7 @@ void SphModel3::report(JsonObject& run) const {
       .add("particles", static_cast<long long>(fluid_->particles().size()))
       .add("removed_particles", static_cast<long long>(fluid_->removed()))
       .add("wall_particles", static_cast<long long>(fluid_->walls().size()))
+      .add("interface_points", static_cast<long long>(fluid_->walls().size() - first_point_))
       .add("mean_neighbours", fluid_->mean_neighbours())
       .add("acoustic_steps", static_cast<long long>(fluid_->steps()))
       .add("advection_steps", static_cast<long long>(fluid_->advection_steps()));
@@ -195,11 +272,11 @@ std::optional<ParticleCount> SphModel3::particle_count() const {
 }
 
 void SphModel3::write_state(StateArchive& archive) const {
-  fluid_->write_state(archive, "fluid/");
+  adapter_->write_state(archive);
 }
 
 void SphModel3::read_state(const StateArchive& archive) {
-  fluid_->read_state(archive, "fluid/");
+  adapter_->read_state(archive);
 }
 
 } // namespace fsi::app::sph_plugin

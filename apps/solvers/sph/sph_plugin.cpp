@@ -75,7 +75,14 @@ FluidPlugin plugin() {
           footprint,
           {"velocity", "pressure", "density", "wkgc_indicator"},
           {"surge_front", "pressure", "velocity_x", "velocity_y", "velocity_z", "kinetic_energy",
-           "mean_speed", "wall_force_x", "wall_force_y"}};
+           "mean_speed", "wall_force_x", "wall_force_y"},
+          [](const Scene& scene,
+             const std::vector<InterfaceMesh3>& interfaces) -> std::unique_ptr<FluidPart> {
+            return std::make_unique<SphModel3>(scene, interfaces);
+          },
+          [](const Scene& scene, const std::vector<InterfaceMesh3>& interfaces) {
+            validate3(scene, interfaces);
+          }};
 }
 
 } // namespace fsi::app::sph_plugin

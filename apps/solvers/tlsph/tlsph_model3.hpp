@@ -38,9 +38,9 @@ public:
   coupling::StructureSolver& coupling_solver() override;
 
   /// The tagged box faces' triangles, each node on a particle (tlsph::TlsphSolid3::interface_mesh).
-  const InterfaceMesh3& interface_mesh3() const { return interface3_; }
+  const InterfaceMesh3& interface_mesh3() const override { return interface3_; }
   /// The coupler's S (eq. 67) on the solid through interface_mesh3().
-  coupling::StructureSolver3& coupling_solver3() { return adapter_; }
+  coupling::StructureSolver3& coupling_solver3() override { return adapter_; }
 
   tlsph::TlsphSolid3& solid() { return *solid_; }
 

@@ -60,9 +60,11 @@ Footprint footprint(const Scene& scene, std::size_t index) {
 
 // A lattice of a few thousand particles: built.
 StructureOutline validate(const Scene& scene, std::size_t index) {
-  if (scene.dimension == 3) { // no fluid: no interface or area to show
+  if (scene.dimension == 3) { // the 3-D interface (no 2-D area)
     const TlsphModel3 model(scene, scene.structures[index]);
-    return {};
+    StructureOutline o;
+    o.interface3 = model.interface_mesh3();
+    return o;
   }
   const TlsphModel model(scene, scene.structures[index]);
   return {model.interface_mesh(), model.occupied_area()};
