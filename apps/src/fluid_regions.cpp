@@ -3,6 +3,7 @@
 #include "fsi/core/format.hpp"
 #include "geometry_erp/fill.hpp"
 #include "geometry_erp/wall_set.hpp"
+#include "particles/lattice.hpp"
 
 #include <cmath>
 #include <cstdint>
@@ -150,6 +151,57 @@ std::vector<Vec2> fill_regions(const Scene& scene, const std::vector<Polygon>& r
     fail_at(scene, scene.fluid->line, "fluid.regions",
             "no particle fits in the regions at this l0");
   return positions;
+}
+
+BoxRegion read_box_region(Section& s, const std::string& what) {
+  const bool doc = s.context().documenting();
+  auto corner = [&](const std::string& key, const std::string& text) {
+    const std::optional<Vec3> v = s.optional_vec3(key, what + ": " + text + " [x, y, z], m");
+    if (!v && !doc) s.fail(key, "required key missing");
+    return v.value_or(Vec3::Zero());
+  };
+  BoxRegion b;
+  b.line = s.line();
+  b.min = corner("min", "lowest corner");
+  b.max = corner("max", "highest corner");
+  if (!doc && !((b.max - b.min).minCoeff() > 0.0))
+    s.fail("max", "must lie above min on every axis");
+  s.finish();
+  return b;
+}
+
+bool inside_box(const Vec3& p, const Vec3& lo, const Vec3& hi) {
+  return (p - lo).minCoeff() >= 0.0 && (hi - p).minCoeff() >= 0.0;
+}
+
+std::vector<Vec3> fill_box_regions(const std::vector<BoxRegion>& regions, double l0) {
+  std::vector<Vec3> out;
+  for (std::size_t i = 0; i < regions.size(); ++i)
+    for (const Vec3& p : particles::lattice_box<3>(regions[i].min, regions[i].max, l0)) {
+      bool earlier = false;
+      for (std::size_t j = 0; j < i; ++j)
+        earlier = earlier || inside_box(p, regions[j].min, regions[j].max);
+      if (!earlier) out.push_back(p);
+    }
+  return out;
+}
+
+void check_box_regions(const Scene& scene, Section& s, std::vector<Section>& probes,
+                       const std::vector<BoxRegion>& regions, const std::optional<BoxRegion>& tank,
+                       const Vec3& domain_min, const Vec3& domain_max) {
+  for (std::size_t i = 0; i < regions.size(); ++i) {
+    const BoxRegion& r = regions[i];
+    if (!inside_box(r.min, domain_min, domain_max) || !inside_box(r.max, domain_min, domain_max))
+      s.fail("domain", "fluid region " + std::to_string(i) + " reaches outside the domain");
+    if (tank &&
+        (!inside_box(r.min, tank->min, tank->max) || !inside_box(r.max, tank->min, tank->max)))
+      s.fail("regions", "fluid region " + std::to_string(i) + " reaches outside the tank");
+  }
+  for (std::size_t i = 0; i < scene.output.probes.size(); ++i) {
+    const ProbeSpec& p = scene.output.probes[i];
+    if (p.point3 && p.structure.empty() && !inside_box(*p.point3, domain_min, domain_max))
+      probes[i].fail("point", "the point is outside the fluid domain");
+  }
 }
 
 } // namespace fsi::app

@@ -30,6 +30,31 @@ void check_in_domain(const Scene& scene, Section& s, std::vector<Section>& probe
 std::vector<Vec2> fill_regions(const Scene& scene, const std::vector<Polygon>& regions, double l0,
                                const std::vector<Polygon>& solid);
 
+/// A box block of a 3-D particle fluid (a region, its tank, its domain): {min: [x, y, z], max: [x,
+/// y, z]}, max above min on every axis.
+struct BoxRegion {
+  Vec3 min = Vec3::Zero(), max = Vec3::Zero();
+  int line = 0;
+};
+
+/// Reads a box block (`what` names it in the key docs); s.fail for a missing corner or max not
+/// above min.
+BoxRegion read_box_region(Section& s, const std::string& what);
+
+/// Whether p lies in the box [lo, hi], its faces included.
+bool inside_box(const Vec3& p, const Vec3& lo, const Vec3& hi);
+
+/// Each box region's cell-centred lattice at spacing l0 (particles::lattice_box, l0/2 from its
+/// faces), a point inside an earlier region left out.
+std::vector<Vec3> fill_box_regions(const std::vector<BoxRegion>& regions, double l0);
+
+/// The box regions lie in the domain and in the tank (when given), and every fluid probe's point
+/// (a probe without a structure) in the domain: s.fail names fluid.domain or fluid.regions, the
+/// probe's section its point.
+void check_box_regions(const Scene& scene, Section& s, std::vector<Section>& probes,
+                       const std::vector<BoxRegion>& regions, const std::optional<BoxRegion>& tank,
+                       const Vec3& domain_min, const Vec3& domain_max);
+
 /// Shoelace area of a closed polygon (either orientation), m^2.
 double polygon_area(const Polygon& p);
 

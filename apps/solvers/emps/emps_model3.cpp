@@ -18,10 +18,6 @@ namespace fsi::app::emps_plugin {
 
 namespace {
 
-bool inside(const Vec3& p, const Vec3& lo, const Vec3& hi) {
-  return (p - lo).minCoeff() >= 0.0 && (hi - p).minCoeff() >= 0.0;
-}
-
 // The box around the tank (box or surface) and the regions.
 std::pair<Vec3, Vec3> bounds(const FluidSpec3& f) {
   Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
@@ -49,15 +45,7 @@ emps::FluidOptions3 fluid_options3(const Scene& scene) {
 }
 
 std::vector<Vec3> fill_regions3(const FluidSpec3& f) {
-  std::vector<Vec3> out;
-  for (std::size_t i = 0; i < f.regions.size(); ++i)
-    for (const Vec3& p : sph::fill_box(f.regions[i].min, f.regions[i].max, f.options.l0)) {
-      bool earlier = false;
-      for (std::size_t j = 0; j < i; ++j)
-        earlier = earlier || inside(p, f.regions[j].min, f.regions[j].max);
-      if (!earlier) out.push_back(p);
-    }
-  return out;
+  return fill_box_regions(f.regions, f.options.l0);
 }
 
 std::unique_ptr<erp::TriangleWallSet> tank_walls(const FluidSpec3& f) {
@@ -70,19 +58,7 @@ std::unique_ptr<erp::TriangleWallSet> tank_walls(const FluidSpec3& f) {
 void check3(const Scene& scene, Section& s, std::vector<Section>& probes) {
   const FluidSpec3& f = scene.fluid->as<FluidSpec3>();
   const emps::FluidOptions3 o = fluid_options3(scene);
-  for (std::size_t i = 0; i < f.regions.size(); ++i) {
-    const Box& r = f.regions[i];
-    if (!inside(r.min, o.domain_min, o.domain_max) || !inside(r.max, o.domain_min, o.domain_max))
-      s.fail("domain", "fluid region " + std::to_string(i) + " reaches outside the domain");
-    if (f.tank &&
-        (!inside(r.min, f.tank->min, f.tank->max) || !inside(r.max, f.tank->min, f.tank->max)))
-      s.fail("regions", "fluid region " + std::to_string(i) + " reaches outside the tank");
-  }
-  for (std::size_t i = 0; i < scene.output.probes.size(); ++i) {
-    const ProbeSpec& p = scene.output.probes[i];
-    if (p.point3 && !inside(*p.point3, o.domain_min, o.domain_max))
-      probes[i].fail("point", "the point is outside the fluid domain");
-  }
+  check_box_regions(scene, s, probes, f.regions, f.tank, o.domain_min, o.domain_max);
 }
 
 // Bytes per fluid particle in 3-D, as emps_plugin.cpp counts 2-D: the registered particle
@@ -205,7 +181,7 @@ std::optional<double> EmpsModel3::probe(const ProbeSpec& probe) const {
     double sum = 0.0;
     std::size_t count = 0;
     for (std::size_t i = 0; i < n; ++i)
-      if (inside(x(i), *probe.box3_min, *probe.box3_max)) sum += p.p[i], ++count;
+      if (inside_box(x(i), *probe.box3_min, *probe.box3_max)) sum += p.p[i], ++count;
     return count > 0 ? sum / static_cast<double>(count) : 0.0;
   }
   if (probe.quantity == "particles") return static_cast<double>(n);

@@ -9,24 +9,6 @@ namespace fsi::app::emps_plugin {
 
 namespace {
 
-Vec3 required_vec3(Section& s, const std::string& key, const std::string& doc) {
-  const std::optional<Vec3> v = s.optional_vec3(key, doc);
-  if (!v && !s.context().documenting()) s.fail(key, "required key missing");
-  return v.value_or(Vec3::Zero());
-}
-
-// A box block {min: [x, y, z], max: [x, y, z]} with max above min on every axis.
-Box read_box(Section& s, const std::string& what) {
-  Box b;
-  b.line = s.line();
-  b.min = required_vec3(s, "min", what + ": lowest corner [x, y, z], m");
-  b.max = required_vec3(s, "max", what + ": highest corner [x, y, z], m");
-  if (!s.context().documenting() && !((b.max - b.min).minCoeff() > 0.0))
-    s.fail("max", "must lie above min on every axis");
-  s.finish();
-  return b;
-}
-
 // The 2-D keys and options that have no 3-D form yet (docs/fluid_emps.md, "3-D").
 void refuse_2d_only(Section& s, const emps::FluidOptions3& o) {
   if (s.has("convex_corners")) s.fail("convex_corners", "not available in 3-D yet");
@@ -46,7 +28,7 @@ void read_tank(Section& s, FluidSpec3& f) {
                                "inside min..max (the fluid's walls; 2-D scenes give wall "
                                "polylines)")) {
     f.tank_line = t->line();
-    f.tank = read_box(*t, "the tank's inside");
+    f.tank = read_box_region(*t, "the tank's inside");
   }
   if (!doc && !s.has("tank_file")) return;
   const std::filesystem::path path =
@@ -68,14 +50,14 @@ std::shared_ptr<const SolverSpec> read_fluid3(Section& s) {
   refuse_2d_only(s, f.options);
   read_tank(s, f);
   for (auto& r : s.list("regions", "boxes filled with particles at spacing l0"))
-    f.regions.push_back(read_box(r, "a box of fluid"));
+    f.regions.push_back(read_box_region(r, "a box of fluid"));
   if (f.regions.empty()) s.fail("regions", "at least one region is required");
   for (std::size_t i = 0; i < f.regions.size(); ++i)
     if (f.options.l0 > (f.regions[i].max - f.regions[i].min).minCoeff())
       s.fail("l0", "particle spacing " + significant(f.options.l0, 3) +
                        " m is larger than fluid region " + std::to_string(i));
   if (auto d = s.block("domain", "particles leaving this box are removed and counted"))
-    f.domain = read_box(*d, "the domain");
+    f.domain = read_box_region(*d, "the domain");
   return spec;
 }
 

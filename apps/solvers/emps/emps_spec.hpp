@@ -18,10 +18,7 @@ struct FluidSpec final : SolverSpec {
 };
 
 /// An axis-aligned box [min, max], m, and the line of its block (3-D scenes).
-struct Box {
-  Vec3 min = Vec3::Zero(), max = Vec3::Zero();
-  int line = 0;
-};
+using Box = BoxRegion;
 
 /// The fluid block of a 3-D scene (dimension: 3): boxes of water in a tank of triangles, the
 /// closed box `tank` or the surface of `tank_file`, read and checked as the scene is read.

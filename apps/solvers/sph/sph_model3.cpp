@@ -16,10 +16,6 @@ namespace fsi::app::sph_plugin {
 
 namespace {
 
-bool inside(const Vec3& p, const Vec3& lo, const Vec3& hi) {
-  return (p - lo).minCoeff() >= 0.0 && (hi - p).minCoeff() >= 0.0;
-}
-
 // The box around the tank and the regions.
 std::pair<Vec3, Vec3> bounds(const SphSpec3& f) {
   Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
@@ -113,34 +109,17 @@ sph::SphOptions3 sph_options3(const Scene& scene) {
 }
 
 std::vector<Vec3> fill_regions3(const SphSpec3& f) {
-  std::vector<Vec3> out;
-  for (std::size_t i = 0; i < f.regions.size(); ++i)
-    for (const Vec3& p : sph::fill_box(f.regions[i].min, f.regions[i].max, f.options.dp)) {
-      bool earlier = false;
-      for (std::size_t j = 0; j < i; ++j)
-        earlier = earlier || inside(p, f.regions[j].min, f.regions[j].max);
-      if (!earlier) out.push_back(p);
-    }
-  return out;
+  return fill_box_regions(f.regions, f.options.dp);
 }
 
 void check3(const Scene& scene, Section& s, std::vector<Section>& probes) {
   const SphSpec3& f = scene.fluid->as<SphSpec3>();
   const sph::SphOptions3 o = sph_options3(scene);
-  for (std::size_t i = 0; i < f.regions.size(); ++i) {
-    const Box3& r = f.regions[i];
-    if (!inside(r.min, o.domain_min, o.domain_max) || !inside(r.max, o.domain_min, o.domain_max))
-      s.fail("domain", "fluid region " + std::to_string(i) + " reaches outside the domain");
-    if (f.tank &&
-        (!inside(r.min, f.tank->min, f.tank->max) || !inside(r.max, f.tank->min, f.tank->max)))
-      s.fail("regions", "fluid region " + std::to_string(i) + " reaches outside the tank");
-  }
+  check_box_regions(scene, s, probes, f.regions, f.tank, o.domain_min, o.domain_max);
   for (std::size_t i = 0; i < scene.output.probes.size(); ++i) {
-    const ProbeSpec& p = scene.output.probes[i];
-    if (p.quantity == "wall_force_x" || p.quantity == "wall_force_y")
-      probes[i].fail("quantity", p.quantity + " is not yet available in a 3-D scene");
-    if (p.point3 && p.structure.empty() && !inside(*p.point3, o.domain_min, o.domain_max))
-      probes[i].fail("point", "the point is outside the fluid domain");
+    const std::string& q = scene.output.probes[i].quantity;
+    if (q == "wall_force_x" || q == "wall_force_y")
+      probes[i].fail("quantity", q + " is not yet available in a 3-D scene");
   }
   try {
     o.validate();

@@ -8,35 +8,13 @@
 
 namespace fsi::app::sph_plugin {
 
-namespace {
-
-Vec3 required_vec3(Section& s, const std::string& key, const std::string& doc) {
-  const std::optional<Vec3> v = s.optional_vec3(key, doc);
-  if (!v && !s.context().documenting()) s.fail(key, "required key missing");
-  return v.value_or(Vec3::Zero());
-}
-
-// A box block {min: [x, y, z], max: [x, y, z]} with max above min on every axis.
-Box3 read_box(Section& s, const std::string& what) {
-  Box3 b;
-  b.line = s.line();
-  b.min = required_vec3(s, "min", what + ": lowest corner [x, y, z], m");
-  b.max = required_vec3(s, "max", what + ": highest corner [x, y, z], m");
-  if (!s.context().documenting() && !((b.max - b.min).minCoeff() > 0.0))
-    s.fail("max", "must lie above min on every axis");
-  s.finish();
-  return b;
-}
-
-} // namespace
-
 std::optional<Box3> read_tank(Section& s) {
   auto t = s.block(
       "tank", "(dimension 3) an open box tank, y up: its inside min..max (both required), walls "
               "of 4 dummy layers under its floor and behind its four sides, no "
               "lid (the 3-D scene's walls; 2-D scenes give wall polylines)");
   if (!t) return std::nullopt;
-  return read_box(*t, "the tank's inside");
+  return read_box_region(*t, "the tank's inside");
 }
 
 bool read_periodic_z(Section& s) {
@@ -56,14 +34,14 @@ std::shared_ptr<const SolverSpec> read_sph3(Section& s) {
   sph::visit_options(f.options, reader);
   f.tank = read_tank(s);
   for (auto& r : s.list("regions", "boxes filled with particles at spacing l0"))
-    f.regions.push_back(read_box(r, "a box of fluid"));
+    f.regions.push_back(read_box_region(r, "a box of fluid"));
   if (f.regions.empty()) s.fail("regions", "at least one region is required");
   for (std::size_t i = 0; i < f.regions.size(); ++i)
     if (f.options.dp > (f.regions[i].max - f.regions[i].min).minCoeff())
       s.fail("l0", "particle spacing " + significant(f.options.dp, 3) +
                        " m is larger than fluid region " + std::to_string(i));
   if (auto d = s.block("domain", "particles leaving this box are removed and counted"))
-    f.domain = read_box(*d, "the domain");
+    f.domain = read_box_region(*d, "the domain");
   f.periodic_z = read_periodic_z(s);
   if (f.periodic_z && !s.context().documenting()) {
     if (!f.tank) s.fail("periodic_z", "needs a tank (its depth along z is the period)");

@@ -23,10 +23,7 @@ struct SphSpec final : SolverSpec {
 };
 
 /// An axis-aligned box [min, max], m, and the line of its block.
-struct Box3 {
-  Vec3 min = Vec3::Zero(), max = Vec3::Zero();
-  int line = 0;
-};
+using Box3 = BoxRegion;
 
 /// The fluid block of a 3-D scene (dimension: 3): boxes of water in an open box tank (y up).
 struct SphSpec3 final : SolverSpec {
