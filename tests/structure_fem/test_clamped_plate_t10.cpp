@@ -22,7 +22,7 @@ const double D = E * h * h * h / (12.0 * (1.0 - nu * nu));          // flexural 
 /// Centre deflection w D / (q a^4) of the clamped square plate, nu = 0.3: Kirchhoff (Timoshenko &
 /// Woinowsky-Krieger, Theory of Plates and Shells, 2nd ed., sec. 44, Table 35), and Mindlin with
 /// k = 5/6 at a/h = 10 (Legendre–Ritz solution of Mindlin's equations,
-/// scripts/mindlin_clamped_plate.py, 8 digits; it gives 0.00126532 as h -> 0).
+/// scripts/mindlin_square_plate.py, 8 digits; it gives 0.00126532 as h -> 0).
 constexpr double kirchhoff_coefficient = 0.00126, mindlin_coefficient = 0.00150463;
 
 /// Centre deflection (downwards, at the mid-surface) of the quarter plate [0, a/2]^2 x [0, h]
