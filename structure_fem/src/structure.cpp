@@ -142,6 +142,7 @@ template <class Family> const StepReport& BasicStructure<Family>::advance(double
         total.iterations += r.iterations;
         total.halvings += r.halvings;
         total.roundoff_stops += r.roundoff_stops;
+        total.guess_retries += r.guess_retries;
         total.final_residual = r.final_residual;
         total.history.insert(total.history.end(), r.history.begin(), r.history.end());
       }
@@ -191,7 +192,23 @@ template <class Family> StepReport BasicStructure<Family>::step(double dt) {
         c0 * Eigen::Map<const Eigen::VectorXd>(M_.valuePtr(), nnz) +
         Eigen::Map<const Eigen::VectorXd>(K_.valuePtr(), nnz);
   };
-  if (dofs_->num_free() > 0) newton(u, residual, report);
+  if (dofs_->num_free() > 0) {
+    try {
+      newton(u, residual, report);
+    } catch (const RunError& first) {
+      // Eq. 64's guess carries dt^2 a^n / 2. After a sudden load the consistent mass's a^n is
+      // large and oscillatory in thin elements, and the tangent at that guess can be indefinite
+      // (CHOLMOD refuses it) or Newton can fail from it: Newton once more from u^n + dt v^n.
+      u = s.u + dt * s.v;
+      for (const auto& entry : constrained_) u[entry.first] = prescribed.u[entry.first];
+      try {
+        newton(u, residual, report);
+      } catch (const RunError& second) {
+        throw RunError(std::string(first.what()) + "; from u^n + dt v^n: " + second.what());
+      }
+      report.guess_retries = 1;
+    }
+  }
   Vector a = nm.acceleration(u, s.u, s.v, s.a);
   Vector v = nm.velocity(a, s.v, s.a); // eq. 41
   for (const auto& entry : constrained_) {

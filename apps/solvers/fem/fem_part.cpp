@@ -16,6 +16,7 @@ void FemCounters::add(const fem::StepReport& report, long fallbacks) {
   steps_with_halvings += report.halvings > 0 ? 1 : 0;
   if (report.substeps > 1) ++substepped_steps, substeps += report.substeps;
   roundoff_stops += report.roundoff_stops;
+  guess_retries += report.guess_retries;
   ++steps;
   lu_fallbacks += fallbacks - lu_fallbacks_seen;
   lu_fallbacks_seen = fallbacks;
@@ -27,6 +28,7 @@ void FemCounters::write(StateArchive& archive, const std::string& name) const {
   archive.put(prefix + "halvings", std::vector<std::int64_t>{newton_halvings, steps_with_halvings,
                                                              substepped_steps, substeps});
   archive.put(prefix + "roundoff_stops", std::vector<std::int64_t>{roundoff_stops});
+  archive.put(prefix + "guess_retries", std::vector<std::int64_t>{guess_retries});
   archive.put(prefix + "lu_fallbacks", std::vector<std::int64_t>{lu_fallbacks});
 }
 
@@ -41,6 +43,8 @@ void FemCounters::read(const StateArchive& archive, const std::string& name) {
   }
   if (archive.all_integers().count(prefix + "roundoff_stops")) // absent before the count
     roundoff_stops = archive.integers(prefix + "roundoff_stops", 1)[0];
+  if (archive.all_integers().count(prefix + "guess_retries")) // absent before the retry
+    guess_retries = archive.integers(prefix + "guess_retries", 1)[0];
   if (archive.all_integers().count(prefix + "lu_fallbacks")) // absent before the count
     lu_fallbacks = archive.integers(prefix + "lu_fallbacks", 1)[0];
 }
@@ -58,6 +62,7 @@ void FemCounters::report(JsonObject& run, const std::string& name, std::size_t n
       .add("substepped_steps", static_cast<long long>(substepped_steps))
       .add("substeps", static_cast<long long>(substeps))
       .add("newton_roundoff_stops", static_cast<long long>(roundoff_stops))
+      .add("newton_guess_retries", static_cast<long long>(guess_retries))
       .add("linear_solver_lu_fallbacks", static_cast<long long>(lu_fallbacks));
   run.add("structure_" + name, s);
 }

@@ -18,6 +18,7 @@ struct FemCounters {
   long newton_halvings = 0, steps_with_halvings = 0; ///< Newton safeguard (Structure::newton)
   long substepped_steps = 0, substeps = 0;           ///< retried steps, their sub-steps
   long roundoff_stops = 0;    ///< Newton solves ended at the round-off floor (fem::NewtonOptions)
+  long guess_retries = 0;     ///< Newton solves retried from u^n + dt v^n (fem::StepReport)
   long lu_fallbacks = 0;      ///< factorisations done by LU (fem::LinearSolverKind::ldlt_or_lu)
   long lu_fallbacks_seen = 0; ///< the structure's own count at the last step
 

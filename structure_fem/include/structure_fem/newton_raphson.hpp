@@ -52,6 +52,7 @@ struct StepReport {
   int halvings = 0;       ///< increments halved because the iterate had an inverted element
   int roundoff_stops = 0; ///< Newton solves ended at the round-off floor (NewtonOptions)
   int substeps = 1;       ///< dynamic: sub-steps the step needed (1: none; NewtonOptions)
+  int guess_retries = 0;  ///< dynamic: Newton solves retried from u^n + dt v^n (eq. 64 failed)
   double final_residual = 0.0;
   std::vector<NewtonIterationLog> history;
 };
