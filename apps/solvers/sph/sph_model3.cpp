@@ -58,8 +58,7 @@ std::vector<Vec3> checked_fluid(const Scene& scene,
   std::vector<Vec3> out;
   for (const Vec3& p : fill_regions3(f)) {
     bool solid = false;
-    for (const auto& b : bs)
-      solid = solid || b.signed_distance(b.mesh().X0, p) < 0.5 * f.options.dp;
+    for (const auto& b : bs) solid = solid || b.signed_distance(p) < 0.5 * f.options.dp;
     if (!solid) out.push_back(p);
   }
   if (out.empty())
