@@ -186,6 +186,18 @@ std::vector<Vec3> fill_box_regions(const std::vector<BoxRegion>& regions, double
   return out;
 }
 
+std::pair<Vec3, Vec3> box_domain(const std::optional<BoxRegion>& domain,
+                                 const std::optional<BoxRegion>& tank,
+                                 std::span<const Vec3> tank_points,
+                                 const std::vector<BoxRegion>& regions, double margin) {
+  if (domain) return {domain->min, domain->max};
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  if (tank) lo = tank->min, hi = tank->max;
+  for (const Vec3& p : tank_points) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  for (const BoxRegion& r : regions) lo = lo.cwiseMin(r.min), hi = hi.cwiseMax(r.max);
+  return {lo - Vec3::Constant(margin), hi + Vec3::Constant(margin)};
+}
+
 void check_box_regions(const Scene& scene, Section& s, std::vector<Section>& probes,
                        const std::vector<BoxRegion>& regions, const std::optional<BoxRegion>& tank,
                        const Vec3& domain_min, const Vec3& domain_max) {
