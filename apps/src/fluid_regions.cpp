@@ -170,6 +170,19 @@ BoxRegion read_box_region(Section& s, const std::string& what) {
   return b;
 }
 
+void read_box_area(Section& s, double l0, std::vector<BoxRegion>& regions,
+                   std::optional<BoxRegion>& domain) {
+  for (auto& r : s.list("regions", "boxes filled with particles at spacing l0"))
+    regions.push_back(read_box_region(r, "a box of fluid"));
+  if (regions.empty()) s.fail("regions", "at least one region is required");
+  for (std::size_t i = 0; i < regions.size(); ++i)
+    if (l0 > (regions[i].max - regions[i].min).minCoeff())
+      s.fail("l0", "particle spacing " + significant(l0, 3) + " m is larger than fluid region " +
+                       std::to_string(i));
+  if (auto d = s.block("domain", "particles leaving this box are removed and counted"))
+    domain = read_box_region(*d, "the domain");
+}
+
 bool inside_box(const Vec3& p, const Vec3& lo, const Vec3& hi) {
   return (p - lo).minCoeff() >= 0.0 && (hi - p).minCoeff() >= 0.0;
 }

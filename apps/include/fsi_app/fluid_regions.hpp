@@ -42,6 +42,11 @@ struct BoxRegion {
 /// above min.
 BoxRegion read_box_region(Section& s, const std::string& what);
 
+/// Reads a 3-D particle fluid's `regions` (boxes, at least one, none thinner than the spacing l0)
+/// and its optional `domain` box.
+void read_box_area(Section& s, double l0, std::vector<BoxRegion>& regions,
+                   std::optional<BoxRegion>& domain);
+
 /// Whether p lies in the box [lo, hi], its faces included.
 bool inside_box(const Vec3& p, const Vec3& lo, const Vec3& hi);
 
