@@ -14,19 +14,19 @@ std::unique_ptr<particles::Decomposition<2>> MpiRanks::particle_decomposition() 
   return std::make_unique<parallel::ParticleDecomposition<2>>(comm_);
 }
 
-std::vector<double> MpiRanks::gather(const std::vector<double>& local) const {
+void MpiRanks::gather(const std::vector<double>& local, std::vector<double>& all) const {
   const int count = static_cast<int>(local.size());
-  std::vector<int> counts(static_cast<std::size_t>(size())), offsets(counts.size(), 0);
-  MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm_.comm());
+  counts_.resize(static_cast<std::size_t>(size()));
+  offsets_.assign(counts_.size(), 0);
+  MPI_Gather(&count, 1, MPI_INT, counts_.data(), 1, MPI_INT, 0, comm_.comm());
   std::size_t total = 0;
-  for (std::size_t r = 0; r < counts.size(); ++r) {
-    offsets[r] = static_cast<int>(total);
-    total += static_cast<std::size_t>(counts[r]);
+  for (std::size_t r = 0; r < counts_.size(); ++r) {
+    offsets_[r] = static_cast<int>(total);
+    total += static_cast<std::size_t>(counts_[r]);
   }
-  std::vector<double> all(rank() == 0 ? total : 0);
-  MPI_Gatherv(local.data(), count, MPI_DOUBLE, all.data(), counts.data(), offsets.data(),
+  all.resize(rank() == 0 ? total : 0);
+  MPI_Gatherv(local.data(), count, MPI_DOUBLE, all.data(), counts_.data(), offsets_.data(),
               MPI_DOUBLE, 0, comm_.comm());
-  return all;
 }
 
 bool started_by_mpi_launcher() {

@@ -18,10 +18,11 @@ public:
   bool all(bool v) const override { return comm_.all(v); }
   double max(double v) const override { return comm_.max(v); }
   std::unique_ptr<particles::Decomposition<2>> particle_decomposition() const override;
-  std::vector<double> gather(const std::vector<double>& local) const override;
+  void gather(const std::vector<double>& local, std::vector<double>& all) const override;
 
 private:
   parallel::Communicator comm_;
+  mutable std::vector<int> counts_, offsets_; // gather's, per rank
 };
 
 /// Whether an MPI launcher started this process (OpenMPI's, or a PMI/PMIx one's, environment).

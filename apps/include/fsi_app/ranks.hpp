@@ -22,8 +22,9 @@ public:
   virtual double max(double v) const = 0;
   /// A new exchange hook over these ranks for a 2-D particle fluid.
   virtual std::unique_ptr<particles::Decomposition<2>> particle_decomposition() const = 0;
-  /// Every rank's `local`, concatenated in rank order, on rank 0 (empty on the others).
-  virtual std::vector<double> gather(const std::vector<double>& local) const = 0;
+  /// Every rank's `local`, concatenated in rank order, into `all` on rank 0 (emptied on the
+  /// others); no allocation once `all` has held the largest frame.
+  virtual void gather(const std::vector<double>& local, std::vector<double>& all) const = 0;
 };
 
 /// One process, not decomposed: the serial run.
@@ -37,7 +38,9 @@ public:
   std::unique_ptr<particles::Decomposition<2>> particle_decomposition() const override {
     return std::make_unique<particles::LocalParticles<2>>();
   }
-  std::vector<double> gather(const std::vector<double>& local) const override { return local; }
+  void gather(const std::vector<double>& local, std::vector<double>& all) const override {
+    all.assign(local.begin(), local.end());
+  }
 };
 
 } // namespace fsi::app

@@ -13,34 +13,19 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <span>
+#include <tuple>
 
 namespace fsi::app::emps_plugin {
-
-namespace {
-
-// The box around the tank (box or surface) and the regions.
-std::pair<Vec3, Vec3> bounds(const FluidSpec3& f) {
-  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
-  if (f.tank) lo = f.tank->min, hi = f.tank->max;
-  if (f.tank_surface)
-    for (const Vec3& p : f.tank_surface->points) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
-  for (const Box& r : f.regions) lo = lo.cwiseMin(r.min), hi = hi.cwiseMax(r.max);
-  return {lo, hi};
-}
-
-} // namespace
 
 emps::FluidOptions3 fluid_options3(const Scene& scene) {
   const FluidSpec3& f = scene.fluid->as<FluidSpec3>();
   emps::FluidOptions3 o = f.options;
   o.gravity = scene.gravity3;
-  if (f.domain) {
-    o.domain_min = f.domain->min, o.domain_max = f.domain->max;
-  } else {
-    const auto [lo, hi] = bounds(f);
-    o.domain_min = lo - Vec3::Constant(4.0 * o.r_e()),
-    o.domain_max = hi + Vec3::Constant(4.0 * o.r_e());
-  }
+  std::tie(o.domain_min, o.domain_max) = box_domain(
+      f.domain, f.tank,
+      f.tank_surface ? std::span<const Vec3>(f.tank_surface->points) : std::span<const Vec3>(),
+      f.regions, 4.0 * o.r_e());
   return o;
 }
 
