@@ -6,6 +6,7 @@
 #include "particles/decomposition.hpp"
 
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace fsi::app {
@@ -19,7 +20,14 @@ public:
   virtual bool decomposed() const = 0;
   /// True on every rank iff `v` is true on every rank.
   virtual bool all(bool v) const = 0;
-  virtual double max(double v) const = 0;
+  /// The step's collective point (one reduction): the largest signal any rank received and, if
+  /// some rank failed outside the models' step (`failure` not empty: writing a frame), the lowest
+  /// failing rank's message, naming it, on every rank (empty if none failed).
+  struct Agreed {
+    int signal;
+    std::string failure;
+  };
+  virtual Agreed agree(int signal, const std::string& failure) const = 0;
   /// A new exchange hook over these ranks for a 2-D particle fluid.
   virtual std::unique_ptr<particles::Decomposition<2>> particle_decomposition() const = 0;
   /// Every rank's `local`, concatenated in rank order, into `all` on rank 0 (emptied on the
@@ -34,7 +42,7 @@ public:
   int size() const override { return 1; }
   bool decomposed() const override { return false; }
   bool all(bool v) const override { return v; }
-  double max(double v) const override { return v; }
+  Agreed agree(int signal, const std::string& failure) const override { return {signal, failure}; }
   std::unique_ptr<particles::Decomposition<2>> particle_decomposition() const override {
     return std::make_unique<particles::LocalParticles<2>>();
   }
