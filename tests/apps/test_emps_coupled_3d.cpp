@@ -9,6 +9,7 @@
 #include "fsi_app/coupled_model.hpp"
 #include "fsi_app/scene.hpp"
 #include "fsi_app/solver_plugin.hpp"
+#include "plate_floor_3d.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -40,24 +41,7 @@ fluid:
   tank: {min: [0.0, 0.0, 0.0], max: [0.4, 0.5, 0.4]}
   regions:
     - {min: [0.0, 0.0, 0.0], max: [0.4, 0.3, 0.4]}
-structures:
-  - name: plate
-    type: fem
-    mesh: {kind: box, origin: [0.0, -0.05, 0.0], width: )" +
-         plate_width + R"(, height: 0.05, depth: 0.4,
-           elements_x: 2, elements_y: 1, elements_z: 2}
-    material: {youngs_modulus: 6.75e10, poisson_ratio: 0.34, density: 2700.0}
-    clamped: [left, right, back, front]
-    interface: [top]
-)";
-}
-
-coupling::InterfaceMotion3 at_rest(const InterfaceMesh3& mesh) {
-  coupling::InterfaceMotion3 m;
-  m.x = mesh.X0;
-  m.v.assign(mesh.node_count(), Vec3::Zero());
-  m.a.assign(mesh.node_count(), Vec3::Zero());
-  return m;
+)" + test::plate_floor_3d(plate_width);
 }
 
 const emps::EmpsFluid3& fluid_of(CoupledModel3& model) {
@@ -92,7 +76,7 @@ TEST_CASE("apps: a T10 plate as the 3-D EMPS tank's floor, F's loads minus its t
   // A few steps of the column at rest on the plate: the nodal loads sum to minus the particles'
   // wall forces on the plate's triangles.
   coupling::FluidSolver3& F = model.coupling_solver3();
-  F.set_interface_motion(at_rest(mesh));
+  F.set_interface_motion(test::at_rest(mesh));
   for (int k = 0; k < 5; ++k) F.advance(k * 1e-3, 1e-3);
   Vec3 loads = Vec3::Zero(), forces = Vec3::Zero();
   for (const Vec3& q : F.interface_loads().f) loads += q;
