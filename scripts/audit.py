@@ -327,6 +327,10 @@ for name, old, new, names in [  # the scene file named
      ["fluid.wall_contact", "not available in 3-D yet"]),
 ]:
     scene_case("e3d_" + name, edit(E3, old, new), names)
+# A plate under part of the tank's floor: a tank triangle partly covered is refused (issue 46).
+P3 = open(os.path.join(ROOT, "data/scenes/hydrostatic_plate_3d_emps.yaml")).read()
+scene_case("e3d_partial_cover", edit(P3, "      width: 1.0", "      width: 0.5"),
+           [line_of(P3, "  tank:"), "fluid.tank", "% covered by interface 0"])
 for name, stl, names in [  # the STL file named, `FILE:LINE: what`
     ("stl_flipped_facet", flipped_stl, [os.path.basename(flipped_stl) + ":30:", "flipped"]),
     ("stl_malformed", short_stl, [os.path.basename(short_stl) + ":4:", "vertex"]),

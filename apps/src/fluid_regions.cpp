@@ -170,6 +170,19 @@ BoxRegion read_box_region(Section& s, const std::string& what) {
   return b;
 }
 
+void read_box_area(Section& s, double l0, std::vector<BoxRegion>& regions,
+                   std::optional<BoxRegion>& domain) {
+  for (auto& r : s.list("regions", "boxes filled with particles at spacing l0"))
+    regions.push_back(read_box_region(r, "a box of fluid"));
+  if (regions.empty()) s.fail("regions", "at least one region is required");
+  for (std::size_t i = 0; i < regions.size(); ++i)
+    if (l0 > (regions[i].max - regions[i].min).minCoeff())
+      s.fail("l0", "particle spacing " + significant(l0, 3) + " m is larger than fluid region " +
+                       std::to_string(i));
+  if (auto d = s.block("domain", "particles leaving this box are removed and counted"))
+    domain = read_box_region(*d, "the domain");
+}
+
 bool inside_box(const Vec3& p, const Vec3& lo, const Vec3& hi) {
   return (p - lo).minCoeff() >= 0.0 && (hi - p).minCoeff() >= 0.0;
 }
@@ -184,6 +197,18 @@ std::vector<Vec3> fill_box_regions(const std::vector<BoxRegion>& regions, double
       if (!earlier) out.push_back(p);
     }
   return out;
+}
+
+std::pair<Vec3, Vec3> box_domain(const std::optional<BoxRegion>& domain,
+                                 const std::optional<BoxRegion>& tank,
+                                 std::span<const Vec3> tank_points,
+                                 const std::vector<BoxRegion>& regions, double margin) {
+  if (domain) return {domain->min, domain->max};
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  if (tank) lo = tank->min, hi = tank->max;
+  for (const Vec3& p : tank_points) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  for (const BoxRegion& r : regions) lo = lo.cwiseMin(r.min), hi = hi.cwiseMax(r.max);
+  return {lo - Vec3::Constant(margin), hi + Vec3::Constant(margin)};
 }
 
 void check_box_regions(const Scene& scene, Section& s, std::vector<Section>& probes,

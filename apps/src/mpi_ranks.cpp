@@ -14,19 +14,25 @@ std::unique_ptr<particles::Decomposition<2>> MpiRanks::particle_decomposition() 
   return std::make_unique<parallel::ParticleDecomposition<2>>(comm_);
 }
 
-std::vector<double> MpiRanks::gather(const std::vector<double>& local) const {
+Ranks::Agreed MpiRanks::agree(int signal, const std::string& failure) const {
+  const auto reduced = comm_.max(static_cast<double>(signal), !failure.empty());
+  return {static_cast<int>(reduced.value),
+          reduced.failed ? comm_.first_failure(failure, !failure.empty()) : std::string()};
+}
+
+void MpiRanks::gather(const std::vector<double>& local, std::vector<double>& all) const {
   const int count = static_cast<int>(local.size());
-  std::vector<int> counts(static_cast<std::size_t>(size())), offsets(counts.size(), 0);
-  MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm_.comm());
+  counts_.resize(static_cast<std::size_t>(size()));
+  offsets_.assign(counts_.size(), 0);
+  MPI_Gather(&count, 1, MPI_INT, counts_.data(), 1, MPI_INT, 0, comm_.comm());
   std::size_t total = 0;
-  for (std::size_t r = 0; r < counts.size(); ++r) {
-    offsets[r] = static_cast<int>(total);
-    total += static_cast<std::size_t>(counts[r]);
+  for (std::size_t r = 0; r < counts_.size(); ++r) {
+    offsets_[r] = static_cast<int>(total);
+    total += static_cast<std::size_t>(counts_[r]);
   }
-  std::vector<double> all(rank() == 0 ? total : 0);
-  MPI_Gatherv(local.data(), count, MPI_DOUBLE, all.data(), counts.data(), offsets.data(),
+  all.resize(rank() == 0 ? total : 0);
+  MPI_Gatherv(local.data(), count, MPI_DOUBLE, all.data(), counts_.data(), offsets_.data(),
               MPI_DOUBLE, 0, comm_.comm());
-  return all;
 }
 
 bool started_by_mpi_launcher() {
@@ -43,15 +49,14 @@ int run_cli_ranks(int& argc, char**& argv, const std::vector<std::string>& args,
   int code = 0;
   {
     const MpiRanks ranks;
-    // Every rank reads the same scene and takes the same decisions, so a bad input or a stopped
-    // run ends every rank with the same status: rank 0 prints it.
+    // Every rank reads the same scene and takes the same decisions, and a failure found on some
+    // ranks is agreed at the step's next reduction (particles::Decomposition::fail, Ranks::agree)
+    // with the failing rank's message, so a bad input or a stopped run ends every rank with the
+    // same status and message: rank 0 prints it.
     std::ostringstream quiet_out, quiet_err;
     const bool root = ranks.rank() == 0;
     code = run_cli(args, root ? std::cout : quiet_out, root ? std::cerr : quiet_err,
                    terminal && root, ranks);
-    // A run stopped by what one rank found (a particle behind a wall): that rank names it.
-    if (code == 3 && !root && quiet_err.str().find("(on another process)") == std::string::npos)
-      std::cerr << "rank " << ranks.rank() << ": " << quiet_err.str();
     if (code == 1) { // unexpected, perhaps on this rank only: the others may wait for it
       if (!root) std::cerr << "rank " << ranks.rank() << ": " << quiet_err.str();
       std::cerr.flush();

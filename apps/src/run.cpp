@@ -269,21 +269,33 @@ RunResult run_scene(const Scene& scene, std::vector<std::unique_ptr<Model>>& mod
       c.dt_min = std::min(c.dt_min, dt), c.dt_max = std::max(c.dt_max, dt);
       const bool frame = scene.time.dt ? c.step % fixed_per_frame == 0 || c.step == fixed_total
                                        : c.time >= c.next_frame * (1.0 - 1e-12);
-      if (frame) {
-        recorder->frame(c.time);
-        c.frames = recorder->frames();
-        c.next_frame = std::min(c.next_frame + interval, end);
-        update_last_words();
+      // Decomposed: what fails here on one rank (rank 0 writing the files) is agreed below, so
+      // no rank waits for it in the next step's collectives.
+      std::string failure;
+      try {
+        if (frame) {
+          recorder->frame(c.time);
+          c.frames = recorder->frames();
+          c.next_frame = std::min(c.next_frame + interval, end);
+          update_last_words();
+        }
+        for (auto& m : models)
+          for (const auto& note : m->take_notes()) log << "note: " << note << '\n';
+        progress.update(c.time, c.step);
+        if (options.on_step) options.on_step(c.time, c.step);
+        if (checkpoint_due()) checkpoint();
+      } catch (const std::exception& e) {
+        if (!ranks.decomposed()) throw;
+        failure = e.what();
       }
-      for (auto& m : models)
-        for (const auto& note : m->take_notes()) log << "note: " << note << '\n';
-      progress.update(c.time, c.step);
-      if (options.on_step) options.on_step(c.time, c.step);
-      if (checkpoint_due()) checkpoint();
-      // Decomposed: the ranks stop at the same step (the largest signal any rank received).
-      result.signal = ranks.decomposed()
-                          ? static_cast<int>(ranks.max(static_cast<double>(interrupt.received())))
-                          : interrupt.received();
+      // The step's collective point: the ranks stop at the same step (the largest signal any
+      // rank received, a failure of any rank).
+      const Ranks::Agreed agreed = ranks.agree(interrupt.received(), failure);
+      if (!agreed.failure.empty()) {
+        state_broken = false; // the state is sound; its files are what failed
+        throw RunError(agreed.failure);
+      }
+      result.signal = agreed.signal;
       if (result.signal != 0) {
         if (checkpoint_step != c.step && !ranks.decomposed()) checkpoint();
         status = "interrupted";

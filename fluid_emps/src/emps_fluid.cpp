@@ -141,10 +141,12 @@ void BasicEmpsFluid<D>::refresh_neighbours(bool allow_reorder, long step, double
   const std::size_t n = p.size();
   if (n != owned) grid_.bin(p.position.coords(), n);
   ++builds_;
+  // Decomposed: the rows are truncated, and the step goes on to its next reduction, which stops
+  // every process (particles::Decomposition::fail).
   if (!neighbours_.build(grid_, p.position.coords(), n, reach, capacity_, options_.vector_kernels))
-    throw RunError("fluid: more than " + std::to_string(capacity_) + " neighbours at " +
-                   where(p, neighbours_.overflow(), step, t) +
-                   " (particles clustered: the step is likely unstable)");
+    decomposition_->fail("fluid: more than " + std::to_string(capacity_) + " neighbours at " +
+                         where(p, neighbours_.overflow(), step, t) +
+                         " (particles clustered: the step is likely unstable)");
 }
 
 template <int D> void BasicEmpsFluid<D>::query_walls() {
@@ -179,14 +181,13 @@ template <int D> void BasicEmpsFluid<D>::check_crossed(long step, double t) cons
   const auto* crossed = crossed_and_wall.first;
   const auto* wall = crossed_and_wall.second;
   const std::size_t i = first_index(owned(), [&](std::size_t k) { return (*crossed)[k] != 0; });
-  // Decomposed: every process stops at the same step (collective); the owner names the particle.
-  if (decomposition_->all(i == none)) return;
-  if (i == none)
-    throw RunError("fluid: a particle is behind a wall (on another process), step " +
-                   std::to_string(step) + ", t = " + std::to_string(t) + " s");
-  throw RunError("fluid: " + where(particles_, i, step, t) + " is behind wall " +
-                 (D == 2 ? "segment " : "triangle ") + std::to_string((*wall)[i]) +
-                 " (try a smaller time step or a larger alpha_rep)");
+  if (i != none)
+    decomposition_->fail("fluid: " + where(particles_, i, step, t) + " is behind wall " +
+                         (D == 2 ? "segment " : "triangle ") + std::to_string((*wall)[i]) +
+                         " (try a smaller time step or a larger alpha_rep)");
+  // Decomposed: every process stops here (no wall terms of a crossed particle); the owner's
+  // message, and any earlier fail() of the step, reach every process.
+  decomposition_->agree();
 }
 
 template <int D> void BasicEmpsFluid<D>::advance(double t, double dt) {
@@ -254,8 +255,11 @@ template <int D> void BasicEmpsFluid<D>::check_finite(long step, double t) const
     for (int a = 0; a < D; ++a) s += p.position[a][i] + p.velocity[a][i];
     return !std::isfinite(s);
   });
+  // Decomposed: the next reduction (the neighbour list's validity, the count outside the domain)
+  // stops every process; nothing before it bins or migrates the non-finite positions.
   if (bad != none)
-    throw RunError("fluid: non-finite position, velocity or pressure at " + where(p, bad, step, t));
+    decomposition_->fail("fluid: non-finite position, velocity or pressure at " +
+                         where(p, bad, step, t));
 }
 
 template <int D> void BasicEmpsFluid<D>::remove_outside() {

@@ -2,9 +2,11 @@
 
 #include "fsi/core/closest_on_triangle.hpp"
 #include "fsi/core/error.hpp"
+#include "particles/box_grid.hpp"
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -25,7 +27,65 @@ Frame frame(const InterfaceMesh3& mesh, const std::vector<Vec3>& x, std::size_t 
   return {t1, n.cross(t1), n};
 }
 
+/// What decides a scan over the faces in order for the nearest one, whose ties (faces as near to
+/// within `tie`) depend on the order: a scan over a subset S of the faces, in order, ends as the
+/// scan over all of them when S holds every face within t of q, at least one, and no face lies at
+/// a distance in (t, t + gap], gap > 2 tie. Then the first face within t restarts the scan (it is
+/// nearer by more than a tie than any farther face seen before), and no face farther than t + gap
+/// changes it afterwards: both scans see the same faces from there on. `see` is told every
+/// distance the scan computes.
+struct Reach {
+  double t, gap;
+  bool near = false, band = false;
+  void see(double d) {
+    near = near || d <= t;
+    band = band || (d > t && d <= t + gap);
+  }
+};
+
+/// The nearest of signed_distance's flat triangles to q so far: the scan over the faces in order.
+struct Surface {
+  double best = std::numeric_limits<double>::max();
+  Vec3 foot = Vec3::Zero(), normal = Vec3::Zero();
+  void triangle(const Vec3& q, const Vec3& a, const Vec3& b, const Vec3& c, Reach& reach) {
+    const Vec3 f = triangle_point(closest_on_triangle(q, a, b, c), a, b, c);
+    const Vec3 n = (b - a).cross(c - a).normalized();
+    const double d = (q - f).norm(), tie = 1e-12 * (d + (b - a).norm());
+    reach.see(d);
+    if (d < best - tie)
+      best = d, foot = f, normal = n;
+    else if (d <= best + tie && (f - foot).norm() <= tie) // the same edge or vertex, another face
+      normal += n;
+  }
+  void face(const InterfaceMesh3& mesh, const std::vector<Vec3>& x, std::size_t f, const Vec3& q,
+            Reach& reach) {
+    const auto& k = mesh.faces[f];
+    if (mesh.order == 1) {
+      triangle(q, x[k[0]], x[k[1]], x[k[2]], reach);
+    } else { // the four sub-triangles through the mid-side nodes 3 (0-1), 4 (1-2), 5 (2-0)
+      triangle(q, x[k[0]], x[k[3]], x[k[5]], reach);
+      triangle(q, x[k[3]], x[k[1]], x[k[4]], reach);
+      triangle(q, x[k[5]], x[k[4]], x[k[2]], reach);
+      triangle(q, x[k[3]], x[k[4]], x[k[5]], reach);
+    }
+  }
+  double value(const Vec3& q) const { return (q - foot).dot(normal) >= 0.0 ? best : -best; }
+};
+
 } // namespace
+
+template <class Scan>
+void InterfaceBoundary3::scan_near(const Vec3& q, double floor, Scan&& scan) const {
+  assert(q.allFinite());
+  std::vector<int> faces;
+  for (double r = 1.001 * reach_ + 1e-5 * size_;; r *= 2.0) {
+    grid_.overlapping(q - Vec3::Constant(r), q + Vec3::Constant(r), faces);
+    const double gap = 1e-6 * (r + size_);
+    Reach reach{r - 2.0 * gap, gap};
+    scan(std::span<const int>(faces), reach);
+    if (faces.size() == mesh_.faces.size() || (reach.near ? !reach.band : reach.t >= floor)) return;
+  }
+}
 
 InterfaceBoundary3::InterfaceBoundary3(const InterfaceMesh3& mesh, double dp, int layers,
                                        double spacing)
@@ -36,7 +96,19 @@ InterfaceBoundary3::InterfaceBoundary3(const InterfaceMesh3& mesh, double dp, in
     throw InputError("fluid_sph: interface spacing " + std::to_string(spacing) +
                      " outside (0, dp]");
   const double s = spacing > 0.0 ? spacing : dp, depth = layers * dp, tie = 1e-9 * dp;
-  const std::size_t m = mesh.faces.size();
+  if (!std::all_of(mesh.X0.begin(), mesh.X0.end(), [](const Vec3& x) { return x.allFinite(); }))
+    throw InputError("fluid_sph: an interface node is not finite");
+  // The faces' boxes (every node) at X0 in cells of side depth.
+  std::vector<particles::Box3d> boxes;
+  for (const auto& k : mesh.faces) {
+    particles::Box3d b{mesh.X0[k[0]], mesh.X0[k[0]]};
+    for (std::size_t j = 1; j < (mesh.order == 1 ? 3u : 6u); ++j)
+      b.lo = b.lo.cwiseMin(mesh.X0[k[j]]), b.hi = b.hi.cwiseMax(mesh.X0[k[j]]);
+    size_ = std::max(size_, (b.hi - b.lo).norm());
+    boxes.push_back(b);
+  }
+  reach_ = depth;
+  grid_.build(boxes, depth);
   // Open edges (of one face only) and the vertices on them: a point whose nearest feature is one
   // lies beyond the interface's rim.
   std::map<std::pair<std::size_t, std::size_t>, int> uses;
@@ -70,30 +142,38 @@ InterfaceBoundary3::InterfaceBoundary3(const InterfaceMesh3& mesh, double dp, in
     for (std::size_t j = 0; j < 3; ++j)
       lo = lo.cwiseMin(mesh.X0[k[j]]), hi = hi.cwiseMax(mesh.X0[k[j]]);
   auto keep = [&](const Vec3& q, std::size_t node, double volume) {
-    double best = std::numeric_limits<double>::max();
-    std::array<std::size_t, 3> faces{kNone, kNone, kNone};
+    double best = 0.0;
+    std::array<std::size_t, 3> faces{};
     TrianglePoint nearest{0.0, 0.0, TriangleFeature::face};
-    Vec3 normal = Vec3::Zero(), foot = Vec3::Zero();
-    for (std::size_t f = 0; f < m; ++f) {
-      const auto& k = mesh.faces[f];
-      const Vec3 &a = mesh.X0[k[0]], &b = mesh.X0[k[1]], &c = mesh.X0[k[2]];
-      const TrianglePoint t = closest_on_triangle(q, a, b, c);
-      const Vec3 p = triangle_point(t, a, b, c); // on the corner triangle
-      const double d = (q - p).norm();
-      const Vec3 n = frame(mesh, mesh.X0, f).n;
-      if (d < best - tie) {
-        best = d, nearest = t, foot = p, normal = n, faces = {f, kNone, kNone};
-      } else if (d <= best + tie && (p - foot).norm() <= tie) {
-        normal += n; // an edge or vertex shared with the nearest face: the mean normal
-        // Another normal (a bisector): one of at most two more faces the point's normal averages.
-        const Vec3 n0 = frame(mesh, mesh.X0, faces[0]).n;
-        const bool other = (n - n0).norm() > 1e-9;
-        if (other && faces[1] == kNone)
-          faces[1] = f;
-        else if (other && faces[2] == kNone && (n - frame(mesh, mesh.X0, faces[1]).n).norm() > 1e-9)
-          faces[2] = f;
+    Vec3 normal, foot;
+    // The faces in order as a scan over all would see them (scan_near), the nearest first.
+    scan_near(q, depth, [&](std::span<const int> near, Reach& reach) {
+      best = std::numeric_limits<double>::max(), faces = {kNone, kNone, kNone};
+      nearest = {0.0, 0.0, TriangleFeature::face}, normal = foot = Vec3::Zero();
+      for (const int i : near) {
+        const auto f = static_cast<std::size_t>(i);
+        const auto& k = mesh.faces[f];
+        const Vec3 &a = mesh.X0[k[0]], &b = mesh.X0[k[1]], &c = mesh.X0[k[2]];
+        const TrianglePoint t = closest_on_triangle(q, a, b, c);
+        const Vec3 p = triangle_point(t, a, b, c); // on the corner triangle
+        const double d = (q - p).norm();
+        reach.see(d);
+        const Vec3 n = frame(mesh, mesh.X0, f).n;
+        if (d < best - tie) {
+          best = d, nearest = t, foot = p, normal = n, faces = {f, kNone, kNone};
+        } else if (d <= best + tie && (p - foot).norm() <= tie) {
+          normal += n; // an edge or vertex shared with the nearest face: the mean normal
+          // Another normal (a bisector): one of at most two more faces the point's normal averages.
+          const Vec3 n0 = frame(mesh, mesh.X0, faces[0]).n;
+          const bool other = (n - n0).norm() > 1e-9;
+          if (other && faces[1] == kNone)
+            faces[1] = f;
+          else if (other && faces[2] == kNone &&
+                   (n - frame(mesh, mesh.X0, faces[1]).n).norm() > 1e-9)
+            faces[2] = f;
+        }
       }
-    }
+    });
     if (best >= depth || (q - foot).dot(normal) >= 0.0 || open(faces[0], nearest.feature)) return;
     // Anchored at x(xi, eta) of the face, offset in its frame.
     const Frame fr = frame(mesh, mesh.X0, faces[0]);
@@ -163,28 +243,21 @@ void InterfaceBoundary3::place(const std::vector<Vec3>& x, std::vector<Vec3>& po
 }
 
 double InterfaceBoundary3::signed_distance(const std::vector<Vec3>& x, const Vec3& q) const {
-  double best = std::numeric_limits<double>::max();
-  Vec3 foot = Vec3::Zero(), normal = Vec3::Zero();
-  auto triangle = [&](const Vec3& a, const Vec3& b, const Vec3& c) {
-    const Vec3 f = triangle_point(closest_on_triangle(q, a, b, c), a, b, c);
-    const Vec3 n = (b - a).cross(c - a).normalized();
-    const double d = (q - f).norm(), tie = 1e-12 * (d + (b - a).norm());
-    if (d < best - tie)
-      best = d, foot = f, normal = n;
-    else if (d <= best + tie && (f - foot).norm() <= tie) // the same edge or vertex, another face
-      normal += n;
-  };
-  for (const auto& k : mesh_.faces) {
-    if (mesh_.order == 1) {
-      triangle(x[k[0]], x[k[1]], x[k[2]]);
-    } else { // the four sub-triangles through the mid-side nodes 3 (0-1), 4 (1-2), 5 (2-0)
-      triangle(x[k[0]], x[k[3]], x[k[5]]);
-      triangle(x[k[3]], x[k[1]], x[k[4]]);
-      triangle(x[k[5]], x[k[4]], x[k[2]]);
-      triangle(x[k[3]], x[k[4]], x[k[5]]);
-    }
-  }
-  return (q - foot).dot(normal) >= 0.0 ? best : -best;
+  Surface surface;
+  Reach unused{0.0, 0.0};
+  for (std::size_t f = 0; f < mesh_.faces.size(); ++f) surface.face(mesh_, x, f, q, unused);
+  return surface.value(q);
+}
+
+double InterfaceBoundary3::signed_distance(const Vec3& q) const {
+  Surface surface;
+  scan_near(q, std::numeric_limits<double>::infinity(),
+            [&](std::span<const int> near, Reach& reach) {
+              surface = Surface{};
+              for (const int f : near)
+                surface.face(mesh_, mesh_.X0, static_cast<std::size_t>(f), q, reach);
+            });
+  return surface.value(q);
 }
 
 void InterfaceBoundary3::interpolate(const std::vector<Vec3>& nodal,

@@ -32,19 +32,22 @@ void TriangleLocator::corner_faces(std::span<const double> x, std::span<const do
 void TriangleLocator::corner_face(const Vec3& p, std::span<const Vec3> normals, TriangleHits& face,
                                   std::size_t i) const {
   face.triangle[i] = -1;
-  const Vec3 f = ((p - lo_) / h_).array().floor();
-  if (!((f.array() >= -1.0).all() && f[0] <= n_[0] && f[1] <= n_[1] && f[2] <= n_[2])) return;
+  const Vec3& origin = grid_.origin();
+  const double h = grid_.cell_size();
+  const auto& dims = grid_.dims();
+  const Vec3 f = ((p - origin) / h).array().floor();
+  if (!((f.array() >= -1.0).all() && f[0] <= dims[0] && f[1] <= dims[1] && f[2] <= dims[2])) return;
   const double min_r = on_wall_tolerance * r_e_;
   double best = r_e_;
   int best_id = -1;
   Vec3 best_bary = Vec3::Zero();
   const std::array<int, 3> c{static_cast<int>(f[0]), static_cast<int>(f[1]),
                              static_cast<int>(f[2])};
-  for (int k = std::max(c[2] - 1, 0); k <= std::min(c[2] + 1, n_[2] - 1); ++k)
-    for (int j = std::max(c[1] - 1, 0); j <= std::min(c[1] + 1, n_[1] - 1); ++j)
-      for (int ci = std::max(c[0] - 1, 0); ci <= std::min(c[0] + 1, n_[0] - 1); ++ci) {
-        const std::size_t cell = this->cell(ci, j, k);
-        for (int q = cell_begin_[cell]; q < cell_begin_[cell + 1]; ++q) {
+  for (int k = std::max(c[2] - 1, 0); k <= std::min(c[2] + 1, dims[2] - 1); ++k)
+    for (int j = std::max(c[1] - 1, 0); j <= std::min(c[1] + 1, dims[1] - 1); ++j)
+      for (int ci = std::max(c[0] - 1, 0); ci <= std::min(c[0] + 1, dims[0] - 1); ++ci) {
+        const std::size_t cell = grid_.cell(ci, j, k);
+        for (int q = grid_.begin(cell); q < grid_.begin(cell + 1); ++q) {
           const TriangleGeometry& g = cell_triangle_[static_cast<std::size_t>(q)];
           const Vec3& nt = walls_->face_normal(g.id);
           const double d = (p - g.a).dot(nt);

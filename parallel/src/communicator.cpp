@@ -8,6 +8,14 @@ template <class T> T reduce(MPI_Comm comm, T v, MPI_Datatype type, MPI_Op op) {
   MPI_Allreduce(&v, &out, 1, type, op, comm);
   return out;
 }
+// value op, and the flag as max: {v, failed} (min: {v, -failed}).
+Communicator::Flagged flagged(MPI_Comm comm, double v, bool failed, MPI_Op op) {
+  const double sign = op == MPI_MIN ? -1.0 : 1.0;
+  const double in[2] = {v, failed ? sign : 0.0};
+  double out[2] = {0.0, 0.0};
+  MPI_Allreduce(in, out, 2, MPI_DOUBLE, op, comm);
+  return {out[0], out[1] != 0.0};
+}
 } // namespace
 
 Communicator::Communicator(MPI_Comm comm) : comm_(comm) {
@@ -35,6 +43,26 @@ std::int64_t Communicator::max(std::int64_t v) const {
 }
 bool Communicator::all(bool v) const {
   return reduce(comm_, v ? 1 : 0, MPI_INT, MPI_LAND) != 0;
+}
+
+Communicator::Flagged Communicator::sum(double v, bool failed) const {
+  return flagged(comm_, v, failed, MPI_SUM);
+}
+Communicator::Flagged Communicator::min(double v, bool failed) const {
+  return flagged(comm_, v, failed, MPI_MIN);
+}
+Communicator::Flagged Communicator::max(double v, bool failed) const {
+  return flagged(comm_, v, failed, MPI_MAX);
+}
+
+std::string Communicator::first_failure(const std::string& message, bool failed) const {
+  const int first = reduce(comm_, failed ? rank_ : size_, MPI_INT, MPI_MIN);
+  if (first == size_) return {}; // nobody failed: not called so
+  int length = rank_ == first ? static_cast<int>(message.size()) : 0;
+  MPI_Bcast(&length, 1, MPI_INT, first, comm_);
+  std::string text = rank_ == first ? message : std::string(static_cast<std::size_t>(length), ' ');
+  MPI_Bcast(text.data(), length, MPI_CHAR, first, comm_);
+  return text + " (rank " + std::to_string(first) + " of " + std::to_string(size_) + ")";
 }
 
 } // namespace fsi::parallel

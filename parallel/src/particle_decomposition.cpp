@@ -54,6 +54,17 @@ template <int D> void ParticleDecomposition<D>::drop_ghosts(particles::FieldSet&
   active_ = false;
 }
 
+template <int D> void ParticleDecomposition<D>::fail(const std::string& what) {
+  if (failure_.empty()) failure_ = what.empty() ? std::string("failed") : what;
+}
+
+template <int D> double ParticleDecomposition<D>::agreed(Communicator::Flagged reduced) const {
+  if (!reduced.failed) return reduced.value;
+  const std::string message = comm_.first_failure(failure_, failing());
+  failure_.clear();
+  throw RunError(message);
+}
+
 template class ParticleDecomposition<2>;
 template class ParticleDecomposition<3>;
 

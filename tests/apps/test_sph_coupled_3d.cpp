@@ -5,6 +5,7 @@
 #include "fsi/core/state_archive.hpp"
 #include "fsi_app/coupled_model.hpp"
 #include "fsi_app/scene.hpp"
+#include "plate_floor_3d.hpp"
 #include "sph/sph_model3.hpp"
 
 #include <catch2/catch.hpp>
@@ -32,23 +33,7 @@ fluid:
   tank: {min: [0.0, 0.0, 0.0], max: [0.4, 0.5, 0.4]}
   regions:
     - {min: [0.0, 0.0, 0.0], max: [0.4, 0.3, 0.4]}
-structures:
-  - name: plate
-    type: fem
-    mesh: {kind: box, origin: [0.0, -0.05, 0.0], width: 0.4, height: 0.05, depth: 0.4,
-           elements_x: 2, elements_y: 1, elements_z: 2}
-    material: {youngs_modulus: 6.75e10, poisson_ratio: 0.34, density: 2700.0}
-    clamped: [left, right, back, front]
-    interface: [top]
-)";
-
-coupling::InterfaceMotion3 at_rest(const InterfaceMesh3& mesh) {
-  coupling::InterfaceMotion3 m;
-  m.x = mesh.X0;
-  m.v.assign(mesh.node_count(), Vec3::Zero());
-  m.a.assign(mesh.node_count(), Vec3::Zero());
-  return m;
-}
+)" + test::plate_floor_3d();
 
 const sph::SphFluid3& fluid_of(CoupledModel3& model) {
   return dynamic_cast<sph_plugin::SphModel3&>(model.fluid()).fluid();
@@ -75,7 +60,7 @@ TEST_CASE("apps: a T10 plate as the 3-D SPH tank's floor, F's loads its points' 
   // The still column settles for 40 acoustic steps, then one coupler step of one acoustic step:
   // the nodal loads sum to the points' forces of that step.
   coupling::FluidSolver3& F = model.coupling_solver3();
-  F.set_interface_motion(at_rest(mesh));
+  F.set_interface_motion(test::at_rest(mesh));
   for (int k = 0; k < 40; ++k) F.advance(f.time(), f.next_dt());
   F.advance(f.time(), f.next_dt());
   Vec3 loads = Vec3::Zero(), points = Vec3::Zero();

@@ -215,3 +215,46 @@ TEST_CASE("sph 3-D interface: a still water column on a fixed plate loads it wit
   CHECK(std::abs(load / expected - 1.0) < 0.01);
   CHECK(late < 1e-2 * early);
 }
+
+TEST_CASE("sph 3-D interface: the signed distance through the grid of faces equals the scan over "
+          "all faces bit for bit",
+          "[sph][3d][interface][grid]") {
+  // A bumpy plate of 3,200 order-1 faces (nodes jittered up and down) and the same faces as
+  // order 2 (mid-side nodes lifted): random points above, below, beyond the rim and far off, and
+  // points just off nodes and edge midpoints, where equally near faces tie.
+  const double dp = 0.005, W = 0.2;
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(0.0, 1.0), bump(-0.002, 0.002);
+  InterfaceMesh3 m = plate(W, 40);
+  for (auto& X : m.X0) X.z() += bump(rng);
+  InterfaceMesh3 m2 = m; // order 2: the mid-side nodes appended
+  m2.order = 2;
+  for (auto& k : m2.faces)
+    for (std::size_t j = 0; j < 3; ++j) {
+      m2.X0.push_back(0.5 * (m2.X0[k[j]] + m2.X0[k[(j + 1) % 3]]) + Vec3(0.0, 0.0, bump(rng)));
+      k[3 + j] = m2.X0.size() - 1;
+    }
+  for (const InterfaceMesh3* mesh : {&m, &m2}) {
+    const sph::InterfaceBoundary3 b(*mesh, dp, 4);
+    std::vector<Vec3> q;
+    for (int s = 0; s < 2000; ++s) {
+      const double depth = s < 1000 ? 0.03 : 1.0; // near the plate, then far off
+      q.emplace_back(1.4 * W * u(rng) - 0.2 * W, 1.4 * W * u(rng) - 0.2 * W,
+                     depth * (2.0 * u(rng) - 1.0));
+    }
+    for (std::size_t k = 0; k < mesh->faces.size(); k += 7) {
+      const auto& f = mesh->faces[k];
+      q.push_back(m.X0[f[0]] + Vec3(0.0, 0.0, 1e-3));
+      q.push_back(0.5 * (m.X0[f[0]] + m.X0[f[1]]) - Vec3(0.0, 0.0, 2e-3));
+    }
+    std::size_t differ = 0, inside = 0;
+    for (const Vec3& p : q) {
+      const double brute = b.signed_distance(mesh->X0, p);
+      differ += b.signed_distance(p) == brute ? 0 : 1;
+      inside += brute < 0.0 ? 1 : 0;
+    }
+    INFO(q.size() << " points, " << inside << " behind the plate");
+    CHECK(differ == 0);
+    CHECK(inside > q.size() / 4);
+  }
+}

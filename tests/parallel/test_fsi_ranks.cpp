@@ -1,7 +1,8 @@
 // `mpirun -np N fsi run` (issue 47, third slice): the small dam break of data/dam_break_ranks.yaml
 // on 1, 2 and 4 ranks against one process, through the files a user gets (probes.csv, fields.h5,
-// run.json), and bad input under mpirun: exit 2, the message printed once. A plain program (not
-// under mpiexec) that starts mpirun itself.
+// run.json), bad input under mpirun: exit 2, the message printed once, and a run that fails on
+// some ranks only: exit 3 on every rank, the failing rank's message once, the files kept. A plain
+// program (not under mpiexec) that starts mpirun itself.
 #include <catch2/catch.hpp>
 #include <hdf5.h>
 
@@ -25,18 +26,24 @@ struct Outcome {
   std::string output; // stdout and stderr
 };
 
-/// Runs `fsi ARGS` under mpirun on `np` ranks (np = 0: without mpirun).
-Outcome fsi(int np, const std::string& args) {
+std::string text_of(const fs::path& file) {
+  std::ifstream in(file);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+/// Runs `fsi ARGS` under mpirun on `np` ranks (np = 0: without mpirun); with `limit` seconds,
+/// killed after them (status 124, a hang).
+Outcome fsi(int np, const std::string& args, int limit = 0) {
   const fs::path log = fs::temp_directory_path() / "fsi_ranks_log.txt";
   std::string command = std::string(FSI_EXE) + " " + args;
   if (np > 0)
     command = std::string(FSI_MPIEXEC) + " --oversubscribe --allow-run-as-root -np " +
               std::to_string(np) + " " + command;
+  if (limit > 0) command = "timeout -k 10 " + std::to_string(limit) + " " + command;
   const int raw = std::system((command + " > " + log.string() + " 2>&1").c_str());
-  std::ifstream in(log);
-  std::stringstream text;
-  text << in.rdbuf();
-  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, text.str()};
+  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, text_of(log)};
 }
 
 /// Runs the scene on `np` ranks (0: without mpirun) into a fresh folder.
@@ -142,11 +149,9 @@ TEST_CASE("mpirun -np N fsi run gives the one-process files", "[mpi]") {
     std::printf("fsi run np=%d: probes max relative difference %.2e against one process; "
                 "fields against np=1: |dx| %.2e m, |dv| %.2e m/s, |dp| %.2e Pa (p max %.0f Pa)\n",
                 np, worst, dx, dv, dp, p_max);
-    std::ifstream json(out / "run.json");
-    std::stringstream text;
-    text << json.rdbuf();
-    CHECK(occurrences(text.str(), "\"processes\": " + std::to_string(np)) == 1);
-    CHECK(occurrences(text.str(), "\"status\": \"completed\"") == 1);
+    const std::string json = text_of(out / "run.json");
+    CHECK(occurrences(json, "\"processes\": " + std::to_string(np)) == 1);
+    CHECK(occurrences(json, "\"status\": \"completed\"") == 1);
     CHECK(p_max > 100.0);
     // probes.csv holds 10 significant digits: a round-off difference of a probe may flip its
     // last digit, 1e-9 of the value at most (measured: no digit differs at np = 1, 2, 4).
@@ -175,4 +180,38 @@ TEST_CASE("bad input under mpirun: exit 2, the message once", "[mpi]") {
   CHECK(coupled.status == 2);
   CHECK(occurrences(coupled.output, "not yet supported under mpirun (2 processes") == 1);
   CHECK(!fs::exists(out / "fields.h5")); // refused before any computation
+}
+
+TEST_CASE("a run failing on some ranks stops every rank as one process does", "[mpi]") {
+  // data/one_rank_failure.yaml: a column's particles thrown behind the floor at step 2 on the
+  // ranks that hold it; the other column's ranks find nothing (the scene's comment).
+  const std::string failing = std::string(FSI_TEST_DATA) + "/one_rank_failure.yaml";
+  const std::string what = "is behind wall segment";
+  for (const int np : {0, 2, 4}) {
+    const fs::path out = fs::temp_directory_path() / ("fsi_rank_failure_np" + std::to_string(np));
+    fs::remove_all(out);
+    const Outcome o = fsi(np, "run " + failing + " --out " + out.string() + " --threads 1", 240);
+    INFO("np = " << np << ":\n" << o.output);
+    CHECK(o.status == 3); // not 124 (a hang killed), not an abort's
+    CHECK(occurrences(o.output, what) == 1);
+    CHECK(occurrences(o.output, "step 2, t = 0.008 s") == 1);
+    CHECK(occurrences(o.output, "MPI_ABORT") == 0);
+    // The message says where: the failing rank (under mpirun), never one that found nothing.
+    if (np > 0) {
+      CHECK(occurrences(o.output, " of " + std::to_string(np) + ")") == 1);
+      CHECK(occurrences(o.output, "(on another process)") == 0);
+    }
+    if (np == 2) // the failing column's rank, not rank 0 that writes the files
+      CHECK(occurrences(o.output, "(rank 1 of 2)") == 1);
+    const std::string json = text_of(out / "run.json");
+    INFO(json);
+    CHECK(occurrences(json, "\"status\": \"failed\"") == 1);
+    CHECK(occurrences(json, what) == 1);
+    // probes.csv: the header, t = 0, the frame after step 1 and the failed step's last state.
+    const auto rows = probes(out);
+    REQUIRE(rows.size() == 3);
+    CHECK(rows[1][0] == Approx(4e-3));
+    CHECK(rows[2][0] == Approx(8e-3));
+    CHECK(frames(out) == 3);
+  }
 }

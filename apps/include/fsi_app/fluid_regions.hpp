@@ -4,6 +4,7 @@
 #include "fsi_app/solver_plugin.hpp"
 
 #include <optional>
+#include <span>
 
 namespace fsi::app {
 
@@ -41,12 +42,24 @@ struct BoxRegion {
 /// above min.
 BoxRegion read_box_region(Section& s, const std::string& what);
 
+/// Reads a 3-D particle fluid's `regions` (boxes, at least one, none thinner than the spacing l0)
+/// and its optional `domain` box.
+void read_box_area(Section& s, double l0, std::vector<BoxRegion>& regions,
+                   std::optional<BoxRegion>& domain);
+
 /// Whether p lies in the box [lo, hi], its faces included.
 bool inside_box(const Vec3& p, const Vec3& lo, const Vec3& hi);
 
 /// Each box region's cell-centred lattice at spacing l0 (particles::lattice_box, l0/2 from its
 /// faces), a point inside an earlier region left out.
 std::vector<Vec3> fill_box_regions(const std::vector<BoxRegion>& regions, double l0);
+
+/// A 3-D particle fluid's domain: `domain` as given, else the box around the tank, `tank_points`
+/// (an STL tank's) and the regions, grown by margin on every side.
+std::pair<Vec3, Vec3> box_domain(const std::optional<BoxRegion>& domain,
+                                 const std::optional<BoxRegion>& tank,
+                                 std::span<const Vec3> tank_points,
+                                 const std::vector<BoxRegion>& regions, double margin);
 
 /// The box regions lie in the domain and in the tank (when given), and every fluid probe's point
 /// (a probe without a structure) in the domain: s.fail names fluid.domain or fluid.regions, the

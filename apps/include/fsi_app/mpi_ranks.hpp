@@ -16,19 +16,21 @@ public:
   int size() const override { return comm_.size(); }
   bool decomposed() const override { return true; }
   bool all(bool v) const override { return comm_.all(v); }
-  double max(double v) const override { return comm_.max(v); }
+  Agreed agree(int signal, const std::string& failure) const override;
   std::unique_ptr<particles::Decomposition<2>> particle_decomposition() const override;
-  std::vector<double> gather(const std::vector<double>& local) const override;
+  void gather(const std::vector<double>& local, std::vector<double>& all) const override;
 
 private:
   parallel::Communicator comm_;
+  mutable std::vector<int> counts_, offsets_; // gather's, per rank
 };
 
 /// Whether an MPI launcher started this process (OpenMPI's, or a PMI/PMIx one's, environment).
 bool started_by_mpi_launcher();
 
-/// `fsi ARGS` on the ranks of MPI_COMM_WORLD: MPI_Init, the command, MPI_Finalize. Rank 0 prints;
-/// an internal error (exit 1) on any rank prints there and ends every rank (MPI_Abort).
+/// `fsi ARGS` on the ranks of MPI_COMM_WORLD: MPI_Init, the command, MPI_Finalize. Rank 0 prints
+/// (a stopped run's message names the rank that stopped it); an internal error (exit 1) on any
+/// rank prints there and ends every rank (MPI_Abort).
 int run_cli_ranks(int& argc, char**& argv, const std::vector<std::string>& args, bool terminal);
 
 } // namespace fsi::app

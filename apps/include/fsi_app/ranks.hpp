@@ -6,6 +6,7 @@
 #include "particles/decomposition.hpp"
 
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace fsi::app {
@@ -19,11 +20,19 @@ public:
   virtual bool decomposed() const = 0;
   /// True on every rank iff `v` is true on every rank.
   virtual bool all(bool v) const = 0;
-  virtual double max(double v) const = 0;
+  /// The step's collective point (one reduction): the largest signal any rank received and, if
+  /// some rank failed outside the models' step (`failure` not empty: writing a frame), the lowest
+  /// failing rank's message, naming it, on every rank (empty if none failed).
+  struct Agreed {
+    int signal;
+    std::string failure;
+  };
+  virtual Agreed agree(int signal, const std::string& failure) const = 0;
   /// A new exchange hook over these ranks for a 2-D particle fluid.
   virtual std::unique_ptr<particles::Decomposition<2>> particle_decomposition() const = 0;
-  /// Every rank's `local`, concatenated in rank order, on rank 0 (empty on the others).
-  virtual std::vector<double> gather(const std::vector<double>& local) const = 0;
+  /// Every rank's `local`, concatenated in rank order, into `all` on rank 0 (emptied on the
+  /// others); no allocation once `all` has held the largest frame.
+  virtual void gather(const std::vector<double>& local, std::vector<double>& all) const = 0;
 };
 
 /// One process, not decomposed: the serial run.
@@ -33,11 +42,13 @@ public:
   int size() const override { return 1; }
   bool decomposed() const override { return false; }
   bool all(bool v) const override { return v; }
-  double max(double v) const override { return v; }
+  Agreed agree(int signal, const std::string& failure) const override { return {signal, failure}; }
   std::unique_ptr<particles::Decomposition<2>> particle_decomposition() const override {
     return std::make_unique<particles::LocalParticles<2>>();
   }
-  std::vector<double> gather(const std::vector<double>& local) const override { return local; }
+  void gather(const std::vector<double>& local, std::vector<double>& all) const override {
+    all.assign(local.begin(), local.end());
+  }
 };
 
 } // namespace fsi::app

@@ -74,9 +74,11 @@ void EmpsModel::gather_frame() {
     row[0] = p.id[i], row[1] = p.x[i], row[2] = p.y[i], row[3] = p.vx[i], row[4] = p.vy[i];
     row[5] = p.p[i], row[6] = p.pnd[i], row[7] = p.surface[i];
   }
-  const std::vector<double> all = ranks_->gather(packed_);
+  ranks_->gather(packed_, all_);
+  const auto& all = all_;
   const std::size_t n = all.size() / k;
-  std::vector<std::size_t> order(n);
+  auto& order = order_;
+  order.resize(n);
   for (std::size_t j = 0; j < n; ++j) order[j] = j;
   std::sort(order.begin(), order.end(),
             [&](std::size_t a, std::size_t b) { return all[k * a] < all[k * b]; });

@@ -78,6 +78,8 @@ private:
   std::vector<std::string> wall_names_; ///< by wall group: the scene's walls, then the interfaces
   mutable std::vector<double> xy_, v_, flag_; // output buffers
   std::vector<double> packed_;                // gather_frame: id, x, y, vx, vy, p, pnd, surface
+  std::vector<double> all_;                   // every rank's packed_ (on rank 0)
+  std::vector<std::size_t> order_;            // all_'s rows in id order
   struct {
     std::vector<double> x, y, vx, vy, p, pnd;
     std::vector<std::uint8_t> surface;

@@ -1,6 +1,7 @@
 #include "emps/emps_model3.hpp"
 
 #include "emps/emps_report.hpp"
+#include "emps/tank_cover.hpp"
 
 #include "fluid_sph/sph_fluid.hpp"
 #include "fsi/core/error.hpp"
@@ -13,20 +14,16 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <span>
+#include <sstream>
+#include <tuple>
 
 namespace fsi::app::emps_plugin {
 
 namespace {
 
-// The box around the tank (box or surface) and the regions.
-std::pair<Vec3, Vec3> bounds(const FluidSpec3& f) {
-  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
-  if (f.tank) lo = f.tank->min, hi = f.tank->max;
-  if (f.tank_surface)
-    for (const Vec3& p : f.tank_surface->points) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
-  for (const Box& r : f.regions) lo = lo.cwiseMin(r.min), hi = hi.cwiseMax(r.max);
-  return {lo, hi};
-}
+// Interface corners within this many l0 of a tank triangle's plane lie in it (tank_cover.hpp).
+constexpr double kCoplanar = 1e-6;
 
 } // namespace
 
@@ -34,13 +31,10 @@ emps::FluidOptions3 fluid_options3(const Scene& scene) {
   const FluidSpec3& f = scene.fluid->as<FluidSpec3>();
   emps::FluidOptions3 o = f.options;
   o.gravity = scene.gravity3;
-  if (f.domain) {
-    o.domain_min = f.domain->min, o.domain_max = f.domain->max;
-  } else {
-    const auto [lo, hi] = bounds(f);
-    o.domain_min = lo - Vec3::Constant(4.0 * o.r_e()),
-    o.domain_max = hi + Vec3::Constant(4.0 * o.r_e());
-  }
+  std::tie(o.domain_min, o.domain_max) = box_domain(
+      f.domain, f.tank,
+      f.tank_surface ? std::span<const Vec3>(f.tank_surface->points) : std::span<const Vec3>(),
+      f.regions, 4.0 * o.r_e());
   return o;
 }
 
@@ -48,10 +42,29 @@ std::vector<Vec3> fill_regions3(const FluidSpec3& f) {
   return fill_box_regions(f.regions, f.options.l0);
 }
 
-std::unique_ptr<erp::TriangleWallSet> tank_walls(const FluidSpec3& f) {
+std::unique_ptr<erp::TriangleWallSet> fluid_walls(const Scene& scene,
+                                                  const std::vector<InterfaceMesh3>& interfaces,
+                                                  std::vector<erp::InterfaceTriangles>& triangles) {
+  const FluidSpec3& f = scene.fluid->as<FluidSpec3>();
+  erp::TriangleWallSet tank;
+  if (f.tank) erp::add_box_tank(tank, f.tank->min, f.tank->max, false, 0);
+  if (f.tank_surface) tank.add_triangles(f.tank_surface->points, f.tank_surface->triangles, 0);
   auto walls = std::make_unique<erp::TriangleWallSet>();
-  if (f.tank) erp::add_box_tank(*walls, f.tank->min, f.tank->max, false, 0);
-  if (f.tank_surface) walls->add_triangles(f.tank_surface->points, f.tank_surface->triangles, 0);
+  try {
+    const std::vector<std::array<int, 3>> kept = uncovered_triangles(
+        tank.nodes().x, tank.triangles().node, interfaces, kCoplanar * f.options.l0);
+    if (!kept.empty()) walls->add_triangles(tank.nodes().x, kept, 0);
+  } catch (const InputError& e) {
+    fail_at(scene, f.tank_line, f.tank_surface ? "fluid.tank_file" : "fluid.tank", e.what());
+  }
+  triangles.clear();
+  triangles.reserve(interfaces.size()); // the adapter keeps a reference to the list
+  try {
+    for (const auto& mesh : interfaces)
+      triangles.emplace_back(*walls, mesh, static_cast<int>(1 + triangles.size()));
+  } catch (const InputError& e) {
+    fail_at(scene, scene.fluid->line, "fluid", e.what());
+  }
   return walls;
 }
 
@@ -64,15 +77,17 @@ void check3(const Scene& scene, Section& s, std::vector<Section>& probes) {
 // Bytes per fluid particle in 3-D, as emps_plugin.cpp counts 2-D: the registered particle
 // arrays, the lattice positions, neighbour rows of `capacity` (EmpsFluid3's) with the build
 // positions, the cell grid, three faces of erp::TriangleHits (137 B) and of TriangleForces
-// (52 B), the scratch and keep arrays and the output buffers; no saved state (not coupled).
+// (52 B), the scratch and keep arrays and the output buffers; coupled, the particle arrays once
+// more (the state TriangleAdapter saves for iterative coupling).
 Footprint footprint3(const Scene& scene) {
   const FluidSpec3& f = scene.fluid->as<FluidSpec3>();
   const emps::FluidOptions3 o = fluid_options3(scene);
   const double reach = (1.0 + o.skin) * o.re_over_l0;
   const double capacity = std::ceil(2.0 * 4.0 / 3.0 * std::numbers::pi * std::pow(reach, 3)) + 16;
   const auto particle = static_cast<double>(emps::Particles3().fields.bytes_per_particle());
-  const double per_particle =
-      particle + 24 + (capacity * 4 + 4 + 24) + 8 + 3 * 137 + 3 * 52 + 24 + 1 + (24 + 24 + 8);
+  const double saved_state = scene.structures.empty() ? 0.0 : particle;
+  const double per_particle = particle + saved_state + 24 + (capacity * 4 + 4 + 24) + 8 + 3 * 137 +
+                              3 * 52 + 24 + 1 + (24 + 24 + 8);
   Footprint e;
   for (const Box& r : f.regions) e.count += (r.max - r.min).prod() / std::pow(o.l0, 3);
   double cells = 1.0;
@@ -86,45 +101,53 @@ Footprint footprint3(const Scene& scene) {
   return e;
 }
 
-void validate3(const Scene& scene) {
+void validate3(const Scene& scene, const std::vector<InterfaceMesh3>& interfaces) {
   const FluidSpec3& f = scene.fluid->as<FluidSpec3>();
   const std::vector<Vec3> x = fill_regions3(f);
   if (x.empty()) fail_at(scene, f.regions.front().line, "fluid.regions", "no particle fits");
-  const std::unique_ptr<erp::TriangleWallSet> walls = tank_walls(f);
+  std::vector<erp::InterfaceTriangles> triangles;
+  const std::unique_ptr<erp::TriangleWallSet> walls = fluid_walls(scene, interfaces, triangles);
   if (walls->triangles().size() == 0) return;
   const erp::TriangleLocator locator(*walls, f.options.r_e());
   erp::TriangleHits hits;
   locator.query(x, hits);
   for (std::size_t i = 0; i < x.size(); ++i)
     if (hits.crossed[i]) {
-      const std::string at = "(" + significant(x[i].x(), 6) + ", " + significant(x[i].y(), 6) +
-                             ", " + significant(x[i].z(), 6) + ") m";
+      std::ostringstream at;
+      at << '(' << significant(x[i].x(), 6) << ", " << significant(x[i].y(), 6) << ", "
+         << significant(x[i].z(), 6) << ") m";
+      const int group = walls->triangles().group[static_cast<std::size_t>(hits.triangle[i])];
+      if (group > 0)
+        fail_at(scene, f.regions.front().line, "fluid.regions",
+                "the fluid at " + at.str() + " lies behind the interface of structure '" +
+                    scene.structures[static_cast<std::size_t>(group - 1)].name + "'");
       if (f.tank_surface)
         fail_at(scene, f.tank_line, "fluid.tank_file",
-                f.tank_path + ": the fluid at " + at + " lies behind facet " +
+                f.tank_path + ": the fluid at " + at.str() + " lies behind facet " +
                     std::to_string(hits.triangle[i] + 1) +
                     " (each facet's normal must point into the fluid)");
       fail_at(scene, f.regions.front().line, "fluid.regions",
-              "the fluid at " + at + " lies behind a wall of the tank");
+              "the fluid at " + at.str() + " lies behind a wall of the tank");
     }
 }
 
-EmpsModel3::EmpsModel3(const Scene& scene) {
+EmpsModel3::EmpsModel3(const Scene& scene, const std::vector<InterfaceMesh3>& interfaces) {
   const FluidSpec3& f = scene.fluid->as<FluidSpec3>();
-  validate3(scene);
+  validate3(scene, interfaces);
   const std::vector<Vec3> positions = fill_regions3(f);
   initial_count_ = positions.size();
-  walls_ = tank_walls(f);
+  walls_ = fluid_walls(scene, interfaces, interfaces_);
   locator_ = std::make_unique<erp::TriangleLocator>(*walls_, f.options.r_e());
   try {
     fluid_ = std::make_unique<emps::EmpsFluid3>(fluid_options3(scene), positions, *walls_);
   } catch (const InputError& e) {
     fail_at(scene, scene.fluid->line, "fluid", e.what());
   }
+  adapter_ = std::make_unique<TriangleAdapter>(*fluid_, *walls_, interfaces_);
 }
 
 coupling::FluidSolver& EmpsModel3::coupling_solver() {
-  throw RunError("fluid_emps: a 3-D fluid is not coupled to structures (not yet available)");
+  throw RunError("fluid_emps: a 3-D fluid couples through coupling_solver3()");
 }
 
 void EmpsModel3::advance(double time, double dt) {
@@ -186,6 +209,7 @@ std::optional<double> EmpsModel3::probe(const ProbeSpec& probe) const {
   }
   if (probe.quantity == "particles") return static_cast<double>(n);
   if (probe.quantity == "wall_gap") {
+    locator_->update(); // the interfaces' triangles move
     locator_->query(p.position[0], p.position[1], p.position[2], hits_);
     double gap = std::numeric_limits<double>::infinity();
     for (std::size_t i = 0; i < n; ++i)
@@ -217,11 +241,11 @@ void EmpsModel3::report(JsonObject& run) const {
 }
 
 void EmpsModel3::write_state(StateArchive& archive) const {
-  fluid_->write_state(archive, "fluid/");
+  adapter_->write_state(archive);
 }
 
 void EmpsModel3::read_state(const StateArchive& archive) {
-  fluid_->read_state(archive, "fluid/");
+  adapter_->read_state(archive);
 }
 
 } // namespace fsi::app::emps_plugin

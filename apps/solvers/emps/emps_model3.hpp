@@ -1,8 +1,12 @@
 #pragma once
 // The EMPS fluid of a 3-D scene (dimension: 3, fluid.type: emps): boxes of water in a tank of
-// static ERP triangles (fluid.tank, a closed box, or fluid.tank_file, an STL surface), not
-// coupled to structures (the scene reader refuses structures beside a 3-D fluid).
+// static ERP triangles (fluid.tank, a closed box, or fluid.tank_file, an STL surface) and,
+// coupled, the flat triangles of each structure's interface (erp::InterfaceTriangles, group
+// 1 + j), moved by the coupler through TriangleAdapter. A tank triangle the interfaces' faces
+// cover wholly is left out (a plate forming the tank's floor: the fluid sees the plate there);
+// a partial cover is refused (tank_cover.hpp).
 #include "emps/emps_spec.hpp"
+#include "emps/triangle_adapter.hpp"
 #include "fluid_emps/emps_fluid.hpp"
 #include "fsi_app/solver_plugin.hpp"
 #include "geometry_erp/triangle_locator.hpp"
@@ -19,15 +23,17 @@ emps::FluidOptions3 fluid_options3(const Scene& scene);
 /// The plug-in's functions for a 3-D scene (emps_plugin.cpp picks them by scene.dimension).
 void check3(const Scene& scene, Section& s, std::vector<Section>& probes);
 Footprint footprint3(const Scene& scene);
-/// The regions hold particles, each on the fluid side of its nearest tank triangle (an STL
-/// surface facing away from the fluid is refused naming its file); InputError naming the block.
-void validate3(const Scene& scene);
+/// The regions hold particles, each on the fluid side of its nearest wall triangle (an STL
+/// surface facing away from the fluid is refused naming its file), the interfaces' meshes make
+/// triangles and cover tank triangles wholly or not at all; InputError naming the key.
+void validate3(const Scene& scene, const std::vector<InterfaceMesh3>& interfaces = {});
 
 class EmpsModel3 final : public FluidPart {
 public:
-  /// Builds the tank's triangles and fills the regions (each from its lowest corner, l0/2 from
+  /// Builds the tank's triangles (less those the interfaces cover), the interfaces' triangles at
+  /// their reference positions, and fills the regions (each from its lowest corner, l0/2 from
   /// its faces; a point inside an earlier region is left out).
-  explicit EmpsModel3(const Scene& scene);
+  explicit EmpsModel3(const Scene& scene, const std::vector<InterfaceMesh3>& interfaces = {});
   void advance(double time, double dt) override;
   std::optional<double> stable_dt(double courant) const override;
   /// particles: the count; wall_gap: the smallest distance of a particle centre to its nearest
@@ -39,15 +45,21 @@ public:
   void report(JsonObject& run) const override;
   void write_state(StateArchive& archive) const override;
   void read_state(const StateArchive& archive) override;
-  /// Throws RunError: a 3-D fluid is not coupled.
+  /// Throws RunError: a 3-D fluid couples through coupling_solver3().
   coupling::FluidSolver& coupling_solver() override;
+  /// F against the interfaces the model was built with (TriangleAdapter).
+  coupling::FluidSolver3& coupling_solver3() override { return *adapter_; }
 
   const emps::EmpsFluid3& fluid() const { return *fluid_; }
   const erp::TriangleWallSet& walls() const { return *walls_; }
+  /// The triangles of each coupled interface, in order; the tank's come first.
+  const std::vector<erp::InterfaceTriangles>& interface_triangles() const { return interfaces_; }
 
 private:
   std::unique_ptr<erp::TriangleWallSet> walls_; // before the fluid that keeps a reference
+  std::vector<erp::InterfaceTriangles> interfaces_;
   std::unique_ptr<emps::EmpsFluid3> fluid_;
+  std::unique_ptr<TriangleAdapter> adapter_;
   std::unique_ptr<erp::TriangleLocator> locator_; ///< the wall_gap probe's nearest triangles
   mutable erp::TriangleHits hits_;
   std::size_t initial_count_ = 0;
@@ -56,7 +68,11 @@ private:
 
 /// The fluid particles of a 3-D scene's regions (EmpsModel3's fill).
 std::vector<Vec3> fill_regions3(const FluidSpec3& f);
-/// The tank's triangles: the box's 12, or the STL surface's.
-std::unique_ptr<erp::TriangleWallSet> tank_walls(const FluidSpec3& f);
+/// The fluid's walls: the tank's triangles (the box's 12, or the STL surface's) less those the
+/// interfaces cover wholly (group 0), then each interface's triangles (group 1 + j) into
+/// `triangles`; InputError naming the scene's key (a partial cover, a bad interface mesh).
+std::unique_ptr<erp::TriangleWallSet> fluid_walls(const Scene& scene,
+                                                  const std::vector<InterfaceMesh3>& interfaces,
+                                                  std::vector<erp::InterfaceTriangles>& triangles);
 
 } // namespace fsi::app::emps_plugin

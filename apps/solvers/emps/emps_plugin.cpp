@@ -1,5 +1,6 @@
 // The EMPS fluid as a plug-in: its scene keys (emps_scene.cpp, 3-D: emps_scene3.cpp), its model
-// (3-D: EmpsModel3, picked by scene.dimension), its fields, probes and memory footprint.
+// (3-D: EmpsModel3, picked by scene.dimension; coupled in 3-D through build3), its fields,
+// probes and memory footprint.
 #include "emps/emps_plugin.hpp"
 
 #include "emps/emps_model.hpp"
@@ -78,7 +79,14 @@ FluidPlugin plugin() {
           footprint,
           {"velocity", "pressure", "pnd", "free_surface"},
           {"surge_front", "pressure", "mean_pressure", "mean_speed", "kinetic_energy", "particles",
-           "wall_gap"}};
+           "wall_gap"},
+          [](const Scene& scene,
+             const std::vector<InterfaceMesh3>& interfaces) -> std::unique_ptr<FluidPart> {
+            return std::make_unique<EmpsModel3>(scene, interfaces);
+          },
+          [](const Scene& scene, const std::vector<InterfaceMesh3>& interfaces) {
+            validate3(scene, interfaces);
+          }};
 }
 
 } // namespace fsi::app::emps_plugin

@@ -3,8 +3,6 @@
 // refused by name.
 #include "emps/emps_spec.hpp"
 
-#include "fsi/core/format.hpp"
-
 namespace fsi::app::emps_plugin {
 
 namespace {
@@ -49,15 +47,7 @@ std::shared_ptr<const SolverSpec> read_fluid3(Section& s) {
   emps::visit_options(f.options, reader);
   refuse_2d_only(s, f.options);
   read_tank(s, f);
-  for (auto& r : s.list("regions", "boxes filled with particles at spacing l0"))
-    f.regions.push_back(read_box_region(r, "a box of fluid"));
-  if (f.regions.empty()) s.fail("regions", "at least one region is required");
-  for (std::size_t i = 0; i < f.regions.size(); ++i)
-    if (f.options.l0 > (f.regions[i].max - f.regions[i].min).minCoeff())
-      s.fail("l0", "particle spacing " + significant(f.options.l0, 3) +
-                       " m is larger than fluid region " + std::to_string(i));
-  if (auto d = s.block("domain", "particles leaving this box are removed and counted"))
-    f.domain = read_box_region(*d, "the domain");
+  read_box_area(s, f.options.l0, f.regions, f.domain);
   return spec;
 }
 

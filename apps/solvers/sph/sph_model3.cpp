@@ -9,20 +9,12 @@
 
 #include <cmath>
 #include <cstdint>
-#include <limits>
+#include <tuple>
 #include <unordered_set>
 
 namespace fsi::app::sph_plugin {
 
 namespace {
-
-// The box around the tank and the regions.
-std::pair<Vec3, Vec3> bounds(const SphSpec3& f) {
-  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
-  if (f.tank) lo = f.tank->min, hi = f.tank->max;
-  for (const Box3& r : f.regions) lo = lo.cwiseMin(r.min), hi = hi.cwiseMax(r.max);
-  return {lo, hi};
-}
 
 bool velocity_probe(const std::string& q) {
   return q == "velocity_x" || q == "velocity_y" || q == "velocity_z";
@@ -58,8 +50,7 @@ std::vector<Vec3> checked_fluid(const Scene& scene,
   std::vector<Vec3> out;
   for (const Vec3& p : fill_regions3(f)) {
     bool solid = false;
-    for (const auto& b : bs)
-      solid = solid || b.signed_distance(b.mesh().X0, p) < 0.5 * f.options.dp;
+    for (const auto& b : bs) solid = solid || b.signed_distance(p) < 0.5 * f.options.dp;
     if (!solid) out.push_back(p);
   }
   if (out.empty())
@@ -95,12 +86,7 @@ sph::SphOptions3 sph_options3(const Scene& scene) {
   const SphSpec3& f = scene.fluid->as<SphSpec3>();
   sph::SphOptions3 o = f.options;
   o.gravity = scene.gravity3;
-  if (f.domain) {
-    o.domain_min = f.domain->min, o.domain_max = f.domain->max;
-  } else {
-    const auto [lo, hi] = bounds(f);
-    o.domain_min = lo - Vec3::Constant(8.0 * o.dp), o.domain_max = hi + Vec3::Constant(8.0 * o.dp);
-  }
+  std::tie(o.domain_min, o.domain_max) = box_domain(f.domain, f.tank, {}, f.regions, 8.0 * o.dp);
   if (f.periodic_z) { // the period: the tank's depth
     o.periodic_z = true;
     o.domain_min.z() = f.tank->min.z(), o.domain_max.z() = f.tank->max.z();

@@ -33,15 +33,7 @@ std::shared_ptr<const SolverSpec> read_sph3(Section& s) {
   OptionReader reader(s);
   sph::visit_options(f.options, reader);
   f.tank = read_tank(s);
-  for (auto& r : s.list("regions", "boxes filled with particles at spacing l0"))
-    f.regions.push_back(read_box_region(r, "a box of fluid"));
-  if (f.regions.empty()) s.fail("regions", "at least one region is required");
-  for (std::size_t i = 0; i < f.regions.size(); ++i)
-    if (f.options.dp > (f.regions[i].max - f.regions[i].min).minCoeff())
-      s.fail("l0", "particle spacing " + significant(f.options.dp, 3) +
-                       " m is larger than fluid region " + std::to_string(i));
-  if (auto d = s.block("domain", "particles leaving this box are removed and counted"))
-    f.domain = read_box_region(*d, "the domain");
+  read_box_area(s, f.options.dp, f.regions, f.domain);
   f.periodic_z = read_periodic_z(s);
   if (f.periodic_z && !s.context().documenting()) {
     if (!f.tank) s.fail("periodic_z", "needs a tank (its depth along z is the period)");

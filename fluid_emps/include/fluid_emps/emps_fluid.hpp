@@ -14,7 +14,8 @@
 // Written once for D = 2 and 3 (docs/architecture.md, "Two and three dimensions"): the
 // fluid-fluid terms, the time integration, the diagnostics and the state are D-generic; the ERP
 // walls are segments (WallSet, WallTerms) in 2-D and triangles (TriangleWallSet, SpaceWallTerms)
-// in 3-D, static in 3-D so far; the 3-D wall forces of eq. 52 without the viscous mirror term yet.
+// in 3-D (their nodes moved by the caller, as 2-D's); the 3-D wall forces of eq. 52 without the
+// viscous mirror term yet.
 #include "fluid_emps/options.hpp"
 #include "fluid_emps/pair_sums.hpp"
 #include "fluid_emps/particles.hpp"
@@ -116,8 +117,9 @@ struct TriangleForces {
 };
 using WallForces3 = std::array<TriangleForces, max_faces3>;
 
-/// The 3-D fluid's walls: triangles (static so far), their index, the hits of up to three faces
-/// (the nearest triangle, the other planes of a concave edge or corner) and the wall terms.
+/// The 3-D fluid's walls: triangles (static or moved by the caller), their index, the hits of up to
+/// three faces (the nearest triangle, the other planes of a concave edge or corner) and the wall
+/// terms.
 struct SpaceWalls {
   SpaceWalls(const FluidOptions3& options, double n0, const erp::TriangleWallSet& walls,
              const Particles3& particles, const particles::BasicCellGrid<3>& grid);
@@ -139,8 +141,9 @@ public:
   /// Particles start at rest at `positions`. Throws fsi::InputError on invalid options.
   BasicEmpsFluid(const Options& options, const std::vector<Vec>& positions,
                  erp::WallSet& walls) requires(D == 2);
-  /// With triangle walls (3-D), which must outlive the fluid and stay where they are (static
-  /// walls; moving ones are #43's next slice). An empty set: no walls.
+  /// With triangle walls (3-D), which must outlive the fluid; a caller that moves their nodes
+  /// calls walls.update() before advance() (which refits the triangle index), as the coupled
+  /// interfaces do (apps: TriangleAdapter). An empty set: no walls.
   BasicEmpsFluid(const Options& options, const std::vector<Vec>& positions,
                  const erp::TriangleWallSet& walls) requires(D == 3);
   /// Initial velocities, one per particle in the current order (before the first advance()).

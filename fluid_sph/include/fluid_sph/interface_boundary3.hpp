@@ -12,8 +12,10 @@
 // instead, each at its particle's position with its volume, motion and force.
 #include "fluid_sph/sph_fluid.hpp"
 #include "fsi/core/interface_mesh.hpp"
+#include "particles/box_grid.hpp"
 
 #include <array>
+#include <span>
 #include <vector>
 
 namespace fsi::sph {
@@ -46,6 +48,9 @@ public:
   /// its flat triangles (the corners; order 2: the four sub-triangles through the mid-side
   /// nodes), signed by the nearest one's normal, at a shared edge or vertex by the sum of theirs.
   double signed_distance(const std::vector<Vec3>& x, const Vec3& q) const;
+  /// The same at the reference positions X0 through a grid of the faces: equal to the scan over
+  /// all faces bit for bit (see Reach in the source), at the cost of the faces near q.
+  double signed_distance(const Vec3& q) const;
   /// Per point: sum_k N_k(xi, eta) value_k over its face's nodes; a particle node's own value.
   void interpolate(const std::vector<Vec3>& nodal, std::vector<Vec3>& at_points) const;
   /// Nodal forces f_k += sum_p N_k(xi_p, eta_p) F_p (f sized to the node count, zeroed first); a
@@ -54,7 +59,14 @@ public:
 
 private:
   static constexpr std::size_t kNone = static_cast<std::size_t>(-1);
+  /// Calls scan(faces, reach) with the faces near q (ascending, a superset of those within r) for
+  /// r = about reach_, then 2 r, 4 r, ... until `reach` shows the scan ended as one over all
+  /// faces would (or none is within r and floor).
+  template <class Scan> void scan_near(const Vec3& q, double floor, Scan&& scan) const;
   InterfaceMesh3 mesh_;
+  particles::BoxGrid grid_; ///< the faces' boxes at X0, cells of side reach_
+  double reach_ = 0.0;      ///< layers dp
+  double size_ = 0.0;       ///< the largest face box's diagonal
   /// Per point: its face, then up to two as near with other normals (kNone: none).
   std::vector<std::array<std::size_t, 3>> face_;
   std::vector<std::size_t> node_; ///< the particle node a point is (or kNone)

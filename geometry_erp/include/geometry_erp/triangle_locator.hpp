@@ -15,8 +15,8 @@
 // thread count.
 //
 // Search: triangles are binned into cubic cells of side h >= r_e (every cell their bounding box
-// overlaps, CSR arrays); a particle checks its own cell, then each of the 26 neighbours whose box
-// is not farther than the best triangle so far.
+// overlaps: particles::BoxGrid); a particle checks its own cell, then each of the 26 neighbours
+// whose box is not farther than the best triangle so far.
 //
 // Concave edges and corners (corner_faces): as in 2-D (WallLocator::set_corner_faces), each hit
 // also takes, as faces k = 1, 2, the nearest OTHER plane within r_e: a triangle whose plane the
@@ -31,6 +31,7 @@
 #include "fsi/core/types.hpp"
 #include "geometry_erp/query_points.hpp"
 #include "geometry_erp/triangle_wall_set.hpp"
+#include "particles/box_grid.hpp"
 
 #include <array>
 #include <span>
@@ -78,7 +79,7 @@ public:
   void corner_faces(std::span<const double> x, std::span<const double> y, std::span<const double> z,
                     std::span<TriangleHits> faces) const;
   double r_e() const { return r_e_; }
-  double cell_size() const { return h_; }
+  double cell_size() const { return grid_.cell_size(); }
   const TriangleWallSet& walls() const { return *walls_; }
 
 private:
@@ -86,15 +87,12 @@ private:
   /// The nearest corner face of point p that turns from each of `normals` by more than 30 degrees.
   void corner_face(const Vec3& p, std::span<const Vec3> normals, TriangleHits& face,
                    std::size_t i) const;
-  /// Index of cell (i, j, k), x fastest.
-  std::size_t cell(int i, int j, int k) const;
 
   const TriangleWallSet* walls_;
-  double r_e_, h_ = 0.0;
-  Vec3 lo_ = Vec3::Zero();
-  std::array<int, 3> n_{0, 0, 0};
-  std::vector<int> cell_begin_;                 // CSR offsets into cell_triangle_
-  std::vector<TriangleGeometry> cell_triangle_; // triangles of each cell, with their geometry
+  double r_e_;
+  std::vector<particles::Box3d> boxes_;         // the triangles' bounding boxes
+  particles::BoxGrid grid_;                     // the triangles of each cell
+  std::vector<TriangleGeometry> cell_triangle_; // grid_.entries() with their geometry
 };
 
 } // namespace fsi::erp

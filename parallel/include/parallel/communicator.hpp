@@ -4,6 +4,7 @@
 // the MPI_Comm alive (MPI_COMM_WORLD between MPI_Init and MPI_Finalize).
 #include <cstdint>
 #include <mpi.h>
+#include <string>
 
 namespace fsi::parallel {
 
@@ -25,6 +26,19 @@ public:
   std::int64_t max(std::int64_t v) const;
   /// True on every rank iff `v` is true on every rank.
   bool all(bool v) const;
+
+  /// The same reductions carrying a failure flag in the same message (one MPI_Allreduce of two
+  /// values): the reduced value and whether any rank passed `failed`.
+  struct Flagged {
+    double value;
+    bool failed;
+  };
+  Flagged sum(double v, bool failed) const;
+  Flagged min(double v, bool failed) const;
+  Flagged max(double v, bool failed) const;
+  /// After a flagged reduction reported a failure (collective, on that path only): the message
+  /// of the lowest failing rank, followed by " (rank r of P)".
+  std::string first_failure(const std::string& message, bool failed) const;
 
 private:
   MPI_Comm comm_;

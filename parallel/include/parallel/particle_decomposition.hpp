@@ -13,11 +13,16 @@
 // box, d_out the largest distance (over all ranks) of an owned particle outside its own box
 // (0 right after a migration; > 0 when a solver rebuilds its halo between migrations). So each
 // owned particle sees every particle that comes within `reach` of where it was at the build.
+//
+// Failure: every reduction carries the fail() flag in its own MPI_Allreduce (two values where
+// one was, no extra message); when it is set, the failing rank's message is broadcast and every
+// rank throws RunError.
 #include "parallel/halo.hpp"
 #include "parallel/migration.hpp"
 #include "parallel/rcb_partition.hpp"
 #include "particles/decomposition.hpp"
 
+#include <string>
 #include <vector>
 
 namespace fsi::parallel {
@@ -34,10 +39,12 @@ public:
   void drop_ghosts(particles::FieldSet& fields) override;
   std::size_t ghosts() const override { return active_ ? halo_.ghosts() : 0; }
 
-  double sum(double v) const override { return comm_.sum(v); }
-  double max(double v) const override { return comm_.max(v); }
-  double min(double v) const override { return comm_.min(v); }
-  bool all(bool v) const override { return comm_.all(v); }
+  double sum(double v) const override { return agreed(comm_.sum(v, failing())); }
+  double max(double v) const override { return agreed(comm_.max(v, failing())); }
+  double min(double v) const override { return agreed(comm_.min(v, failing())); }
+  bool all(bool v) const override { return agreed(comm_.min(v ? 1.0 : 0.0, failing())) != 0.0; }
+  void fail(const std::string& what) override;
+  void agree() override { agreed(comm_.max(0.0, failing())); }
 
   /// RCB partitions made (the first and the repartitions).
   int partitions() const { return rcb_.partitions(); }
@@ -48,7 +55,13 @@ public:
   const std::vector<Box<D>>& boxes() const { return rcb_.boxes(); }
 
 private:
+  bool failing() const { return !failure_.empty(); }
+  /// The reduced value, or RunError on every rank when some rank failed (this one's message
+  /// cleared, so the hook serves the failed run's last gathers and reports).
+  double agreed(Communicator::Flagged reduced) const;
+
   Communicator comm_;
+  mutable std::string failure_; // the first fail() since the last reduction
   double rebalance_;
   RcbPartition<D> rcb_;
   Migration migration_;

@@ -6,11 +6,19 @@
 // halos). Layout contract: the first size() - ghosts() entries of the FieldSet are the particles
 // this process owns; ghosts (copies of other processes' particles) follow them, so a neighbour
 // search over the whole set sees them. Pair loops read ghosts and write owned particles only.
-// Every call but ghosts() is collective: each process makes the same calls in the same order.
+// Every call but ghosts() and fail() is collective: each process makes the same calls in the
+// same order.
+//
+// Failure on some processes only (an unstable step, a NaN): the solver calls fail(what) where it
+// finds it and goes on to its next reduction, which throws RunError on every process with the
+// message of the lowest failing one, so no process is left waiting in a collective. The serial
+// hook throws at fail() itself.
+#include "fsi/core/error.hpp"
 #include "particles/field_set.hpp"
 #include "particles/vector_field.hpp"
 
 #include <cstddef>
+#include <string>
 
 namespace fsi::particles {
 
@@ -38,6 +46,14 @@ public:
   virtual double min(double v) const = 0;
   /// True on every process iff `v` is true on every process.
   virtual bool all(bool v) const = 0;
+
+  /// This process cannot go on (not collective): the next reduction (sum, max, min, all or
+  /// agree) throws RunError(what, naming this process) on every process; with several failing,
+  /// the lowest one's. The solver must reach that reduction without further harm (its
+  /// neighbour rows truncated, positions not finite) and without throwing.
+  virtual void fail(const std::string& what) = 0;
+  /// A reduction that only agrees on fail(): throws on every process if any failed.
+  virtual void agree() = 0;
 };
 
 /// One process owns every particle: no ghosts, nothing moves, a reduction is its argument.
@@ -52,6 +68,8 @@ public:
   double max(double v) const override { return v; }
   double min(double v) const override { return v; }
   bool all(bool v) const override { return v; }
+  void fail(const std::string& what) override { throw RunError(what); }
+  void agree() override {}
 };
 
 } // namespace fsi::particles
