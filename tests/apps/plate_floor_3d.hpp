@@ -1,10 +1,16 @@
 #pragma once
 // The 3-D coupled fluid tests' shared pieces (SPH: test_sph_coupled_3d.cpp, EMPS:
-// test_emps_coupled_3d.cpp): a T10 plate forming a 0.4 x 0.4 m tank's floor, and its interface
-// at rest.
+// test_emps_coupled_3d.cpp): a T10 plate forming a 0.4 x 0.4 m tank's floor, its interface at
+// rest, and the restart check.
 #include "coupling/interface.hpp"
 #include "fsi/core/interface_mesh.hpp"
+#include "fsi/core/state_archive.hpp"
+#include "fsi_app/coupled_model.hpp"
+#include "fsi_app/scene.hpp"
 
+#include <catch2/catch.hpp>
+
+#include <algorithm>
 #include <string>
 
 namespace fsi::test {
@@ -32,6 +38,31 @@ inline coupling::InterfaceMotion3 at_rest(const InterfaceMesh3& mesh) {
   m.v.assign(mesh.node_count(), Vec3::Zero());
   m.a.assign(mesh.node_count(), Vec3::Zero());
   return m;
+}
+
+/// Four coupled steps of `scene` against two, a checkpoint into a new model and two more: the
+/// interface motion and loads equal bit for bit, the plate sagged under the water;
+/// same_fluid(whole, resumed) checks the fluid's particles.
+template <class SameFluid>
+void check_restart_bitwise(const app::Scene& scene, SameFluid&& same_fluid) {
+  const double dt = *scene.time.dt;
+  app::CoupledModel3 whole(scene), first(scene), second(scene);
+  for (int k = 0; k < 4; ++k) whole.advance(k * dt, dt);
+  for (int k = 0; k < 2; ++k) first.advance(k * dt, dt);
+  StateArchive archive;
+  first.write_state(archive);
+  second.read_state(archive);
+  for (int k = 2; k < 4; ++k) second.advance(k * dt, dt);
+  same_fluid(whole, second);
+  const auto& m = whole.scheme().interface_motion();
+  const auto& n = second.scheme().interface_motion();
+  CHECK(m.x == n.x);
+  CHECK(m.v == n.v);
+  CHECK(whole.scheme().interface_loads().f == second.scheme().interface_loads().f);
+  const auto& X0 = whole.structure(0).interface_mesh3().X0;
+  double sag = 0.0;
+  for (std::size_t k = 0; k < m.size(); ++k) sag = std::min(sag, m.x[k].y() - X0[k].y());
+  CHECK(sag < 0.0); // the plate has moved down under the water
 }
 
 } // namespace fsi::test

@@ -2,7 +2,6 @@
 // the plate replaces the tank's floor (no dummies under it, no water in it), F's loads are the
 // boundary points' forces summed to round-off, and a restart continues bitwise.
 #include "fem/fem_model_t10.hpp"
-#include "fsi/core/state_archive.hpp"
 #include "fsi_app/coupled_model.hpp"
 #include "fsi_app/scene.hpp"
 #include "plate_floor_3d.hpp"
@@ -10,7 +9,6 @@
 
 #include <catch2/catch.hpp>
 
-#include <algorithm>
 #include <string>
 
 using namespace fsi;
@@ -73,31 +71,17 @@ TEST_CASE("apps: a T10 plate as the 3-D SPH tank's floor, F's loads its points' 
 
 TEST_CASE("apps: the coupled 3-D SPH + T10 model restarts bitwise and refuses interface.h5",
           "[apps][sph][3d][coupled]") {
-  const Scene scene = parse_scene(column, "column.yaml", {});
-  const double dt = *scene.time.dt;
-  CoupledModel3 whole(scene), first(scene), second(scene);
-  for (int k = 0; k < 4; ++k) whole.advance(k * dt, dt);
-  for (int k = 0; k < 2; ++k) first.advance(k * dt, dt);
-  StateArchive archive;
-  first.write_state(archive);
-  second.read_state(archive);
-  for (int k = 2; k < 4; ++k) second.advance(k * dt, dt);
-  const auto& a = fluid_of(whole).particles();
-  const auto& b = fluid_of(second).particles();
-  REQUIRE(a.size() == b.size());
-  for (int c = 0; c < 3; ++c) {
-    CHECK(a.x[c] == b.x[c]);
-    CHECK(a.v[c] == b.v[c]);
-  }
-  CHECK(a.rho == b.rho);
-  const auto& m = whole.scheme().interface_motion();
-  const auto& n = second.scheme().interface_motion();
-  CHECK(m.x == n.x);
-  CHECK(m.v == n.v);
-  const auto& X0 = whole.structure(0).interface_mesh3().X0;
-  double sag = 0.0;
-  for (std::size_t k = 0; k < m.size(); ++k) sag = std::min(sag, m.x[k].y() - X0[k].y());
-  CHECK(sag < 0.0); // the plate has moved down under the water
+  test::check_restart_bitwise(parse_scene(column, "column.yaml", {}),
+                              [](CoupledModel3& whole, CoupledModel3& resumed) {
+                                const auto& a = fluid_of(whole).particles();
+                                const auto& b = fluid_of(resumed).particles();
+                                REQUIRE(a.size() == b.size());
+                                for (int c = 0; c < 3; ++c) {
+                                  CHECK(a.x[c] == b.x[c]);
+                                  CHECK(a.v[c] == b.v[c]);
+                                }
+                                CHECK(a.rho == b.rho);
+                              });
   CHECK_THROWS_WITH(CoupledModel3(parse_scene(column + "coupling: {record_interface: true}\n",
                                               "column.yaml", {})),
                     Catch::Contains("coupling.record_interface: interface.h5 is not yet written "
