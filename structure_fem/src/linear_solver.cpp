@@ -24,10 +24,33 @@ const char* info_text(Eigen::ComputationInfo info) {
   return i < text.size() ? text[i] : "unknown";
 }
 
-void check(Eigen::ComputationInfo info, LinearSolverKind kind, const char* phase) {
+void check(Eigen::ComputationInfo info, LinearSolverKind kind, const char* phase,
+           const std::string& status = {}) {
   if (info != Eigen::Success)
     throw RunError(std::string("linear solver ") + to_string(kind) + ": " + phase +
-                   " failed: " + info_text(info));
+                   " failed: " + (status.empty() ? std::string(info_text(info)) : status));
+}
+
+/// The library's own status of the last factorisation where Eigen keeps it (empty if none): Eigen's
+/// NumericalIssue does not tell a singular matrix from a factor out of memory.
+template <class Solver> std::string library_status(Solver& s) {
+  int code = 0;
+  const char* what = "";
+  const char* library = "";
+  if constexpr (requires { s.umfpackFactorizeReturncode(); }) {
+    library = "UMFPACK";
+    code = s.umfpackFactorizeReturncode();
+    if (code == UMFPACK_WARNING_singular_matrix) what = ": singular matrix";
+    if (code == UMFPACK_ERROR_out_of_memory) what = ": out of memory";
+  } else if constexpr (requires { s.cholmod(); }) {
+    library = "CHOLMOD";
+    code = s.cholmod().status;
+    if (code == CHOLMOD_NOT_POSDEF) what = ": not positive definite";
+    if (code == CHOLMOD_OUT_OF_MEMORY) what = ": out of memory";
+    if (code == CHOLMOD_TOO_LARGE) what = ": problem too large";
+  }
+  if (*library == '\0' || code == 0) return {};
+  return std::string(library) + " status " + std::to_string(code) + what;
 }
 
 /// An Eigen sparse solver (analyzePattern / factorize / solve) behind LinearSolver: the pattern
@@ -40,7 +63,7 @@ public:
   }
   void factorize(const SparseMatrix& K) override {
     solver_.factorize(K);
-    check(solver_.info(), kind_, factorize_phase_);
+    check(solver_.info(), kind_, factorize_phase_, library_status(solver_));
   }
 
 protected:
