@@ -1,6 +1,8 @@
 #include "structure_fem/linear_solver.hpp"
 
+#include <algorithm>
 #include <array>
+#include <cassert>
 #include <sstream>
 
 #include <Eigen/CholmodSupport>
@@ -52,6 +54,32 @@ template <class Solver> std::string library_status(Solver& s) {
   if (*library == '\0' || code == 0) return {};
   return std::string(library) + " status " + std::to_string(code) + what;
 }
+
+/// UMFPACK's LU through its long-index routines (umfpack_dl_*): Eigen's UmfPackLU on a copy of K
+/// with SuiteSparse_long indices. On K's int indices it calls umfpack_di_*, which address their
+/// workspace by int: out of memory at 101,250 T10 (docs/structure_fem.md, "Benchmarks"). The
+/// pattern is copied at analysis, K's values into the copy's own array at each factorisation.
+class UmfPackLongLU {
+public:
+  using LongMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, SuiteSparse_long>;
+  void analyzePattern(const SparseMatrix& K) {
+    K_ = K;
+    lu_.analyzePattern(K_);
+  }
+  /// K: compressed, with the pattern of the last analyzePattern.
+  void factorize(const SparseMatrix& K) {
+    assert(K.isCompressed() && K.nonZeros() == K_.nonZeros());
+    std::copy_n(K.valuePtr(), K.nonZeros(), K_.valuePtr());
+    lu_.factorize(K_);
+  }
+  Eigen::ComputationInfo info() const { return lu_.info(); }
+  int umfpackFactorizeReturncode() const { return lu_.umfpackFactorizeReturncode(); }
+  Vector solve(const Vector& b) const { return lu_.solve(b); }
+
+private:
+  LongMatrix K_; // the UMFPACK solve refines against it: it lives as long as the factors
+  Eigen::UmfPackLU<LongMatrix> lu_;
+};
 
 /// An Eigen sparse solver (analyzePattern / factorize / solve) behind LinearSolver: the pattern
 /// analysis and the factorisation, checked; `factorize_phase` names the latter in messages.
@@ -131,7 +159,7 @@ public:
 private:
   DirectSolver<Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower>> ldlt_{
       LinearSolverKind::simplicial_ldlt};
-  DirectSolver<Eigen::UmfPackLU<SparseMatrix>> lu_{LinearSolverKind::umfpack};
+  DirectSolver<UmfPackLongLU> lu_{LinearSolverKind::umfpack};
   LinearSolver* active_ = &ldlt_;
   bool lu_analyzed_ = false;
   long fallbacks_ = 0;
@@ -212,7 +240,7 @@ std::unique_ptr<LinearSolver> make_linear_solver(const LinearSolverOptions& o) {
     return std::make_unique<DirectSolver<Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower>>>(
         o.kind);
   case K::umfpack:
-    return std::make_unique<DirectSolver<Eigen::UmfPackLU<SparseMatrix>>>(o.kind);
+    return std::make_unique<DirectSolver<UmfPackLongLU>>(o.kind);
   case K::simplicial_ldlt:
     return std::make_unique<DirectSolver<Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower>>>(
         o.kind);

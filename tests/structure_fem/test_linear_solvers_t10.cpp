@@ -1,7 +1,7 @@
 // The linear solvers on a 3-D elasticity matrix (issue 44: CG with a preconditioner measured
-// against CHOLMOD; cg_amg: smoothed-aggregation multigrid): each solves K u = f of a clamped T10
-// block under a shear end load to the same answer; the WARN line records their times and
-// iterations.
+// against CHOLMOD; cg_amg: smoothed-aggregation multigrid; UMFPACK's LU): each solves K u = f of a
+// clamped T10 block under a shear end load to the same answer; the WARN line records their times
+// and iterations.
 #include <catch2/catch.hpp>
 
 #include <chrono>
@@ -14,7 +14,8 @@
 
 using namespace fsi::fem;
 
-TEST_CASE("T10 block: CG (incomplete Cholesky, Jacobi, smoothed aggregation) agrees with CHOLMOD",
+TEST_CASE("T10 block: CG (incomplete Cholesky, Jacobi, smoothed aggregation) and UMFPACK agree "
+          "with CHOLMOD",
           "[structure_fem][t10][linear_solver]") {
   const TetMesh mesh = make_box_mesh({{0.0, 0.0, 0.0}, {1.0, 0.2, 0.2}, {20, 4, 4}});
   const auto law = make_material_3d({2.0e11, 0.3, 7800.0});
@@ -45,8 +46,10 @@ TEST_CASE("T10 block: CG (incomplete Cholesky, Jacobi, smoothed aggregation) agr
   const Vector ic = solve(LinearSolverKind::cg_incomplete_cholesky, its);
   const Vector jacobi = solve(LinearSolverKind::cg_jacobi, its);
   const Vector amg = solve(LinearSolverKind::cg_amg, its);
-  WARN(log.str());
+  const Vector lu = solve(LinearSolverKind::umfpack, its);
+  WARN(log.str() << " UMFPACK - CHOLMOD: " << (lu - direct).norm() / direct.norm() << " relative");
   CHECK((ic - direct).norm() <= 1e-8 * direct.norm());
   CHECK((jacobi - direct).norm() <= 1e-8 * direct.norm());
   CHECK((amg - direct).norm() <= 1e-8 * direct.norm());
+  CHECK((lu - direct).norm() <= 1e-10 * direct.norm()); // two direct solvers: round-off
 }
