@@ -7,6 +7,7 @@
 
 #include <memory>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace fsi::app {
@@ -28,11 +29,20 @@ public:
     std::string failure;
   };
   virtual Agreed agree(int signal, const std::string& failure) const = 0;
-  /// A new exchange hook over these ranks for a 2-D particle fluid.
-  virtual std::unique_ptr<particles::Decomposition<2>> particle_decomposition() const = 0;
+  /// A new exchange hook over these ranks for a particle fluid of dimension D (2 or 3).
+  template <int D> std::unique_ptr<particles::Decomposition<D>> particle_decomposition() const {
+    return new_decomposition(std::integral_constant<int, D>());
+  }
   /// Every rank's `local`, concatenated in rank order, into `all` on rank 0 (emptied on the
   /// others); no allocation once `all` has held the largest frame.
   virtual void gather(const std::vector<double>& local, std::vector<double>& all) const = 0;
+
+private:
+  // particle_decomposition<D>'s hooks, one per dimension.
+  virtual std::unique_ptr<particles::Decomposition<2>>
+      new_decomposition(std::integral_constant<int, 2>) const = 0;
+  virtual std::unique_ptr<particles::Decomposition<3>>
+      new_decomposition(std::integral_constant<int, 3>) const = 0;
 };
 
 /// One process, not decomposed: the serial run.
@@ -43,11 +53,18 @@ public:
   bool decomposed() const override { return false; }
   bool all(bool v) const override { return v; }
   Agreed agree(int signal, const std::string& failure) const override { return {signal, failure}; }
-  std::unique_ptr<particles::Decomposition<2>> particle_decomposition() const override {
-    return std::make_unique<particles::LocalParticles<2>>();
-  }
   void gather(const std::vector<double>& local, std::vector<double>& all) const override {
     all.assign(local.begin(), local.end());
+  }
+
+private:
+  std::unique_ptr<particles::Decomposition<2>>
+  new_decomposition(std::integral_constant<int, 2>) const override {
+    return std::make_unique<particles::LocalParticles<2>>();
+  }
+  std::unique_ptr<particles::Decomposition<3>>
+  new_decomposition(std::integral_constant<int, 3>) const override {
+    return std::make_unique<particles::LocalParticles<3>>();
   }
 };
 
