@@ -109,7 +109,6 @@ void check_decomposable(const Scene& scene, const Args& a, const Ranks& ranks) {
     throw InputError(a.scene + ": not yet supported under mpirun (" + std::to_string(ranks.size()) +
                      " processes, issue 47): " + what + "; run it without mpirun");
   };
-  if (scene.dimension != 2) refuse("a 3-D scene");
   if (!scene.fluid || scene.fluid->type != "emps")
     refuse(scene.fluid ? "fluid.type " + scene.fluid->type + " (EMPS only)"
                        : "a scene without fluid");

@@ -10,8 +10,14 @@
 
 namespace fsi::app {
 
-std::unique_ptr<particles::Decomposition<2>> MpiRanks::particle_decomposition() const {
+std::unique_ptr<particles::Decomposition<2>>
+MpiRanks::new_decomposition(std::integral_constant<int, 2>) const {
   return std::make_unique<parallel::ParticleDecomposition<2>>(comm_);
+}
+
+std::unique_ptr<particles::Decomposition<3>>
+MpiRanks::new_decomposition(std::integral_constant<int, 3>) const {
+  return std::make_unique<parallel::ParticleDecomposition<3>>(comm_);
 }
 
 Ranks::Agreed MpiRanks::agree(int signal, const std::string& failure) const {

@@ -17,12 +17,16 @@ public:
   bool decomposed() const override { return true; }
   bool all(bool v) const override { return comm_.all(v); }
   Agreed agree(int signal, const std::string& failure) const override;
-  std::unique_ptr<particles::Decomposition<2>> particle_decomposition() const override;
   void gather(const std::vector<double>& local, std::vector<double>& all) const override {
     comm_.gather(local, all);
   }
 
 private:
+  std::unique_ptr<particles::Decomposition<2>>
+      new_decomposition(std::integral_constant<int, 2>) const override;
+  std::unique_ptr<particles::Decomposition<3>>
+      new_decomposition(std::integral_constant<int, 3>) const override;
+
   parallel::Communicator comm_;
 };
 

@@ -3,10 +3,12 @@
 // `mpirun -np N fsi run` (MpiRanks, apps/src/mpi_ranks.cpp, built only with FSI_HAVE_MPI). The
 // driver writes its files on rank 0; a model decomposed over the ranks gathers each frame there.
 // Every call but rank(), size() and decomposed() is collective.
+#include "fsi/core/error.hpp"
 #include "particles/decomposition.hpp"
 
 #include <memory>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace fsi::app {
@@ -28,11 +30,28 @@ public:
     std::string failure;
   };
   virtual Agreed agree(int signal, const std::string& failure) const = 0;
-  /// A new exchange hook over these ranks for a 2-D particle fluid.
-  virtual std::unique_ptr<particles::Decomposition<2>> particle_decomposition() const = 0;
+  /// A new exchange hook over these ranks for a particle fluid of dimension D (2 or 3) holding
+  /// `particles`; InputError if some rank would get none (RCB gives every rank a particle).
+  template <int D>
+  std::unique_ptr<particles::Decomposition<D>> particle_decomposition(std::size_t particles) const {
+    const auto n = particles;
+    if (n < static_cast<std::size_t>(size()))
+      throw InputError("fluid: " + std::to_string(n) + " particle" + (n == 1 ? "" : "s") +
+                       " for " + std::to_string(size()) +
+                       " processes; each needs at least one (run on at most " + std::to_string(n) +
+                       ")");
+    return new_decomposition(std::integral_constant<int, D>());
+  }
   /// Every rank's `local`, concatenated in rank order, into `all` on rank 0 (emptied on the
   /// others); no allocation once `all` has held the largest frame.
   virtual void gather(const std::vector<double>& local, std::vector<double>& all) const = 0;
+
+private:
+  // particle_decomposition<D>'s hooks, one per dimension.
+  virtual std::unique_ptr<particles::Decomposition<2>>
+      new_decomposition(std::integral_constant<int, 2>) const = 0;
+  virtual std::unique_ptr<particles::Decomposition<3>>
+      new_decomposition(std::integral_constant<int, 3>) const = 0;
 };
 
 /// One process, not decomposed: the serial run.
@@ -43,11 +62,18 @@ public:
   bool decomposed() const override { return false; }
   bool all(bool v) const override { return v; }
   Agreed agree(int signal, const std::string& failure) const override { return {signal, failure}; }
-  std::unique_ptr<particles::Decomposition<2>> particle_decomposition() const override {
-    return std::make_unique<particles::LocalParticles<2>>();
-  }
   void gather(const std::vector<double>& local, std::vector<double>& all) const override {
     all.assign(local.begin(), local.end());
+  }
+
+private:
+  std::unique_ptr<particles::Decomposition<2>>
+  new_decomposition(std::integral_constant<int, 2>) const override {
+    return std::make_unique<particles::LocalParticles<2>>();
+  }
+  std::unique_ptr<particles::Decomposition<3>>
+  new_decomposition(std::integral_constant<int, 3>) const override {
+    return std::make_unique<particles::LocalParticles<3>>();
   }
 };
 

@@ -2,7 +2,6 @@
 
 #include "emps/emps_report.hpp"
 
-#include "fsi/core/error.hpp"
 #include "fsi_app/finite_guard.hpp"
 #include "fsi_app/wall_motion.hpp"
 #include "particles/kernels.hpp"
@@ -57,67 +56,29 @@ std::optional<double> EmpsModel::stable_dt(double courant) const {
 void EmpsModel::declare(FieldsFile&) const {}
 
 bool EmpsModel::decompose(const Ranks& ranks) {
-  const std::size_t n = fluid_->particles().size();
-  if (n < static_cast<std::size_t>(ranks.size())) // RCB gives every rank a particle
-    throw InputError("fluid: " + std::to_string(n) + " particle" + (n == 1 ? "" : "s") + " for " +
-                     std::to_string(ranks.size()) +
-                     " processes; each needs at least one (run on at most " + std::to_string(n) +
-                     ")");
-  decomposition_ = ranks.particle_decomposition();
+  decomposition_ = ranks.particle_decomposition<2>(fluid_->particles().size());
   ranks_ = &ranks;
   fluid_->decompose(*decomposition_);
   return true;
 }
 
 void EmpsModel::gather_frame() {
-  if (!ranks_) return;
-  constexpr std::size_t k = 8; // values a particle
-  const emps::Particles& p = fluid_->particles();
-  const std::size_t owned = fluid_->owned();
-  packed_.resize(k * owned);
-  for (std::size_t i = 0; i < owned; ++i) {
-    double* row = &packed_[k * i];
-    row[0] = p.id[i], row[1] = p.x[i], row[2] = p.y[i], row[3] = p.vx[i], row[4] = p.vy[i];
-    row[5] = p.p[i], row[6] = p.pnd[i], row[7] = p.surface[i];
-  }
-  ranks_->gather(packed_, all_);
-  const auto& all = all_;
-  const std::size_t n = all.size() / k;
-  auto& order = order_;
-  order.resize(n);
-  for (std::size_t j = 0; j < n; ++j) order[j] = j;
-  std::sort(order.begin(), order.end(),
-            [&](std::size_t a, std::size_t b) { return all[k * a] < all[k * b]; });
-  auto& g = gathered_;
-  for (auto* v : {&g.x, &g.y, &g.vx, &g.vy, &g.p, &g.pnd}) v->resize(n);
-  g.surface.resize(n);
-  for (std::size_t j = 0; j < n; ++j) {
-    const double* row = &all[k * order[j]];
-    g.x[j] = row[1], g.y[j] = row[2], g.vx[j] = row[3], g.vy[j] = row[4];
-    g.p[j] = row[5], g.pnd[j] = row[6], g.surface[j] = static_cast<std::uint8_t>(row[7]);
-  }
+  if (ranks_) gathered_.gather(*ranks_, fluid_->particles(), fluid_->owned());
 }
 
-EmpsModel::FrameParticles EmpsModel::frame() const {
-  if (ranks_) {
-    const auto& g = gathered_;
-    return {g.x.size(),  g.x.data(), g.y.data(),   g.vx.data(),
-            g.vy.data(), g.p.data(), g.pnd.data(), g.surface.data()};
-  }
-  const emps::Particles& p = fluid_->particles();
-  return {p.size(),    p.x.data(), p.y.data(),   p.vx.data(),
-          p.vy.data(), p.p.data(), p.pnd.data(), p.surface.data()};
+FrameParticles<2> EmpsModel::frame() const {
+  return ranks_ ? gathered_.view() : frame_of(fluid_->particles());
 }
 
 void EmpsModel::write_frame(FieldsFile& file, const std::vector<std::string>& fields) const {
-  const FrameParticles p = frame();
+  const FrameParticles<2> p = frame();
   const std::size_t n = p.n;
   xy_.resize(2 * n);
   v_.resize(2 * n);
   flag_.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
-    xy_[2 * i] = p.x[i], xy_[2 * i + 1] = p.y[i];
-    v_[2 * i] = p.vx[i], v_[2 * i + 1] = p.vy[i];
+    xy_[2 * i] = p.x[0][i], xy_[2 * i + 1] = p.x[1][i];
+    v_[2 * i] = p.v[0][i], v_[2 * i + 1] = p.v[1][i];
     flag_[i] = p.surface[i];
   }
   file.write_grid("particles", xy_,
@@ -128,20 +89,20 @@ void EmpsModel::write_frame(FieldsFile& file, const std::vector<std::string>& fi
 }
 
 std::optional<double> EmpsModel::probe(const ProbeSpec& probe) const {
-  const FrameParticles p = frame();
+  const FrameParticles<2> p = frame();
   if (probe.quantity ==
       "surge_front") { // largest x of the bulk: isolated spray (pnd < n0/2) skipped
     double front = -std::numeric_limits<double>::infinity();
     const double bulk = 0.5 * fluid_->n0();
     for (std::size_t i = 0; i < p.n; ++i)
-      if (p.pnd[i] >= bulk) front = std::max(front, p.x[i]);
+      if (p.pnd[i] >= bulk) front = std::max(front, p.x[0][i]);
     return front;
   }
   if (probe.quantity == "pressure") { // MPS-weighted mean over particles within r_e (eq. 8)
     const particles::MpsWeight w_e(fluid_->options().r_e());
     double sum = 0.0, weights = 0.0;
     for (std::size_t i = 0; i < p.n; ++i) {
-      const double r = std::hypot(p.x[i] - probe.point->x(), p.y[i] - probe.point->y());
+      const double r = std::hypot(p.x[0][i] - probe.point->x(), p.x[1][i] - probe.point->y());
       if (r >= w_e.r_e) continue;
       const double w = w_e.inside(r);
       sum += w * p.p[i];
@@ -153,15 +114,15 @@ std::optional<double> EmpsModel::probe(const ProbeSpec& probe) const {
     double sum = 0.0;
     std::size_t count = 0;
     for (std::size_t i = 0; i < p.n; ++i)
-      if (p.x[i] >= probe.box_min->x() && p.x[i] <= probe.box_max->x() &&
-          p.y[i] >= probe.box_min->y() && p.y[i] <= probe.box_max->y())
+      if (p.x[0][i] >= probe.box_min->x() && p.x[0][i] <= probe.box_max->x() &&
+          p.x[1][i] >= probe.box_min->y() && p.x[1][i] <= probe.box_max->y())
         sum += p.p[i], ++count;
     return count > 0 ? sum / static_cast<double>(count) : 0.0;
   }
   if (probe.quantity == "mean_speed" || probe.quantity == "kinetic_energy") {
     double speeds = 0.0, v2 = 0.0;
     for (std::size_t i = 0; i < p.n; ++i) {
-      const double s2 = p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i];
+      const double s2 = p.v[0][i] * p.v[0][i] + p.v[1][i] * p.v[1][i];
       speeds += std::sqrt(s2), v2 += s2;
     }
     if (probe.quantity == "mean_speed") return p.n ? speeds / static_cast<double>(p.n) : 0.0;

@@ -3,6 +3,7 @@
 // prescribed motion) and the interfaces of the structures it is coupled to.
 #include "emps/emps_adapter.hpp"
 #include "emps/emps_spec.hpp"
+#include "emps/frame_particles.hpp"
 #include "fluid_emps/emps_fluid.hpp"
 #include "fsi/core/interface_mesh.hpp"
 #include "fsi_app/fluid_regions.hpp"
@@ -57,12 +58,7 @@ public:
 
 private:
   /// The particles a frame and the probes read: the fluid's own, or (decomposed) the gathered.
-  struct FrameParticles {
-    std::size_t n = 0;
-    const double *x, *y, *vx, *vy, *p, *pnd;
-    const std::uint8_t* surface;
-  };
-  FrameParticles frame() const;
+  FrameParticles<2> frame() const;
   /// A count over every rank when decomposed (exact: a sum of integers below 2^53).
   std::size_t global(std::size_t local) const;
   /// [first, last) wall segments of the interfaces (every wall without one).
@@ -77,13 +73,7 @@ private:
   std::size_t initial_count_ = 0;
   std::vector<std::string> wall_names_; ///< by wall group: the scene's walls, then the interfaces
   mutable std::vector<double> xy_, v_, flag_; // output buffers
-  std::vector<double> packed_;                // gather_frame: id, x, y, vx, vy, p, pnd, surface
-  std::vector<double> all_;                   // every rank's packed_ (on rank 0)
-  std::vector<std::size_t> order_;            // all_'s rows in id order
-  struct {
-    std::vector<double> x, y, vx, vy, p, pnd;
-    std::vector<std::uint8_t> surface;
-  } gathered_; // on rank 0, in id order
+  GatheredParticles<2> gathered_;             // on rank 0, in id order
 };
 
 } // namespace fsi::app::emps_plugin

@@ -158,35 +158,49 @@ std::optional<double> EmpsModel3::stable_dt(double courant) const {
   return fluid_->stable_dt(courant);
 }
 
+bool EmpsModel3::decompose(const Ranks& ranks) {
+  decomposition_ = ranks.particle_decomposition<3>(fluid_->particles().size());
+  ranks_ = &ranks;
+  fluid_->decompose(*decomposition_);
+  return true;
+}
+
+void EmpsModel3::gather_frame() {
+  if (!ranks_) return;
+  gathered_.gather(*ranks_, fluid_->particles(), fluid_->owned());
+  kinetic_energy_ = fluid_->kinetic_energy(); // collective
+}
+
+FrameParticles<3> EmpsModel3::frame() const {
+  return ranks_ ? gathered_.view() : frame_of(fluid_->particles());
+}
+
 void EmpsModel3::write_frame(FieldsFile& file, const std::vector<std::string>& fields) const {
-  const auto& p = fluid_->particles();
-  const std::size_t n = p.size();
+  const FrameParticles<3> p = frame();
+  const std::size_t n = p.n;
   xyz_.resize(3 * n);
   v_.resize(3 * n);
   flag_.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
-    for (int c = 0; c < 3; ++c)
-      xyz_[3 * i + c] = p.position[c][i], v_[3 * i + c] = p.velocity[c][i];
+    for (std::size_t c = 0; c < 3; ++c) xyz_[3 * i + c] = p.x[c][i], v_[3 * i + c] = p.v[c][i];
     flag_[i] = p.surface[i];
   }
   file.write_grid("particles", xyz_,
                   select_fields(fields, {{"velocity", 3, v_.data()},
-                                         {"pressure", 1, p.p.data()},
-                                         {"pnd", 1, p.pnd.data()},
+                                         {"pressure", 1, p.p},
+                                         {"pnd", 1, p.pnd},
                                          {"free_surface", 1, flag_.data()}}),
                   3);
 }
 
 std::optional<double> EmpsModel3::probe(const ProbeSpec& probe) const {
-  const auto& p = fluid_->particles();
-  const std::size_t n = p.size();
-  const auto x = [&](std::size_t i) {
-    return Vec3(p.position[0][i], p.position[1][i], p.position[2][i]);
-  };
+  const FrameParticles<3> p = frame();
+  const std::size_t n = p.n;
+  const auto x = [&](std::size_t i) { return Vec3(p.x[0][i], p.x[1][i], p.x[2][i]); };
   if (probe.quantity == "surge_front") { // largest x of the bulk (pnd >= n0/2), as in 2-D
     double front = -std::numeric_limits<double>::infinity();
     for (std::size_t i = 0; i < n; ++i)
-      if (p.pnd[i] >= 0.5 * fluid_->n0()) front = std::max(front, p.position[0][i]);
+      if (p.pnd[i] >= 0.5 * fluid_->n0()) front = std::max(front, p.x[0][i]);
     return front;
   }
   if (probe.quantity == "pressure") { // MPS-weighted mean over particles within r_e (eq. 8)
@@ -210,32 +224,38 @@ std::optional<double> EmpsModel3::probe(const ProbeSpec& probe) const {
   if (probe.quantity == "particles") return static_cast<double>(n);
   if (probe.quantity == "wall_gap") {
     locator_->update(); // the interfaces' triangles move
-    locator_->query(p.position[0], p.position[1], p.position[2], hits_);
+    locator_->query(std::span<const double>(p.x[0], n), std::span<const double>(p.x[1], n),
+                    std::span<const double>(p.x[2], n), hits_);
     double gap = std::numeric_limits<double>::infinity();
     for (std::size_t i = 0; i < n; ++i)
       if (hits_.triangle[i] >= 0) gap = std::min(gap, hits_.crossed[i] ? -hits_.r[i] : hits_.r[i]);
     return gap;
   }
-  if (probe.quantity == "kinetic_energy") return fluid_->kinetic_energy(); // J
+  if (probe.quantity == "kinetic_energy") // J
+    return ranks_ ? kinetic_energy_ : fluid_->kinetic_energy();
   if (probe.quantity == "mean_speed") {
     double speeds = 0.0;
     for (std::size_t i = 0; i < n; ++i)
-      speeds +=
-          std::sqrt(p.velocity[0][i] * p.velocity[0][i] + p.velocity[1][i] * p.velocity[1][i] +
-                    p.velocity[2][i] * p.velocity[2][i]);
+      speeds += std::sqrt(p.v[0][i] * p.v[0][i] + p.v[1][i] * p.v[1][i] + p.v[2][i] * p.v[2][i]);
     return n ? speeds / static_cast<double>(n) : 0.0;
   }
   return std::nullopt;
 }
 
+std::size_t EmpsModel3::global(std::size_t local) const {
+  return decomposition_ ? static_cast<std::size_t>(decomposition_->sum(static_cast<double>(local)))
+                        : local;
+}
+
 std::optional<ParticleCount> EmpsModel3::particle_count() const {
   const auto& o = fluid_->options();
-  return ParticleCount{fluid_->particles().size(), {o.domain_min, o.domain_max}};
+  // Decomposed: the global count, one reduction a step (the guard's collective check).
+  return ParticleCount{global(fluid_->owned()), {o.domain_min, o.domain_max}};
 }
 
 void EmpsModel3::report(JsonObject& run) const {
   JsonObject f =
-      fluid_report(*fluid_, initial_count_, fluid_->particles().size(), fluid_->removed());
+      fluid_report(*fluid_, initial_count_, particle_count()->count, global(fluid_->removed()));
   f.add("wall_triangles", static_cast<long long>(walls_->triangles().size()));
   run.add("fluid", f);
 }

@@ -6,6 +6,7 @@
 // cover wholly is left out (a plate forming the tank's floor: the fluid sees the plate there);
 // a partial cover is refused (tank_cover.hpp).
 #include "emps/emps_spec.hpp"
+#include "emps/frame_particles.hpp"
 #include "emps/triangle_adapter.hpp"
 #include "fluid_emps/emps_fluid.hpp"
 #include "fsi_app/solver_plugin.hpp"
@@ -49,6 +50,13 @@ public:
   coupling::FluidSolver& coupling_solver() override;
   /// F against the interfaces the model was built with (TriangleAdapter).
   coupling::FluidSolver3& coupling_solver3() override { return *adapter_; }
+  /// The fluid steps over `ranks` (parallel::ParticleDecomposition<3> under mpirun); every rank
+  /// built it from the whole scene and holds every wall triangle (the ghosts' wall hits are
+  /// computed locally). Without structures (the adapter's state is this rank's).
+  bool decompose(const Ranks& ranks) override;
+  /// Decomposed: every rank's owned particles to rank 0 in id order, and the kinetic energy
+  /// (a global sum) for the probes.
+  void gather_frame() override;
 
   const emps::EmpsFluid3& fluid() const { return *fluid_; }
   const erp::TriangleWallSet& walls() const { return *walls_; }
@@ -56,14 +64,23 @@ public:
   const std::vector<erp::InterfaceTriangles>& interface_triangles() const { return interfaces_; }
 
 private:
+  /// The particles a frame and the probes read: the fluid's own, or (decomposed) the gathered.
+  FrameParticles<3> frame() const;
+  /// A count over every rank when decomposed (exact: a sum of integers below 2^53).
+  std::size_t global(std::size_t local) const;
+
   std::unique_ptr<erp::TriangleWallSet> walls_; // before the fluid that keeps a reference
   std::vector<erp::InterfaceTriangles> interfaces_;
+  std::unique_ptr<particles::Decomposition<3>> decomposition_; // before the fluid that uses it
+  const Ranks* ranks_ = nullptr;                               ///< set when decomposed
   std::unique_ptr<emps::EmpsFluid3> fluid_;
   std::unique_ptr<TriangleAdapter> adapter_;
   std::unique_ptr<erp::TriangleLocator> locator_; ///< the wall_gap probe's nearest triangles
   mutable erp::TriangleHits hits_;
   std::size_t initial_count_ = 0;
   mutable std::vector<double> xyz_, v_, flag_; // output buffers
+  GatheredParticles<3> gathered_;              // on rank 0, in id order
+  double kinetic_energy_ = 0.0;                // decomposed: at the last gather, J
 };
 
 /// The fluid particles of a 3-D scene's regions (EmpsModel3's fill).
