@@ -7,8 +7,9 @@ x = x_max) and the two top edges the faces share (top-left, top-right; a nodal l
 sum of both faces' parts). A 3-D run's loads (N) are divided by the obstacle's depth (z extent
 of its interface: a slab), so every run is in N per metre of depth. For each window [T0, T1]
 (default 0.12-0.25, 0.12-0.18, 0.18-0.25 s) it prints each part's x and y impulse (N s/m) and
-its moment impulse about the base's centre (N s m/m, positive bending towards +x), one column
-per run, and the later runs' difference from the first in % of the first run's total.
+its moment impulse about the base's centre (N s m/m, positive bending towards +x: `moment`, of
+which `moment fx` is the x load's part, y f_x, and `moment fy` the y load's, -(x - x_c) f_y),
+one column per run, and the later runs' difference from the first in % of the first run's total.
 """
 import argparse
 import os
@@ -47,19 +48,21 @@ def parts_of(x0):
 
 
 def impulses(run, t0, t1):
-    """{part: (x, y, moment)} impulse over the steps inside [t0, t1], and 'total'."""
+    """{part: (x, y, moment, moment fx, moment fy)} impulse over the steps inside [t0, t1], and
+    'total'."""
     time, load, x, part = run
     dt = np.diff(time)  # row k >= 1 is the step from time[k - 1] to time[k]
     inside = (time[:-1] >= t0 - 1e-12) & (time[1:] <= t1 + 1e-12)
     base = np.array([0.5 * (x[0, :, 0].min() + x[0, :, 0].max()), x[0, :, 1].min()])
     arm = x[1:] - base  # the step's wall position (the motion the fluid used)
     f = load[1:]
-    moment = arm[:, :, 1] * f[:, :, 0] - arm[:, :, 0] * f[:, :, 1]  # -(r x f)_z: bends to +x
+    moment_x, moment_y = arm[:, :, 1] * f[:, :, 0], -arm[:, :, 0] * f[:, :, 1]  # -(r x f)_z
     w = (dt * inside)[:, None]
     out = {}
     for p in PARTS + ("total",):
         m = np.ones(len(part), bool) if p == "total" else part == p
-        out[p] = tuple(float((w * q[:, m]).sum()) for q in (f[:, :, 0], f[:, :, 1], moment))
+        out[p] = tuple(float((w * q[:, m]).sum())
+                       for q in (f[:, :, 0], f[:, :, 1], moment_x + moment_y, moment_x, moment_y))
     return out
 
 
@@ -72,13 +75,13 @@ def main():
     for t0, t1 in a.window or [(0.12, 0.25), (0.12, 0.18), (0.18, 0.25)]:
         table = [impulses(r, t0, t1) for r in runs]
         print(f"impulse over {t0}-{t1} s per metre of depth (x, y: N s/m; moment: N s m/m)")
-        for c, name in enumerate(("x", "y", "moment")):
+        for c, name in enumerate(("x", "y", "moment", "moment fx", "moment fy")):
             for part in PARTS + ("total",):
                 cells = [f"{t[part][c]:+11.5f}" for t in table]
                 ref = table[0]["total"][c]
                 diffs = [f"{100 * (t[part][c] - table[0][part][c]) / ref:+6.1f} %" if ref else ""
                          for t in table[1:]]
-                print(f"  {name:6s} {part:9s} " + " ".join(cells) + "  " + " ".join(diffs))
+                print(f"  {name:9s} {part:9s} " + " ".join(cells) + "  " + " ".join(diffs))
 
 
 if __name__ == "__main__":
