@@ -31,8 +31,8 @@ check   validates SCENE only
         cut back to the checkpoint and continued; give the run's --set overrides again);
         see docs/reliability.md
 --overwrite deletes the files of an earlier run in DIR first (fields.h5, fields.xmf, probes.csv,
-        run.json, coupling.csv, interface.h5, interface.xmf, checkpoint_*.h5, failed_state.h5);
-        without it such a folder is refused. One run at a time per DIR (DIR/.lock).
+        run.json, coupling.csv, interface.h5, checkpoint_*.h5, failed_state.h5); without it
+        such a folder is refused. One run at a time per DIR (DIR/.lock).
 --threads at most the processors this process may use (output: bitwise the same for 1 and 2
         threads, docs/reliability.md)
 SIGINT/SIGTERM: the run finishes its step, writes a checkpoint and exits with 130/143

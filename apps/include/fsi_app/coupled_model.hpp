@@ -44,7 +44,7 @@ public:
   /// convergence, wall times, the fluid's force: 2-D its force_parts fx_, fy_; 3-D the loads'
   /// sum fx_total, fy_total, fz_total, N, to 17 digits), flushed every 1000 rows and at the end.
   /// With coupling.record_interface also DIR/interface.h5 (row 0 at t = 0, then one row per
-  /// step; 3-D: and interface.xmf; not continued across a restart: refused with InputError).
+  /// step; not continued across a restart: refused with InputError).
   void open_logs(const std::filesystem::path& out, bool resume) override;
   void flush_logs() override;
   void declare(FieldsFile& file) const override;

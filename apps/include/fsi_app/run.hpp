@@ -19,7 +19,7 @@ struct RunOptions {
   /// it and continued (docs/reliability.md).
   std::filesystem::path restart;
   /// A fresh run into a folder that holds another run's files deletes exactly those files
-  /// (fields.h5, fields.xmf, probes.csv, run.json, coupling.csv, interface.h5, interface.xmf,
+  /// (fields.h5, fields.xmf, probes.csv, run.json, coupling.csv, interface.h5,
   /// checkpoint_*.h5, failed_state.h5); without it such a folder is refused (InputError).
   bool overwrite = false;
   /// Called after every step with (time, step), e.g. the Python module's progress callback.

@@ -1,11 +1,9 @@
 #include "fsi/core/error.hpp"
 #include "fsi_app/output/interface_history.hpp"
-#include "fsi_app/output/text_file.hpp"
 
 #include <algorithm>
 #include <array>
 #include <hdf5.h>
-#include <sstream>
 
 namespace fsi::app {
 
@@ -59,7 +57,7 @@ void write_faces(hid_t file, const std::vector<std::array<std::size_t, 6>>& face
 template <int D>
 BasicInterfaceHistoryWriter<D>::BasicInterfaceHistoryWriter(const std::filesystem::path& h5,
                                                             std::size_t nodes, const Faces& faces)
-    : path_(h5), nodes_(nodes), faces_(faces.size()) {
+    : path_(h5), nodes_(nodes) {
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
   file_ = H5Fcreate(h5.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
   if (file_ < 0) write_fail(h5, "cannot create file");
@@ -117,52 +115,11 @@ void BasicInterfaceHistoryWriter<D>::append(double time,
   append_rows(acceleration_, motion.a);
   append_rows(load_, loads.f);
   ++rows_;
-  if constexpr (D == 3) times_.push_back(time);
   if (rows_ % kFlushRows == 1) flush();
 }
 
 template <int D> void BasicInterfaceHistoryWriter<D>::flush() {
   if (H5Fflush(file_, H5F_SCOPE_GLOBAL) < 0) write_fail(path_, "flush failed");
-  if constexpr (D == 3) write_xdmf();
-}
-
-// interface.xmf: row k of each row set as one grid of the temporal collection (an XDMF
-// hyperslab: start k 0 0, stride 1 1 1, count 1 n 3).
-template <int D> void BasicInterfaceHistoryWriter<D>::write_xdmf() const {
-  const std::string h5 = path_.filename().string();
-  const std::string rows = std::to_string(rows_) + " " + std::to_string(nodes_) + " 3";
-  const std::string one = "1 " + std::to_string(nodes_) + " 3";
-  std::ostringstream x;
-  x.precision(17);
-  auto row = [&](std::size_t k, const char* set) {
-    x << "    <DataItem ItemType=\"HyperSlab\" Dimensions=\"" << one
-      << "\" Type=\"HyperSlab\">\n     <DataItem Dimensions=\"3 3\" Format=\"XML\">" << k
-      << " 0 0 1 1 1 " << one << "</DataItem>\n     <DataItem Dimensions=\"" << rows
-      << "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << h5 << ":/" << set
-      << "</DataItem>\n    </DataItem>\n";
-  };
-  x << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n<Domain>\n"
-    << "<Grid Name=\"interface\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
-  for (std::size_t k = 0; k < rows_; ++k) {
-    x << " <Grid Name=\"row" << k << "\" GridType=\"Uniform\">\n  <Time Value=\"" << times_[k]
-      << "\"/>\n  <Topology TopologyType=\"Triangle_6\" NumberOfElements=\"" << faces_
-      << "\">\n   <DataItem Dimensions=\"" << faces_
-      << " 6\" NumberType=\"Int\" Precision=\"8\" Format=\"HDF\">" << h5
-      << ":/faces</DataItem>\n  </Topology>\n  <Geometry GeometryType=\"XYZ\">\n";
-    row(k, kRowSets[0]);
-    x << "  </Geometry>\n";
-    for (std::size_t j = 1; j < kRowSets.size(); ++j) {
-      x << "  <Attribute Name=\"" << kRowSets[j]
-        << "\" AttributeType=\"Vector\" Center=\"Node\">\n";
-      row(k, kRowSets[j]);
-      x << "  </Attribute>\n";
-    }
-    x << " </Grid>\n";
-  }
-  x << "</Grid>\n</Domain>\n</Xdmf>\n";
-  // interface.xmf.tmp, renamed (not synced: rewritten every kFlushRows rows).
-  write_file_atomically(std::filesystem::path(path_).replace_extension(".xmf"), x.str(),
-                        "output: ", false);
 }
 
 template class BasicInterfaceHistoryWriter<2>;

@@ -14,9 +14,9 @@
 namespace fsi::app {
 
 bool is_run_file(const std::string& name) {
-  static const std::vector<std::string> files = {"fields.h5",     "fields.xmf",     "probes.csv",
-                                                 "run.json",      "coupling.csv",   "interface.h5",
-                                                 "interface.xmf", "failed_state.h5"};
+  static const std::vector<std::string> files = {"fields.h5",      "fields.xmf",   "probes.csv",
+                                                 "run.json",       "coupling.csv", "interface.h5",
+                                                 "failed_state.h5"};
   std::string base = name;
   if (base.ends_with(".tmp")) base.resize(base.size() - 4);
   if (std::find(files.begin(), files.end(), base) != files.end()) return true;

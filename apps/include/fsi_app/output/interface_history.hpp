@@ -15,9 +15,7 @@
 //                                      the rows (corners, then mid-sides 0-1, 1-2, 2-0: XDMF's
 //                                      Triangle_6), the structures in scene order
 // Datasets are chunked and extendible; rows are appended and the file flushed every
-// kFlushRows rows and by flush(). In 3-D each flush also rewrites interface.xmf beside the file
-// (ParaView: one Triangle_6 grid per row, its points the row of /position, the row's velocity,
-// acceleration and load as node vectors), naming only the rows flushed.
+// kFlushRows rows and by flush().
 #include "coupling/interface.hpp"
 
 #include <array>
@@ -42,17 +40,14 @@ public:
 
   void append(double time, const coupling::BasicInterfaceMotion<D>& motion,
               const coupling::BasicInterfaceLoads<D>& loads);
-  /// Flushes the rows appended so far to disk (3-D: and rewrites interface.xmf).
+  /// Flushes the rows appended so far to disk.
   void flush();
 
 private:
   void append_rows(std::int64_t set, const std::vector<VecD<D>>& values);
-  void write_xdmf() const;
 
   std::filesystem::path path_;
   std::size_t nodes_;
-  std::size_t faces_ = 0;
-  std::vector<double> times_; ///< 3-D: the rows' times, for interface.xmf
   std::int64_t file_ = -1;
   std::int64_t time_ = -1, position_ = -1, velocity_ = -1, acceleration_ = -1, load_ = -1;
   std::uint64_t rows_ = 0;
