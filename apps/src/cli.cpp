@@ -114,8 +114,6 @@ void check_decomposable(const Scene& scene, const Args& a, const Ranks& ranks) {
     refuse(scene.fluid ? "fluid.type " + scene.fluid->type + " (EMPS only)"
                        : "a scene without fluid");
   if (!scene.structures.empty()) refuse("structures");
-  if (!a.restart.empty() || scene.checkpoint)
-    refuse("checkpoints (the checkpoint block) and --restart");
   for (const auto& p : scene.output.probes)
     if (p.quantity.rfind("wall_force", 0) == 0) refuse("wall_force probes");
 }
@@ -169,24 +167,17 @@ int dispatch(const Args& a, std::ostream& out, std::ostream& err, bool terminal,
     return 0;
   }
   check_decomposable(scene, a, ranks);
-  auto models = named([&] { return build_models(scene); });
-  if (ranks.decomposed())
-    for (auto& m : models)
-      if (!m->decompose(ranks))
-        throw InputError(a.scene + ": a part of it cannot run under mpirun");
+  auto models = named([&] { return build_models(scene); }); // decomposed by run_scene
   if (a.threads > 0) set_num_threads(a.threads);
   RunOptions options{a.out, terminal, &err, a.restart};
   options.overwrite = a.overwrite;
   options.ranks = &ranks;
   const RunResult result = run_scene(scene, models, options);
   if (result.signal != 0) {
-    if (result.checkpoint.empty()) { // under mpirun: no checkpoints yet (issue 47)
-      err << "interrupted by signal " << result.signal << " at step " << result.step
-          << ", t = " << result.time << " s; no checkpoint (not yet under mpirun)\n";
-      return 128 + result.signal;
-    }
-    // The command that continues it: the same scene, overrides and threads.
+    // The command that continues it: the same scene, overrides and threads (and processes:
+    // any count continues it, docs/reliability.md).
     std::string again = "fsi run " + shell_word(a.scene) + " --out " + shell_word(a.out);
+    if (ranks.decomposed()) again = "mpirun -np " + std::to_string(ranks.size()) + " " + again;
     for (const auto& o : a.overrides) again += " --set " + shell_word(o);
     if (a.threads > 0) again += " --threads " + std::to_string(a.threads);
     again += " --restart " + shell_word(result.checkpoint.string());

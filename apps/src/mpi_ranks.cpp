@@ -20,21 +20,6 @@ Ranks::Agreed MpiRanks::agree(int signal, const std::string& failure) const {
           reduced.failed ? comm_.first_failure(failure, !failure.empty()) : std::string()};
 }
 
-void MpiRanks::gather(const std::vector<double>& local, std::vector<double>& all) const {
-  const int count = static_cast<int>(local.size());
-  counts_.resize(static_cast<std::size_t>(size()));
-  offsets_.assign(counts_.size(), 0);
-  MPI_Gather(&count, 1, MPI_INT, counts_.data(), 1, MPI_INT, 0, comm_.comm());
-  std::size_t total = 0;
-  for (std::size_t r = 0; r < counts_.size(); ++r) {
-    offsets_[r] = static_cast<int>(total);
-    total += static_cast<std::size_t>(counts_[r]);
-  }
-  all.resize(rank() == 0 ? total : 0);
-  MPI_Gatherv(local.data(), count, MPI_DOUBLE, all.data(), counts_.data(), offsets_.data(),
-              MPI_DOUBLE, 0, comm_.comm());
-}
-
 bool started_by_mpi_launcher() {
   for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"}) // OpenMPI's mpirun; Hydra, PMI-2
     if (std::getenv(name) != nullptr) return true;

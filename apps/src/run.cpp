@@ -47,7 +47,10 @@ public:
   Recorder(const Scene& scene, const std::vector<std::unique_ptr<Model>>& models,
            const std::filesystem::path& out, std::optional<int> resume, const Ranks& ranks)
       : scene_(scene), models_(models), ranks_(ranks) {
-    if (ranks.rank() != 0) return; // rank 0 writes the files
+    if (ranks.rank() != 0) { // rank 0 writes the files
+      frames_ = resume.value_or(0);
+      return;
+    }
     const auto h5 = out / "fields.h5", xmf = out / "fields.xmf", csv = out / "probes.csv";
     fields_ = resume ? std::make_unique<FieldsFile>(h5, xmf, *resume)
                      : std::make_unique<FieldsFile>(h5, xmf);
@@ -135,6 +138,15 @@ RunResult run_scene(const Scene& scene, std::vector<std::unique_ptr<Model>>& mod
     resume = c.frames;
     checkpoint_step = c.step;
   }
+  // Decomposed: every rank built the whole scene (and read the whole checkpoint); the models
+  // partition it now (a restart: afresh, on any rank count).
+  if (ranks.decomposed())
+    for (auto& m : models) try {
+        if (!m->decompose(ranks)) throw InputError("a part of it cannot run under mpirun");
+      } catch (const InputError& e) {
+        const auto& named = options.restart.empty() ? scene.path : options.restart;
+        throw InputError(named.string() + ": " + e.what());
+      }
   const auto start = std::chrono::system_clock::now();
   const auto wall_start = std::chrono::steady_clock::now();
   std::string status = "completed", message;
@@ -213,14 +225,35 @@ RunResult run_scene(const Scene& scene, std::vector<std::unique_ptr<Model>>& mod
                           : "continue from the last checkpoint, " + result.checkpoint.string()),
                  false));
   };
+  std::optional<Recorder> recorder;
+  double attempted = c.time; // end of the step in progress, for a failure's last frame
+  bool state_broken = true;  // false when the run stopped before a step (the step limit)
+  // Decomposed: the archive is gathered (collective) and rank 0 writes the one file.
   auto checkpoint = [&] {
     for (const auto& m : models) m->flush_logs();
     result.checkpoint = checkpoint_path(options.out, c.step);
-    write_checkpoint(result.checkpoint, make_archive(scene, models, c, false));
-    prune_checkpoints(options.out, c.step, scene.checkpoint ? scene.checkpoint->keep : 2);
+    const StateArchive archive = make_archive(scene, models, c, false);
     last_checkpoint = std::chrono::steady_clock::now();
     checkpoint_step = c.step;
+    if (!root) return;
+    write_checkpoint(result.checkpoint, archive);
+    prune_checkpoints(options.out, c.step, scene.checkpoint ? scene.checkpoint->keep : 2);
     update_last_words();
+  };
+  // After the step loop (a signal, the end): a rank 0 that fails to write stops every rank.
+  auto last_checkpoint_agreed = [&] {
+    std::string failure;
+    try {
+      checkpoint();
+    } catch (const std::exception& e) {
+      if (!ranks.decomposed()) throw;
+      failure = e.what();
+    }
+    const Ranks::Agreed agreed = ranks.agree(0, failure);
+    if (!agreed.failure.empty()) {
+      state_broken = false; // the state is sound; its checkpoint is what failed
+      throw RunError(agreed.failure);
+    }
   };
   auto checkpoint_due = [&] {
     if (!scene.checkpoint) return false;
@@ -228,12 +261,11 @@ RunResult run_scene(const Scene& scene, std::vector<std::unique_ptr<Model>>& mod
     const double minutes =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - last_checkpoint).count() /
         60.0;
+    // Wall time differs between ranks: due when due on any.
+    const bool late = k.interval_minutes && minutes >= *k.interval_minutes;
     return (k.interval_steps && c.step % *k.interval_steps == 0) ||
-           (k.interval_minutes && minutes >= *k.interval_minutes);
+           (k.interval_minutes && !ranks.all(!late));
   };
-  std::optional<Recorder> recorder;
-  double attempted = c.time; // end of the step in progress, for a failure's last frame
-  bool state_broken = true;  // false when the run stopped before a step (the step limit)
   update_last_words();
   try {
     recorder.emplace(scene, models, options.out, resume, ranks);
@@ -297,7 +329,7 @@ RunResult run_scene(const Scene& scene, std::vector<std::unique_ptr<Model>>& mod
       }
       result.signal = agreed.signal;
       if (result.signal != 0) {
-        if (checkpoint_step != c.step && !ranks.decomposed()) checkpoint();
+        if (checkpoint_step != c.step) last_checkpoint_agreed();
         status = "interrupted";
         message = "stopped by signal " + std::to_string(result.signal) + " after step " +
                   std::to_string(c.step);
@@ -306,7 +338,7 @@ RunResult run_scene(const Scene& scene, std::vector<std::unique_ptr<Model>>& mod
     }
     if (!result.signal) {
       progress.finish(c.time, c.step);
-      if (scene.checkpoint && checkpoint_step != c.step) checkpoint();
+      if (scene.checkpoint && checkpoint_step != c.step) last_checkpoint_agreed();
     }
   } catch (const RunError& e) {
     status = "failed";
@@ -324,7 +356,7 @@ RunResult run_scene(const Scene& scene, std::vector<std::unique_ptr<Model>>& mod
         for (const auto& m : models) m->flush_logs();
         RunClock failed = c;
         failed.time = attempted;
-        if (ranks.decomposed()) { // no checkpoints of a decomposed fluid yet (issue 47)
+        if (ranks.decomposed()) { // a failed step's state is not gathered (issue 47)
           kept += "no failed_state.h5 under mpirun";
         } else {
           write_checkpoint(options.out / "failed_state.h5",

@@ -298,6 +298,10 @@ template <int D> double BasicEmpsFluid<D>::max_speed() const {
 
 template <int D> void BasicEmpsFluid<D>::decompose(particles::Decomposition<D>& decomposition) {
   decomposition_ = &decomposition;
+  if (std::exchange(restored_, false)) {         // every process read the whole checkpoint
+    if (decomposition.rank() != 0) removed_ = 0; // the checkpoint's count, kept on process 0
+    if (neighbours_.built() == particles_.size()) return scatter_restored();
+  }
   neighbours_.invalidate();
   refresh_neighbours(true, step_, 0.0); // the first migration and halo
   query_walls();                        // the ghosts' hits

@@ -3,9 +3,12 @@
 
 #include "fsi/core/error.hpp"
 #include "fsi/core/state_archive.hpp"
+#include "particles/state_rows.hpp"
 
+#include <algorithm>
 #include <array>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace fsi::emps {
@@ -41,11 +44,24 @@ std::string build_key(int axis) {
 }
 } // namespace
 
+// One process: the arrays in the particles' order. Decomposed (collective): every process's
+// owned particles gathered to process 0 in id order, the one-process format (issue 47), whose
+// archive alone is whole; the counters are global.
 template <int D>
 void BasicEmpsFluid<D>::write_state(StateArchive& a, const std::string& prefix) const {
-  particles_.fields.write_state(a, prefix);
+  const bool listed = decomposition_->all(neighbours_.built() > 0);
+  bool hits = false;
+  if constexpr (D == 2) hits = decomposition_->all(walls_.hits_layout == layout_);
+  if (decomposed()) {
+    StateArchive rows;
+    write_rows(rows, prefix, listed, hits);
+    particles::gather_rows(*decomposition_, rows, prefix + "id", a);
+  } else {
+    write_rows(a, prefix, listed, hits);
+  }
   a.put_integer(prefix + "step", step_);
-  a.put_integer(prefix + "removed", static_cast<std::int64_t>(removed_));
+  a.put_integer(prefix + "removed",
+                static_cast<std::int64_t>(decomposition_->sum(static_cast<double>(removed_))));
   a.put_integer(prefix + "layout", layout_);
   a.put_integer(prefix + "builds", builds_);
   a.put_real(prefix + "mean_neighbours", mean_neighbours_);
@@ -53,42 +69,50 @@ void BasicEmpsFluid<D>::write_state(StateArchive& a, const std::string& prefix) 
     a.put_real(prefix + "gap_dt", gap_dt_);
     a.put_integer(prefix + "gap_limited_steps", gap_limited_steps_);
   }
-  // The list is rebuilt from its build positions on restart (same grid, same rows, same order).
-  const auto built = static_cast<std::ptrdiff_t>(neighbours_.built());
+  if constexpr (D == 2) a.put_integer(prefix + "hits/valid", hits);
+}
+
+// The per-particle arrays of the owned particles: the fields, the neighbour list's build
+// positions (the list is rebuilt from them on restart: same grid, same rows, same order) when
+// `listed`, the wall hits of the last x* (reused by the next viscous step) when `hits`.
+template <int D>
+void BasicEmpsFluid<D>::write_rows(StateArchive& a, const std::string& prefix, bool listed,
+                                   bool hits) const {
+  const std::size_t n = owned();
+  particles_.fields.write_state(a, prefix, n);
   for (int axis = 0; axis < D; ++axis) {
     const std::vector<double>& b = neighbours_.build_positions(axis);
     a.put(prefix + "neighbours/" + build_key(axis),
-          std::vector<double>(b.begin(), b.begin() + built));
+          listed ? std::vector<double>(b.begin(), b.begin() + static_cast<std::ptrdiff_t>(n))
+                 : std::vector<double>());
   }
-  if constexpr (D == 2) write_hits(a, prefix);
+  if constexpr (D == 2)
+    if (hits) write_hits(a, prefix, n);
 }
 
-// Wall hits of the last x*, reused by the next viscous step while the layout is unchanged.
 template <int D>
-void BasicEmpsFluid<D>::write_hits(StateArchive& a, const std::string& prefix) const
+void BasicEmpsFluid<D>::write_hits(StateArchive& a, const std::string& prefix, std::size_t n) const
     requires(D == 2) {
   const erp::WallHits& hits = walls_.hits;
-  const bool hits_valid = walls_.hits_layout == layout_;
-  a.put_integer(prefix + "hits/valid", hits_valid);
-  if (!hits_valid) return;
+  const auto first = [n](const auto& v) {
+    return std::remove_cvref_t<decltype(v)>(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(n));
+  };
   const std::string h = prefix + "hits/";
-  a.put_ints(h + "crossed", hits.crossed);
-  a.put(h + "a_wall", flatten(hits.a_wall));
+  a.put_ints(h + "crossed", first(hits.crossed));
+  a.put(h + "a_wall", flatten(first(hits.a_wall)));
   for (std::size_t k = 0; k < erp::max_faces; ++k) {
     const erp::FaceHits& f = hits.face[k];
-    a.put_ints(h + face_key("segment", k), f.segment);
-    a.put(h + face_key("t", k), f.t);
-    a.put(h + face_key("r", k), f.r);
-    a.put(h + face_key("x_wall", k), flatten(f.x_wall));
-    a.put(h + face_key("n_wall", k), flatten(f.n_wall));
-    a.put(h + face_key("v_wall", k), flatten(f.v_wall));
+    a.put_ints(h + face_key("segment", k), first(f.segment));
+    a.put(h + face_key("t", k), first(f.t));
+    a.put(h + face_key("r", k), first(f.r));
+    a.put(h + face_key("x_wall", k), flatten(first(f.x_wall)));
+    a.put(h + face_key("n_wall", k), flatten(first(f.n_wall)));
+    a.put(h + face_key("v_wall", k), flatten(first(f.v_wall)));
   }
 }
 
 template <int D>
 void BasicEmpsFluid<D>::read_state(const StateArchive& a, const std::string& prefix) {
-  particles_.fields.read_state(a, prefix);
-  const std::size_t n = particles_.size();
   step_ = a.integer(prefix + "step");
   removed_ = static_cast<std::size_t>(a.integer(prefix + "removed"));
   layout_ = a.integer(prefix + "layout");
@@ -98,6 +122,16 @@ void BasicEmpsFluid<D>::read_state(const StateArchive& a, const std::string& pre
     gap_dt_ = a.real(prefix + "gap_dt");
     gap_limited_steps_ = a.integer(prefix + "gap_limited_steps");
   }
+  bool hits = false;
+  if constexpr (D == 2) hits = a.integer(prefix + "hits/valid") != 0;
+  read_rows(a, prefix, hits);
+  restored_ = true;
+}
+
+template <int D>
+void BasicEmpsFluid<D>::read_rows(const StateArchive& a, const std::string& prefix, bool hits) {
+  particles_.fields.read_state(a, prefix);
+  const std::size_t n = particles_.size();
   std::array<std::vector<double>, D> build;
   build[0] = a.reals(prefix + "neighbours/" + build_key(0));
   for (int axis = 1; axis < D; ++axis)
@@ -115,15 +149,16 @@ void BasicEmpsFluid<D>::read_state(const StateArchive& a, const std::string& pre
                            options_.vector_kernels))
       throw InputError("checkpoint: the stored neighbour list overflows");
   }
-  if constexpr (D == 2) read_hits(a, prefix);
+  if constexpr (D == 2) {
+    walls_.hits_layout = -1;
+    if (hits) read_hits(a, prefix);
+  }
 }
 
 template <int D>
 void BasicEmpsFluid<D>::read_hits(const StateArchive& a,
                                   const std::string& prefix) requires(D == 2) {
   erp::WallHits& hits = walls_.hits;
-  walls_.hits_layout = -1;
-  if (a.integer(prefix + "hits/valid") == 0) return;
   const std::string h = prefix + "hits/";
   const std::size_t m = a.integers(h + "segment").size();
   hits.crossed = a.ints<unsigned char>(h + "crossed", m);
@@ -140,6 +175,34 @@ void BasicEmpsFluid<D>::read_hits(const StateArchive& a,
   walls_.hits_layout = layout_;
 }
 
+// A restart under mpirun (issue 47): every process read the whole checkpoint (read_state).
+// Partitioned as the run that wrote it was at its last neighbour-list build: the migration and
+// the halo at the stored build positions, so the ghosts cover every pair the list holds until
+// its next rebuild; then each process takes its particles' rows of the checkpoint (fields, build
+// positions, wall hits), and the next step neither rebuilds nor requeries before the run that
+// wrote it did. Without a stored list: a fresh partition, as at a start.
+template <int D> void BasicEmpsFluid<D>::scatter_restored() {
+  ParticleSet& p = particles_;
+  const std::size_t n = p.size();
+  bool hits = false;
+  if constexpr (D == 2) hits = walls_.hits_layout == layout_;
+  StateArchive all; // every particle's rows, in the checkpoint's order
+  write_rows(all, "", true, hits);
+  std::uint32_t top = 0;
+  for (std::size_t i = 0; i < n; ++i) top = std::max(top, p.id[i]);
+  std::vector<std::size_t> row(std::size_t{top} + 1);
+  for (std::size_t i = 0; i < n; ++i) row[p.id[i]] = i;
+  for (int axis = 0; axis < D; ++axis)
+    p.position[axis] = all.reals("neighbours/" + build_key(axis));
+  if (decomposition_->migrate(p.fields, p.position)) ++layout_;
+  decomposition_->build_ghosts(p.fields, p.position, r_e_ * (1.0 + options_.skin));
+  std::vector<std::size_t> pick(p.size());
+  for (std::size_t j = 0; j < pick.size(); ++j) pick[j] = row[p.id[j]];
+  StateArchive mine;
+  particles::select_rows(all, n, pick, mine);
+  read_rows(mine, "", hits);
+}
+
 template auto BasicEmpsFluid<2>::save() const -> State;
 template auto BasicEmpsFluid<3>::save() const -> State;
 template void BasicEmpsFluid<2>::restore(const State&);
@@ -148,5 +211,7 @@ template void BasicEmpsFluid<2>::write_state(StateArchive&, const std::string&) 
 template void BasicEmpsFluid<3>::write_state(StateArchive&, const std::string&) const;
 template void BasicEmpsFluid<2>::read_state(const StateArchive&, const std::string&);
 template void BasicEmpsFluid<3>::read_state(const StateArchive&, const std::string&);
+template void BasicEmpsFluid<2>::scatter_restored();
+template void BasicEmpsFluid<3>::scatter_restored();
 
 } // namespace fsi::emps

@@ -65,4 +65,18 @@ std::string Communicator::first_failure(const std::string& message, bool failed)
   return text + " (rank " + std::to_string(first) + " of " + std::to_string(size_) + ")";
 }
 
+void Communicator::gather(const std::vector<double>& local, std::vector<double>& all) const {
+  const int count = static_cast<int>(local.size());
+  std::vector<int> counts(static_cast<std::size_t>(size_)), offsets(counts.size(), 0);
+  MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm_);
+  std::size_t total = 0;
+  for (std::size_t r = 0; r < counts.size(); ++r) {
+    offsets[r] = static_cast<int>(total);
+    total += static_cast<std::size_t>(counts[r]);
+  }
+  all.resize(rank_ == 0 ? total : 0);
+  MPI_Gatherv(local.data(), count, MPI_DOUBLE, all.data(), counts.data(), offsets.data(),
+              MPI_DOUBLE, 0, comm_);
+}
+
 } // namespace fsi::parallel

@@ -90,13 +90,17 @@ void FieldSet::restore(const Snapshot& from) {
   restore_all(indices_, from.indices);
 }
 
-void FieldSet::write_state(StateArchive& a, const std::string& prefix) const {
+void FieldSet::write_state(StateArchive& a, const std::string& prefix, std::size_t count) const {
+  const auto n = static_cast<std::ptrdiff_t>(std::min(count, size_));
   for (const auto& f : reals_)
-    if (f.state) a.put(prefix + f.name, f.values);
+    if (f.state)
+      a.put(prefix + f.name, std::vector<double>(f.values.begin(), f.values.begin() + n));
   for (const auto& f : flags_)
-    if (f.state) a.put_ints(prefix + f.name, f.values);
+    if (f.state)
+      a.put(prefix + f.name, std::vector<std::int64_t>(f.values.begin(), f.values.begin() + n));
   for (const auto& f : indices_)
-    if (f.state) a.put_ints(prefix + f.name, f.values);
+    if (f.state)
+      a.put(prefix + f.name, std::vector<std::int64_t>(f.values.begin(), f.values.begin() + n));
 }
 
 void FieldSet::read_state(const StateArchive& a, const std::string& prefix) {

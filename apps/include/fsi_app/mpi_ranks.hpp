@@ -18,11 +18,12 @@ public:
   bool all(bool v) const override { return comm_.all(v); }
   Agreed agree(int signal, const std::string& failure) const override;
   std::unique_ptr<particles::Decomposition<2>> particle_decomposition() const override;
-  void gather(const std::vector<double>& local, std::vector<double>& all) const override;
+  void gather(const std::vector<double>& local, std::vector<double>& all) const override {
+    comm_.gather(local, all);
+  }
 
 private:
   parallel::Communicator comm_;
-  mutable std::vector<int> counts_, offsets_; // gather's, per rank
 };
 
 /// Whether an MPI launcher started this process (OpenMPI's, or a PMI/PMIx one's, environment).

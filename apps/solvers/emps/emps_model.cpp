@@ -57,6 +57,12 @@ std::optional<double> EmpsModel::stable_dt(double courant) const {
 void EmpsModel::declare(FieldsFile&) const {}
 
 bool EmpsModel::decompose(const Ranks& ranks) {
+  const std::size_t n = fluid_->particles().size();
+  if (n < static_cast<std::size_t>(ranks.size())) // RCB gives every rank a particle
+    throw InputError("fluid: " + std::to_string(n) + " particle" + (n == 1 ? "" : "s") + " for " +
+                     std::to_string(ranks.size()) +
+                     " processes; each needs at least one (run on at most " + std::to_string(n) +
+                     ")");
   decomposition_ = ranks.particle_decomposition();
   ranks_ = &ranks;
   fluid_->decompose(*decomposition_);

@@ -154,7 +154,9 @@ public:
   /// the fluid (collective; every process holds the same fluid on entry, see
   /// parallel::ParticleDecomposition). Without it the fluid is serial (particles::LocalParticles).
   /// The exchange points of the step are listed in docs/architecture.md "Processes (MPI)".
-  /// Not yet decomposed: save/restore, checkpoints, the wall forces' sums (local per process).
+  /// After read_state (a restart on any process count), the checkpoint is partitioned as its
+  /// run was at its last neighbour-list build (scatter_restored). Not yet decomposed:
+  /// save/restore and the wall forces' sums (local per process).
   void decompose(particles::Decomposition<D>& decomposition);
   /// The particles this process owns: the first owned() entries of particles(); ghosts follow.
   std::size_t owned() const { return particles_.size() - decomposition_->ghosts(); }
@@ -202,15 +204,24 @@ public:
 
   /// Checkpoint: everything the next advance() reads (particles with ids, counters, the
   /// neighbour list's build positions, the reusable wall hits) under keys `prefix` + name, so
-  /// that a run continued from it is bitwise the run that was not interrupted.
+  /// that a run continued from it is bitwise the run that was not interrupted. Decomposed:
+  /// collective, the one-process format in id order, whole on process 0 only.
   void write_state(StateArchive& archive, const std::string& prefix) const;
-  /// Throws InputError naming the key when the archive does not fit this fluid.
+  /// Throws InputError naming the key when the archive does not fit this fluid. Called before
+  /// decompose(): every process reads the whole checkpoint.
   void read_state(const StateArchive& archive, const std::string& prefix);
 
 private:
-  /// The wall hits' part of the checkpoint (2-D).
-  void write_hits(StateArchive& archive, const std::string& prefix) const requires(D == 2);
+  bool decomposed() const { return decomposition_ != &local_; }
+  /// The per-particle part of the checkpoint (owned particles); `listed`: with the list's build
+  /// positions, `hits`: with the wall hits (2-D).
+  void write_rows(StateArchive& archive, const std::string& prefix, bool listed, bool hits) const;
+  void read_rows(const StateArchive& archive, const std::string& prefix, bool hits);
+  void write_hits(StateArchive& archive, const std::string& prefix, std::size_t n) const
+      requires(D == 2);
   void read_hits(const StateArchive& archive, const std::string& prefix) requires(D == 2);
+  /// decompose() after read_state: the partition of a restart (emps_state.cpp).
+  void scatter_restored();
   /// Places the particles at `positions` and computes pnd, pressure and the free-surface flags
   /// of the initial state (for output at t = 0).
   void start(const std::vector<Vec>& positions);
@@ -254,6 +265,7 @@ private:
   std::vector<std::uint8_t> keep_;
   std::size_t capacity_;
   long step_ = 0, layout_ = 0, builds_ = 0;
+  bool restored_ = false; ///< read from a checkpoint, not yet decomposed
   double gap_dt_ = std::numeric_limits<double>::infinity(); // wall-gap limit for the next step
   long gap_limited_steps_ = 0;
   std::size_t removed_ = 0;

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <mpi.h>
 #include <string>
+#include <vector>
 
 namespace fsi::parallel {
 
@@ -39,6 +40,9 @@ public:
   /// After a flagged reduction reported a failure (collective, on that path only): the message
   /// of the lowest failing rank, followed by " (rank r of P)".
   std::string first_failure(const std::string& message, bool failed) const;
+  /// Every rank's `local`, concatenated in rank order, into `all` on rank 0 (emptied on the
+  /// others): frames and checkpoints gathered for the files rank 0 writes.
+  void gather(const std::vector<double>& local, std::vector<double>& all) const;
 
 private:
   MPI_Comm comm_;

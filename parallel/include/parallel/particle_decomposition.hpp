@@ -45,6 +45,10 @@ public:
   bool all(bool v) const override { return agreed(comm_.min(v ? 1.0 : 0.0, failing())) != 0.0; }
   void fail(const std::string& what) override;
   void agree() override { agreed(comm_.max(0.0, failing())); }
+  int rank() const override { return comm_.rank(); }
+  void gather(const std::vector<double>& local, std::vector<double>& all) const override {
+    comm_.gather(local, all);
+  }
 
   /// RCB partitions made (the first and the repartitions).
   int partitions() const { return rcb_.partitions(); }

@@ -19,6 +19,7 @@
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
 namespace fsi::particles {
 
@@ -54,6 +55,12 @@ public:
   virtual void fail(const std::string& what) = 0;
   /// A reduction that only agrees on fail(): throws on every process if any failed.
   virtual void agree() = 0;
+
+  /// This process's number, 0 .. processes - 1 (not collective).
+  virtual int rank() const = 0;
+  /// Every process's `local`, concatenated in process order, into `all` on process 0 (emptied
+  /// on the others): a decomposed checkpoint, written by process 0.
+  virtual void gather(const std::vector<double>& local, std::vector<double>& all) const = 0;
 };
 
 /// One process owns every particle: no ghosts, nothing moves, a reduction is its argument.
@@ -70,6 +77,10 @@ public:
   bool all(bool v) const override { return v; }
   void fail(const std::string& what) override { throw RunError(what); }
   void agree() override {}
+  int rank() const override { return 0; }
+  void gather(const std::vector<double>& local, std::vector<double>& all) const override {
+    all = local;
+  }
 };
 
 } // namespace fsi::particles

@@ -45,8 +45,10 @@ public:
   void save(Snapshot& into) const;
   void restore(const Snapshot& from);
 
-  /// Every state array under prefix + name (doubles exact, integers as int64).
-  void write_state(StateArchive& archive, const std::string& prefix) const;
+  /// Every state array under prefix + name (doubles exact, integers as int64), of the first
+  /// `count` particles (all: size(); a decomposed set's owned ones).
+  void write_state(StateArchive& archive, const std::string& prefix,
+                   std::size_t count = std::size_t(-1)) const;
   void read_state(const StateArchive& archive, const std::string& prefix);
 
   /// Bytes per entry over every registered array.
