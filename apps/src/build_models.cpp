@@ -34,7 +34,7 @@ void check_models(const Scene& scene) {
   std::size_t nodes = 0;
   for (std::size_t i = 0; i < scene.structures.size(); ++i) {
     StructureOutline o = find_structure_plugin(scene.structures[i].type)->validate(scene, i);
-    nodes += o.interface.node_count();
+    nodes += scene.dimension == 3 ? o.interface3.node_count() : o.interface.node_count();
     interfaces.push_back(std::move(o.interface));
     interfaces3.push_back(std::move(o.interface3));
     solid.insert(solid.end(), o.occupied.begin(), o.occupied.end());
@@ -42,13 +42,15 @@ void check_models(const Scene& scene) {
   const bool both = coupled(scene);
   const FluidPlugin* fluid = scene.fluid ? find_fluid_plugin(scene.fluid->type) : nullptr;
   if (fluid && both && scene.dimension == 3) {
-    refuse_history3(scene);
     if (fluid->validate3) fluid->validate3(scene, interfaces3);
   } else if (fluid) {
     fluid->validate(scene, both ? interfaces : std::vector<InterfaceMesh>{},
                     both ? solid : std::vector<Polygon>{});
   }
-  if (both && scene.dimension == 2) open_replay(scene, nodes);
+  if (both && scene.dimension == 3)
+    open_replay<3>(scene, nodes);
+  else if (both)
+    open_replay<2>(scene, nodes);
 }
 
 } // namespace fsi::app

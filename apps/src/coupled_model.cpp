@@ -76,35 +76,26 @@ std::unique_ptr<FluidPart> build_fluid(const Scene& scene,
 
 } // namespace
 
-std::unique_ptr<InterfaceHistory> open_replay(const Scene& scene, std::size_t nodes) {
+template <int D>
+std::unique_ptr<BasicInterfaceHistory<D>> open_replay(const Scene& scene, std::size_t nodes) {
   const CouplingSpec c = scene.coupling.value_or(CouplingSpec{});
-  const coupling::SchemeNeeds needs = coupling::builtin_registry().scheme_needs(c.options.scheme);
+  const coupling::SchemeNeeds needs =
+      coupling::builtin_registry<D>().scheme_needs(c.options.scheme);
   if (!needs.prescribed_motion && !needs.prescribed_loads) return nullptr;
   const bool motion = needs.prescribed_motion;
-  auto replay = std::make_unique<InterfaceHistory>(motion ? c.motion : c.loads);
+  auto replay = std::make_unique<BasicInterfaceHistory<D>>(motion ? c.motion : c.loads);
   if (replay->nodes() != nodes)
     fail_at(scene, c.line, motion ? "coupling.motion" : "coupling.loads",
             (motion ? c.motion : c.loads).string() + " records " + std::to_string(replay->nodes()) +
                 " interface nodes, this interface has " + std::to_string(nodes));
   return replay;
 }
-
-void refuse_history3(const Scene& scene) {
-  const CouplingSpec c = scene.coupling.value_or(CouplingSpec{});
-  if (c.record_interface)
-    fail_at(scene, c.line, "coupling.record_interface",
-            "interface.h5 is not yet written in 3-D; leave record_interface out");
-  const coupling::SchemeNeeds needs =
-      coupling::builtin_registry<3>().scheme_needs(c.options.scheme);
-  if (needs.prescribed_motion || needs.prescribed_loads)
-    fail_at(scene, c.line, "coupling.scheme",
-            c.options.scheme + " replays interface.h5, which is not yet read in 3-D");
-}
+template std::unique_ptr<InterfaceHistory> open_replay<2>(const Scene&, std::size_t);
+template std::unique_ptr<InterfaceHistory3> open_replay<3>(const Scene&, std::size_t);
 
 template <int D> BasicCoupledModel<D>::~BasicCoupledModel() = default;
 
 template <int D> BasicCoupledModel<D>::BasicCoupledModel(const Scene& scene) {
-  if constexpr (D == 3) refuse_history3(scene);
   std::vector<BasicInterfaceMesh<D>> interfaces;
   std::vector<Polygon> solid;
   std::vector<coupling::BasicStructureSolver<D>*> members;
@@ -118,6 +109,15 @@ template <int D> BasicCoupledModel<D>::BasicCoupledModel(const Scene& scene) {
     }
     members.push_back(&structure_solver<D>(*structures_.back()));
   }
+  std::size_t nodes = 0;
+  for (const auto& mesh : interfaces) {
+    if constexpr (D == 3) // the group's numbering: the interfaces in scene order
+      for (auto face : mesh.faces) {
+        for (std::size_t& k : face) k += nodes;
+        faces_.push_back(face);
+      }
+    nodes += mesh.node_count();
+  }
   fluid_ = build_fluid<D>(scene, interfaces, solid);
   group_ = std::make_unique<coupling::BasicStructureGroup<D>>(std::move(members));
   const CouplingSpec c = scene.coupling.value_or(CouplingSpec{});
@@ -128,17 +128,13 @@ template <int D> BasicCoupledModel<D>::BasicCoupledModel(const Scene& scene) {
   coupling::BasicParticipants<D> p;
   if (needs_.fluid) p.fluid = tap_.get();
   if (needs_.structure) p.structure = group_.get();
-  if constexpr (D == 2) {
-    std::size_t nodes = 0;
-    for (const auto& mesh : interfaces) nodes += mesh.node_count();
-    replay_ = open_replay(scene, nodes);
-    if (replay_) {
-      InterfaceHistory* h = replay_.get();
-      if (needs_.prescribed_motion)
-        p.prescribed_motion = [h](double t) { return h->motion_at(t); };
-      else
-        p.prescribed_loads = [h](double t) { return h->loads_at(t); };
-    }
+  replay_ = open_replay<D>(scene, nodes);
+  if (replay_) {
+    BasicInterfaceHistory<D>* h = replay_.get();
+    if (needs_.prescribed_motion)
+      p.prescribed_motion = [h](double t) { return h->motion_at(t); };
+    else
+      p.prescribed_loads = [h](double t) { return h->loads_at(t); };
   }
   try {
     scheme_ = registry.make_scheme(c.options, p);
@@ -158,10 +154,9 @@ template <int D> std::optional<double> BasicCoupledModel<D>::stable_dt(double co
 template <int D> void BasicCoupledModel<D>::advance(double time, double dt) {
   scheme_->advance(time, dt);
   // The motion the fluid used (one_way_structure: the structure's, there is no fluid).
-  if constexpr (D == 2)
-    if (history_)
-      history_->append(time + dt, needs_.fluid ? tap_->motion() : scheme_->interface_motion(),
-                       scheme_->interface_loads());
+  if (history_)
+    history_->append(time + dt, needs_.fluid ? tap_->motion() : scheme_->interface_motion(),
+                     scheme_->interface_loads());
 }
 
 template <int D>
@@ -169,12 +164,11 @@ void BasicCoupledModel<D>::open_logs(const std::filesystem::path& out, bool resu
   if (record_ && resume)
     throw InputError("coupling.record_interface: a restarted run cannot continue "
                      "interface.h5; run without --restart or without record_interface");
-  if constexpr (D == 2)
-    if (record_) {
-      history_ = std::make_unique<InterfaceHistoryWriter>(out / "interface.h5",
-                                                          scheme_->interface_motion().size());
-      history_->append(0.0, scheme_->interface_motion(), scheme_->interface_loads());
-    }
+  if (record_) {
+    history_ = std::make_unique<BasicInterfaceHistoryWriter<D>>(
+        out / "interface.h5", scheme_->interface_motion().size(), faces_);
+    history_->append(0.0, scheme_->interface_motion(), scheme_->interface_loads());
+  }
   const std::filesystem::path file = out / "coupling.csv";
   if (resume) // the header and one row per step before the checkpoint
     keep_lines(file, 1 + static_cast<std::size_t>(scheme_->summary().steps));
@@ -210,12 +204,15 @@ template <int D> void BasicCoupledModel<D>::write_forces(std::ostream& log) cons
   } else {
     Vec3 total = Vec3::Zero();
     for (const Vec3& f : scheme_->interface_loads().f) total += f;
+    const auto precision = log.precision(17); // the sum of interface.h5's loads to round-off
     log << ',' << total.x() << ',' << total.y() << ',' << total.z();
+    log.precision(precision);
   }
 }
 
 template <int D> void BasicCoupledModel<D>::flush_logs() {
   if (step_log_) step_log_->flush();
+  if (history_) history_->flush();
 }
 
 template <int D> void BasicCoupledModel<D>::declare(FieldsFile& file) const {

@@ -16,6 +16,7 @@
 #include <set>
 #include <sstream>
 #include <type_traits>
+#include <utility>
 #include <yaml-cpp/depthguard.h>
 
 namespace fsi::app {
@@ -250,6 +251,16 @@ WallSpec read_wall(Section s) {
   return w;
 }
 
+// The first and last time of a recorded interface.h5 of the scene's dimension.
+std::pair<double, double> recorded_times(const std::filesystem::path& path, int dimension) {
+  if (dimension == 3) {
+    const InterfaceHistory3 h(path);
+    return {h.first_time(), h.last_time()};
+  }
+  const InterfaceHistory h(path);
+  return {h.first_time(), h.last_time()};
+}
+
 // Recording and one-way replay: the replayed file must cover every step of the run.
 void read_one_way(Section& s, const TimeSpec& time, CouplingSpec& c) {
   const bool doc = s.context().documenting();
@@ -269,9 +280,9 @@ void read_one_way(Section& s, const TimeSpec& time, CouplingSpec& c) {
     const double last = std::ceil(time.end / step - 1e-9) * step; // the run's last step end
     std::ostringstream problem;
     try {
-      const InterfaceHistory h(path);
-      if (h.first_time() > 0.0 || h.last_time() < last * (1.0 - 1e-12))
-        problem << path.string() << ": records t = " << h.first_time() << " .. " << h.last_time()
+      const auto [first, end] = recorded_times(path, s.context().dimension);
+      if (first > 0.0 || end < last * (1.0 - 1e-12))
+        problem << path.string() << ": records t = " << first << " .. " << end
                 << " s, the run needs 0 .. " << last << " s";
     } catch (const InputError& e) {
       problem << e.what();

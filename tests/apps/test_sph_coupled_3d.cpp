@@ -69,8 +69,7 @@ TEST_CASE("apps: a T10 plate as the 3-D SPH tank's floor, F's loads its points' 
   CHECK((loads - points).norm() <= 1e-13 * points.norm());
 }
 
-TEST_CASE("apps: the coupled 3-D SPH + T10 model restarts bitwise and refuses interface.h5",
-          "[apps][sph][3d][coupled]") {
+TEST_CASE("apps: the coupled 3-D SPH + T10 model restarts bitwise", "[apps][sph][3d][coupled]") {
   test::check_restart_bitwise(parse_scene(column, "column.yaml", {}),
                               [](CoupledModel3& whole, CoupledModel3& resumed) {
                                 const auto& a = fluid_of(whole).particles();
@@ -82,8 +81,4 @@ TEST_CASE("apps: the coupled 3-D SPH + T10 model restarts bitwise and refuses in
                                 }
                                 CHECK(a.rho == b.rho);
                               });
-  CHECK_THROWS_WITH(CoupledModel3(parse_scene(column + "coupling: {record_interface: true}\n",
-                                              "column.yaml", {})),
-                    Catch::Contains("coupling.record_interface: interface.h5 is not yet written "
-                                    "in 3-D"));
 }

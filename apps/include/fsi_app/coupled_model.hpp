@@ -6,27 +6,27 @@
 // knows the solvers only through their plug-in interfaces (solver_plugin.hpp); the structures'
 // interfaces are concatenated in scene order (coupling::StructureGroup). BasicCoupledModel<D> for
 // D = 2 (CoupledModel) and 3 (CoupledModel3: the plug-ins' build3, interface_mesh3 and
-// coupling_solver3; interface.h5 is 2-D, so recording and replay are refused in 3-D).
+// coupling_solver3; interface.h5 with 3 components per node and the faces, recorded and replayed
+// as in 2-D).
 #include "coupling/registry.hpp"
 #include "coupling/scheme.hpp"
 #include "coupling/structure_group.hpp"
 #include "fsi_app/solver_plugin.hpp"
 
+#include <array>
 #include <fstream>
 #include <memory>
 
 namespace fsi::app {
 
-class InterfaceHistory;
-class InterfaceHistoryWriter;
+template <int D> class BasicInterfaceHistory;
+template <int D> class BasicInterfaceHistoryWriter;
 
 /// The recorded interface the scene's one-way scheme replays (coupling.motion or .loads), or
 /// nullptr for a scheme that replays none. InputError (`FILE:LINE: coupling.motion|loads: what`)
 /// for a recording whose node count differs from the `nodes` of the scene's interfaces.
-std::unique_ptr<InterfaceHistory> open_replay(const Scene& scene, std::size_t nodes);
-/// A 3-D scene's coupling block: InputError (`FILE:LINE: coupling.KEY: what`) for what interface.h5
-/// (2-D) cannot do, record_interface or a one-way scheme.
-void refuse_history3(const Scene& scene);
+template <int D>
+std::unique_ptr<BasicInterfaceHistory<D>> open_replay(const Scene& scene, std::size_t nodes);
 
 template <int D> class BasicCoupledModel final : public Model {
 public:
@@ -42,9 +42,9 @@ public:
   std::optional<double> stable_dt(double courant) const override;
   /// DIR/coupling.csv: one row per coupling step (iterations, residuals of eq. 68, relaxation,
   /// convergence, wall times, the fluid's force: 2-D its force_parts fx_, fy_; 3-D the loads'
-  /// sum fx_total, fy_total, fz_total, N), flushed every 1000 rows and at the end. With
-  /// coupling.record_interface also DIR/interface.h5 (row 0 at t = 0, then one row per step;
-  /// not continued across a restart: refused with InputError).
+  /// sum fx_total, fy_total, fz_total, N, to 17 digits), flushed every 1000 rows and at the end.
+  /// With coupling.record_interface also DIR/interface.h5 (row 0 at t = 0, then one row per
+  /// step; not continued across a restart: refused with InputError).
   void open_logs(const std::filesystem::path& out, bool resume) override;
   void flush_logs() override;
   void declare(FieldsFile& file) const override;
@@ -72,8 +72,9 @@ private:
   // Recording and one-way replay.
   class FluidTap;
   std::unique_ptr<FluidTap> tap_; ///< the fluid adapter, remembering the motion it was given
-  std::unique_ptr<InterfaceHistory> replay_;
-  std::unique_ptr<InterfaceHistoryWriter> history_;
+  std::unique_ptr<BasicInterfaceHistory<D>> replay_;
+  std::unique_ptr<BasicInterfaceHistoryWriter<D>> history_;
+  std::vector<std::array<std::size_t, 6>> faces_; ///< 3-D: the interfaces' faces, group numbering
   bool record_ = false;
   coupling::SchemeNeeds needs_; ///< what the scheme couples (the registry's declaration)
 };
