@@ -249,10 +249,10 @@ TEST_CASE("a run failing on some ranks stops every rank as one process does", "[
 
 namespace {
 
-/// `fsi run` of the scene on `np` ranks (0: without mpirun) with `args` (overrides, --restart)
-/// into `out`, which it keeps.
+/// `fsi run` of dam_break_ranks.yaml on `np` ranks (0: without mpirun) with `args` (overrides,
+/// --restart) into `out`, which it keeps.
 void run_into(int np, const fs::path& out, const std::string& args) {
-  const Outcome o = fsi(np, "run " + scene + " --out " + out.string() + " --threads 1 " + args);
+  const Outcome o = fsi(np, "run " + dam_break + " --out " + out.string() + " --threads 1 " + args);
   INFO("np = " << np << ": " << o.output);
   REQUIRE(o.status == 0);
 }
@@ -343,7 +343,7 @@ TEST_CASE("a checkpoint with fewer particles than processes is refused once", "[
   fs::remove_all(out);
   run_into(0, out, set);
   const std::string checkpoint = (out / "checkpoint_000000001.h5").string();
-  const Outcome o = fsi(4, "run " + scene + " --out " + out.string() + " --threads 1 " + set +
+  const Outcome o = fsi(4, "run " + dam_break + " --out " + out.string() + " --threads 1 " + set +
                                " --restart " + checkpoint);
   INFO(o.output);
   CHECK(o.status == 2);

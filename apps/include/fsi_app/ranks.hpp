@@ -36,8 +36,8 @@ public:
   std::unique_ptr<particles::Decomposition<D>> particle_decomposition(std::size_t particles) const {
     const auto n = particles;
     if (n < static_cast<std::size_t>(size()))
-      throw InputError("fluid: " + std::to_string(n) + " particle" + (n == 1 ? "" : "s") +
-                       " for " + std::to_string(size()) +
+      throw InputError("fluid: " + std::to_string(n) + " particle" + (n == 1 ? "" : "s") + " for " +
+                       std::to_string(size()) +
                        " processes; each needs at least one (run on at most " + std::to_string(n) +
                        ")");
     return new_decomposition(std::integral_constant<int, D>());
