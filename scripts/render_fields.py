@@ -8,7 +8,7 @@ its spatial collection holds the particles first, then one grid per structure (a
 Prints one JSON line: the time drawn, the PNG, and the range each colour map spans (the data's
 own minimum and maximum at that time), so a caller can check the picture shows the file.
 
-Usage (pvpython needs an X server: scripts/render runs it under xvfb-run):
+Usage (pvpython needs an X server: scripts/render runs it under Xvfb):
   pvpython render_fields.py RUN_DIR [--time T] [--png FILE] [--size W H] [--view iso|front]
                             [--clip x|y|z]
 """

@@ -5,7 +5,7 @@ Mises colour maps span that frame's own minimum and maximum in fields.h5 exactly
 asked size, and it shows both (pixels of the pressure map's warm end and of the stress map's
 yellow end, and 5-95 % of it not background).
 
-Usage: python3 test_render_fields.py RENDER FSI SCENE OUTDIR. Exit 77 without ParaView or xvfb.
+Usage: python3 test_render_fields.py RENDER FSI SCENE OUTDIR. Exit 77 without ParaView or Xvfb.
 """
 import json
 import shutil
@@ -17,16 +17,19 @@ import matplotlib.image
 import numpy as np
 
 render, fsi, scene, out = sys.argv[1:5]
-if shutil.which("pvpython") is None or shutil.which("xvfb-run") is None:
-    print("skipped: pvpython or xvfb-run missing (python3-paraview, xvfb: scripts/setup)")
+if shutil.which("pvpython") is None or shutil.which("Xvfb") is None:
+    print("skipped: pvpython or Xvfb missing (python3-paraview, xvfb: scripts/setup)")
     sys.exit(77)
 shutil.rmtree(out, ignore_errors=True)
 subprocess.run([fsi, "run", scene, "--out", out, "--threads", "1", "--set", "time.end=0.02",
                 "--set", "output.interval=0.01"], check=True, stdout=subprocess.DEVNULL)
 png = out + "/picture.png"
 drawn = subprocess.run([render, out, "--time", "0.011", "--png", png, "--size", "800", "450",
-                        "--clip", "z"], check=True, capture_output=True, text=True).stdout
-report = json.loads(drawn.strip().splitlines()[-1])
+                        "--clip", "z"], capture_output=True, text=True)
+if drawn.returncode != 0:
+    print("FAIL: scripts/render exited %d:\n%s%s" % (drawn.returncode, drawn.stdout, drawn.stderr))
+    sys.exit(1)
+report = json.loads(drawn.stdout.strip().splitlines()[-1])
 
 failures = []
 if report["time"] != 0.01:
