@@ -56,18 +56,14 @@ std::optional<double> EmpsModel::stable_dt(double courant) const {
 void EmpsModel::declare(FieldsFile&) const {}
 
 bool EmpsModel::decompose(const Ranks& ranks) {
-  decomposition_ = ranks.particle_decomposition<2>(fluid_->particles().size());
-  ranks_ = &ranks;
-  fluid_->decompose(*decomposition_);
+  fluid_->decompose(ranks_.decompose(ranks, fluid_->particles().size()));
   return true;
 }
 
 void EmpsModel::gather_frame() {
-  if (ranks_) gathered_.gather(*ranks_, fluid_->particles(), fluid_->owned());
-}
-
-FrameParticles<2> EmpsModel::frame() const {
-  return ranks_ ? gathered_.view() : frame_of(fluid_->particles());
+  if (!ranks_.decomposed()) return;
+  gathered_.gather(ranks_, fluid_->particles(), fluid_->owned());
+  kinetic_energy_ = fluid_->kinetic_energy(); // collective
 }
 
 void EmpsModel::write_frame(FieldsFile& file, const std::vector<std::string>& fields) const {
@@ -119,14 +115,13 @@ std::optional<double> EmpsModel::probe(const ProbeSpec& probe) const {
         sum += p.p[i], ++count;
     return count > 0 ? sum / static_cast<double>(count) : 0.0;
   }
-  if (probe.quantity == "mean_speed" || probe.quantity == "kinetic_energy") {
-    double speeds = 0.0, v2 = 0.0;
-    for (std::size_t i = 0; i < p.n; ++i) {
-      const double s2 = p.v[0][i] * p.v[0][i] + p.v[1][i] * p.v[1][i];
-      speeds += std::sqrt(s2), v2 += s2;
-    }
-    if (probe.quantity == "mean_speed") return p.n ? speeds / static_cast<double>(p.n) : 0.0;
-    return 0.5 * fluid_->options().density * fluid_->options().volume() * v2; // per m of depth
+  if (probe.quantity == "kinetic_energy") // J per m of depth
+    return ranks_.decomposed() ? kinetic_energy_ : fluid_->kinetic_energy();
+  if (probe.quantity == "mean_speed") {
+    double speeds = 0.0;
+    for (std::size_t i = 0; i < p.n; ++i)
+      speeds += std::sqrt(p.v[0][i] * p.v[0][i] + p.v[1][i] * p.v[1][i]);
+    return p.n ? speeds / static_cast<double>(p.n) : 0.0;
   }
   if (probe.quantity == "wall_force_x" || probe.quantity == "wall_force_y") {
     const auto [first, last] = interface_segments();
@@ -174,20 +169,15 @@ std::optional<std::string> EmpsModel::non_finite() const {
   return std::nullopt;
 }
 
-std::size_t EmpsModel::global(std::size_t local) const {
-  return decomposition_ ? static_cast<std::size_t>(decomposition_->sum(static_cast<double>(local)))
-                        : local;
-}
-
 std::optional<ParticleCount> EmpsModel::particle_count() const {
   const auto& o = fluid_->options();
   // Decomposed: the global count, one reduction a step (the guard's collective check).
-  return ParticleCount{global(fluid_->owned()), {o.domain_min, o.domain_max}};
+  return ParticleCount{ranks_.global(fluid_->owned()), {o.domain_min, o.domain_max}};
 }
 
 void EmpsModel::report(JsonObject& run) const {
   run.add("fluid", fluid_report(*fluid_, initial_count_, particle_count()->count,
-                                global(fluid_->removed())));
+                                ranks_.global(fluid_->removed())));
 }
 
 } // namespace fsi::app::emps_plugin

@@ -47,7 +47,7 @@ public:
   /// built it from the whole scene.
   bool decompose(const Ranks& ranks) override;
   /// Decomposed: every rank's owned particles to rank 0, in id order (one-process files and
-  /// N-process files compare directly).
+  /// N-process files compare directly), and the kinetic energy (a global sum) for the probes.
   void gather_frame() override;
 
   emps::EmpsFluid& fluid() { return *fluid_; }
@@ -58,22 +58,20 @@ public:
 
 private:
   /// The particles a frame and the probes read: the fluid's own, or (decomposed) the gathered.
-  FrameParticles<2> frame() const;
-  /// A count over every rank when decomposed (exact: a sum of integers below 2^53).
-  std::size_t global(std::size_t local) const;
+  FrameParticles<2> frame() const { return gathered_.view(ranks_, fluid_->particles()); }
   /// [first, last) wall segments of the interfaces (every wall without one).
   std::pair<int, int> interface_segments() const;
 
   std::unique_ptr<erp::WallSet> walls_;
   std::vector<erp::InterfaceWalls> interface_walls_;
-  std::unique_ptr<particles::Decomposition<2>> decomposition_; // before the fluid that uses it
-  const Ranks* ranks_ = nullptr;                               ///< set when decomposed
+  DecomposedParticles<2> ranks_; // the hook, before the fluid that uses it
   std::unique_ptr<emps::EmpsFluid> fluid_;
   std::unique_ptr<FluidAdapter> adapter_;
   std::size_t initial_count_ = 0;
   std::vector<std::string> wall_names_; ///< by wall group: the scene's walls, then the interfaces
   mutable std::vector<double> xy_, v_, flag_; // output buffers
   GatheredParticles<2> gathered_;             // on rank 0, in id order
+  double kinetic_energy_ = 0.0;               // decomposed: at the last gather, J/m
 };
 
 } // namespace fsi::app::emps_plugin

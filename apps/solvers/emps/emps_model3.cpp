@@ -159,20 +159,14 @@ std::optional<double> EmpsModel3::stable_dt(double courant) const {
 }
 
 bool EmpsModel3::decompose(const Ranks& ranks) {
-  decomposition_ = ranks.particle_decomposition<3>(fluid_->particles().size());
-  ranks_ = &ranks;
-  fluid_->decompose(*decomposition_);
+  fluid_->decompose(ranks_.decompose(ranks, fluid_->particles().size()));
   return true;
 }
 
 void EmpsModel3::gather_frame() {
-  if (!ranks_) return;
-  gathered_.gather(*ranks_, fluid_->particles(), fluid_->owned());
+  if (!ranks_.decomposed()) return;
+  gathered_.gather(ranks_, fluid_->particles(), fluid_->owned());
   kinetic_energy_ = fluid_->kinetic_energy(); // collective
-}
-
-FrameParticles<3> EmpsModel3::frame() const {
-  return ranks_ ? gathered_.view() : frame_of(fluid_->particles());
 }
 
 void EmpsModel3::write_frame(FieldsFile& file, const std::vector<std::string>& fields) const {
@@ -232,7 +226,7 @@ std::optional<double> EmpsModel3::probe(const ProbeSpec& probe) const {
     return gap;
   }
   if (probe.quantity == "kinetic_energy") // J
-    return ranks_ ? kinetic_energy_ : fluid_->kinetic_energy();
+    return ranks_.decomposed() ? kinetic_energy_ : fluid_->kinetic_energy();
   if (probe.quantity == "mean_speed") {
     double speeds = 0.0;
     for (std::size_t i = 0; i < n; ++i)
@@ -242,20 +236,15 @@ std::optional<double> EmpsModel3::probe(const ProbeSpec& probe) const {
   return std::nullopt;
 }
 
-std::size_t EmpsModel3::global(std::size_t local) const {
-  return decomposition_ ? static_cast<std::size_t>(decomposition_->sum(static_cast<double>(local)))
-                        : local;
-}
-
 std::optional<ParticleCount> EmpsModel3::particle_count() const {
   const auto& o = fluid_->options();
   // Decomposed: the global count, one reduction a step (the guard's collective check).
-  return ParticleCount{global(fluid_->owned()), {o.domain_min, o.domain_max}};
+  return ParticleCount{ranks_.global(fluid_->owned()), {o.domain_min, o.domain_max}};
 }
 
 void EmpsModel3::report(JsonObject& run) const {
-  JsonObject f =
-      fluid_report(*fluid_, initial_count_, particle_count()->count, global(fluid_->removed()));
+  JsonObject f = fluid_report(*fluid_, initial_count_, particle_count()->count,
+                              ranks_.global(fluid_->removed()));
   f.add("wall_triangles", static_cast<long long>(walls_->triangles().size()));
   run.add("fluid", f);
 }

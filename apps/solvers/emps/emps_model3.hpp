@@ -65,14 +65,11 @@ public:
 
 private:
   /// The particles a frame and the probes read: the fluid's own, or (decomposed) the gathered.
-  FrameParticles<3> frame() const;
-  /// A count over every rank when decomposed (exact: a sum of integers below 2^53).
-  std::size_t global(std::size_t local) const;
+  FrameParticles<3> frame() const { return gathered_.view(ranks_, fluid_->particles()); }
 
   std::unique_ptr<erp::TriangleWallSet> walls_; // before the fluid that keeps a reference
   std::vector<erp::InterfaceTriangles> interfaces_;
-  std::unique_ptr<particles::Decomposition<3>> decomposition_; // before the fluid that uses it
-  const Ranks* ranks_ = nullptr;                               ///< set when decomposed
+  DecomposedParticles<3> ranks_; // the hook, before the fluid that uses it
   std::unique_ptr<emps::EmpsFluid3> fluid_;
   std::unique_ptr<TriangleAdapter> adapter_;
   std::unique_ptr<erp::TriangleLocator> locator_; ///< the wall_gap probe's nearest triangles

@@ -1,8 +1,8 @@
 #include "emps/frame_particles.hpp"
 
-#include <algorithm>
-
 namespace fsi::app::emps_plugin {
+
+namespace {
 
 template <int D> FrameParticles<D> frame_of(const emps::BasicParticles<D>& p) {
   FrameParticles<D> f;
@@ -15,43 +15,34 @@ template <int D> FrameParticles<D> frame_of(const emps::BasicParticles<D>& p) {
   return f;
 }
 
+} // namespace
+
 template <int D>
-void GatheredParticles<D>::gather(const Ranks& ranks, const emps::BasicParticles<D>& p,
+void GatheredParticles<D>::gather(DecomposedParticles<D>& ranks, const emps::BasicParticles<D>& p,
                                   std::size_t owned) {
-  packed_.resize(k * owned);
-  for (std::size_t i = 0; i < owned; ++i) {
-    double* row = &packed_[k * i];
+  ranks.gather(owned, k, [&](std::size_t i, double* row) {
     row[0] = p.id[i];
     for (int a = 0; a < D; ++a) row[1 + a] = p.position[a][i], row[1 + D + a] = p.velocity[a][i];
     row[1 + 2 * D] = p.p[i], row[2 + 2 * D] = p.pnd[i], row[3 + 2 * D] = p.surface[i];
-  }
-  ranks.gather(packed_, all_);
-  const std::vector<double>& all = all_;
-  const std::size_t n = all.size() / k;
-  order_.resize(n);
-  for (std::size_t j = 0; j < n; ++j) order_[j] = j;
-  std::sort(order_.begin(), order_.end(),
-            [&](std::size_t a, std::size_t b) { return all[k * a] < all[k * b]; });
-  for (std::size_t a = 0; a < D; ++a) x_[a].resize(n), v_[a].resize(n);
-  p_.resize(n), pnd_.resize(n), surface_.resize(n);
-  for (std::size_t j = 0; j < n; ++j) {
-    const double* row = &all[k * order_[j]];
-    for (std::size_t a = 0; a < D; ++a) x_[a][j] = row[1 + a], v_[a][j] = row[1 + D + a];
-    p_[j] = row[1 + 2 * D], pnd_[j] = row[2 + 2 * D];
-    surface_[j] = static_cast<std::uint8_t>(row[3 + 2 * D]);
-  }
+  });
+  const double* surface = ranks.column(3 + 2 * D);
+  surface_.resize(ranks.gathered());
+  for (std::size_t j = 0; j < surface_.size(); ++j)
+    surface_[j] = static_cast<std::uint8_t>(surface[j]);
 }
 
-template <int D> FrameParticles<D> GatheredParticles<D>::view() const {
+template <int D>
+FrameParticles<D> GatheredParticles<D>::view(const DecomposedParticles<D>& ranks,
+                                             const emps::BasicParticles<D>& own) const {
+  if (!ranks.decomposed()) return frame_of(own);
   FrameParticles<D> f;
-  f.n = p_.size();
-  for (std::size_t a = 0; a < D; ++a) f.x[a] = x_[a].data(), f.v[a] = v_[a].data();
-  f.p = p_.data(), f.pnd = pnd_.data(), f.surface = surface_.data();
+  f.n = ranks.gathered();
+  for (std::size_t a = 0; a < D; ++a)
+    f.x[a] = ranks.column(1 + a), f.v[a] = ranks.column(1 + D + a);
+  f.p = ranks.column(1 + 2 * D), f.pnd = ranks.column(2 + 2 * D), f.surface = surface_.data();
   return f;
 }
 
-template FrameParticles<2> frame_of<2>(const emps::BasicParticles<2>&);
-template FrameParticles<3> frame_of<3>(const emps::BasicParticles<3>&);
 template class GatheredParticles<2>;
 template class GatheredParticles<3>;
 
