@@ -109,9 +109,11 @@ void check_decomposable(const Scene& scene, const Args& a, const Ranks& ranks) {
     throw InputError(a.scene + ": not yet supported under mpirun (" + std::to_string(ranks.size()) +
                      " processes, issue 47): " + what + "; run it without mpirun");
   };
-  if (!scene.fluid || scene.fluid->type != "emps")
-    refuse(scene.fluid ? "fluid.type " + scene.fluid->type + " (EMPS only)"
+  if (!scene.fluid || (scene.fluid->type != "emps" && scene.fluid->type != "sph"))
+    refuse(scene.fluid ? "fluid.type " + scene.fluid->type + " (EMPS and SPH only)"
                        : "a scene without fluid");
+  if (scene.fluid->type == "sph" && (scene.checkpoint || !a.restart.empty()))
+    refuse("checkpoints and --restart of an SPH fluid");
   if (!scene.structures.empty()) refuse("structures");
   for (const auto& p : scene.output.probes)
     if (p.quantity.rfind("wall_force", 0) == 0) refuse("wall_force probes");

@@ -21,12 +21,13 @@ template <int D> void BasicSphFluid<D>::second_half(double dt) {
     e[c] = pe_[c].data(), we[c] = we_[c].data(), wv[c] = walls_.v[c].data();
     wa[c] = walls_.a[c].data();
   }
-  parallel_for(f.size(), [&](std::size_t i) {
+  parallel_for(owned(), [&](std::size_t i) {
     FSI_UNROLL for (int c = 0; c < D; ++c) {
       v[c][i] += a[c][i] * dt;
       x[c][i] += v[c][i] * half;
     }
   });
+  hook().update_ghosts(f.fields); // v for the continuity sums
   const double inv_rho0c0 = 1.0 / (options_.rho0 * options_.c0);
   const double c0 = options_.c0, four_h = 4.0 * h_;
   const double *p = f.p.data(), *vol = f.vol.data(), *wvol = walls_.vol.data();
@@ -36,7 +37,7 @@ template <int D> void BasicSphFluid<D>::second_half(double dt) {
   double *rho = f.rho.data(), *drho = f.drho.data();
   // Everything by value: the loop reads no member through this and no array through a reference.
   const double worst = parallel_reduce(
-      f.size(), 0.0,
+      owned(), 0.0,
       [=](std::size_t i) {
         const double p_i = p[i];
         double v_i[D], a_i[D], ap_i[D];
@@ -70,7 +71,7 @@ template <int D> void BasicSphFluid<D>::second_half(double dt) {
         return std::max(c0 + speed, std::sqrt(four_h * acc));
       },
       [](double l, double r) { return std::max(l, r); }); // NaN-safe: a NaN is caught by guard()
-  dt_acoustic_ = options_.acoustic_cfl * h_ / worst;
+  dt_acoustic_ = options_.acoustic_cfl * h_ / hook().max(worst);
 }
 
 template void BasicSphFluid<2>::second_half(double);

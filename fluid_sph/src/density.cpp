@@ -23,7 +23,7 @@ template <int D> void BasicSphFluid<D>::reinitialise_density() {
   const double rho0 = options_.rho0, inv_sigma0 = 1.0 / sigma0_;
   const bool free_surface = options_.free_surface;
   const double cell = options_.cell_volume();
-  parallel_for(f.size(), [&](std::size_t i) {
+  parallel_for(owned(), [&](std::size_t i) {
     const double rho_sum = rho0 * kernel_sum(i) * inv_sigma0;
     if (free_surface) {
       f.rho[i] = std::max(rho_sum, rho0);

@@ -11,28 +11,30 @@
 namespace fsi::sph {
 
 template <int D> double BasicSphFluid<D>::mean_neighbours() const {
-  const std::size_t n = fluid_.size();
-  if (n == 0) return 0.0;
-  return static_cast<double>(pstart_[n] + wstart_[n]) / static_cast<double>(n);
+  const std::size_t n = owned();
+  const double pairs = hook().sum(static_cast<double>(pstart_[n] + wstart_[n]));
+  const double all = hook().sum(static_cast<double>(n));
+  return all > 0.0 ? pairs / all : 0.0;
 }
 
 template <int D> double BasicSphFluid<D>::kinetic_energy() const {
   double e = 0.0;
-  for (std::size_t i = 0; i < fluid_.size(); ++i) {
+  for (std::size_t i = 0; i < owned(); ++i) {
     double v[D];
     for (int c = 0; c < D; ++c) v[c] = fluid_.v[c][i];
     e += dot<D>(v, v);
   }
-  return 0.5 * mass_ * e;
+  return 0.5 * mass_ * hook().sum(e);
 }
 
 template <int D> auto BasicSphFluid<D>::momentum() const -> Vec {
   Vec m = Vec::Zero();
-  for (std::size_t i = 0; i < fluid_.size(); ++i) {
+  for (std::size_t i = 0; i < owned(); ++i) {
     Vec v;
     for (int c = 0; c < D; ++c) v[c] = fluid_.v[c][i];
     m += v;
   }
+  for (int c = 0; c < D; ++c) m[c] = hook().sum(m[c]);
   return mass_ * m;
 }
 
@@ -42,7 +44,7 @@ double BasicSphFluid<D>::shepard(const Vec& point, Value value) const {
   double sw = 0.0, swv = 0.0;
   const Vec period = options_.domain_max - options_.domain_min;
   const std::array<bool, D> periodic = options_.periodic();
-  for (std::size_t i = 0; i < fluid_.size(); ++i) {
+  for (std::size_t i = 0; i < owned(); ++i) {
     double d[D];
     for (int c = 0; c < D; ++c) {
       d[c] = point[c] - fluid_.x[c][i];
@@ -52,6 +54,7 @@ double BasicSphFluid<D>::shepard(const Vec& point, Value value) const {
     sw += w;
     swv += w * value(i);
   }
+  sw = hook().sum(sw), swv = hook().sum(swv);
   return sw > 0.0 ? swv / sw : 0.0;
 }
 
@@ -73,9 +76,9 @@ template <int D> double BasicSphFluid<D>::surge_front() const {
   // sliding on a floor would pass (0.54 sigma0: W(0) and the half-plane of dummies below it).
   const double w0 = kernel_.W(0.0), bulk = 0.5 * (sigma0_ - w0);
   double front = -std::numeric_limits<double>::max();
-  for (std::size_t i = 0; i < fluid_.size(); ++i)
+  for (std::size_t i = 0; i < owned(); ++i)
     if (kernel_sum(i) - w0 >= bulk) front = std::max(front, fluid_.x[0][i]);
-  return front;
+  return hook().max(front);
 }
 
 template double BasicSphFluid<2>::mean_neighbours() const;

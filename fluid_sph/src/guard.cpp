@@ -29,7 +29,7 @@ template <int D> void BasicSphFluid<D>::guard(long step, double t) const {
     return true;
   };
   const std::size_t bad = parallel_reduce(
-      f.size(), none,
+      owned(), none,
       [&](std::size_t i) {
         for (int c = 0; c < D; ++c)
           if (!std::isfinite(f.x[c][i])) return i;
@@ -37,12 +37,15 @@ template <int D> void BasicSphFluid<D>::guard(long step, double t) const {
         return ok ? none : i;
       },
       [](std::size_t a, std::size_t b) { return std::min(a, b); });
-  if (bad == none) return;
-  const double r = f.rho[bad];
-  if (std::isfinite(r) && finite_velocity(bad))
-    throw RunError("fluid_sph: density " + fmt(r) + " out of [" + fmt(lo) + ", " + fmt(hi) +
-                   "] at " + where(bad, step, t));
-  throw RunError("fluid_sph: non-finite position, velocity or density at " + where(bad, step, t));
+  if (bad != none) { // decomposed: every process throws at agree()
+    const double r = f.rho[bad];
+    if (std::isfinite(r) && finite_velocity(bad))
+      hook().fail("fluid_sph: density " + fmt(r) + " out of [" + fmt(lo) + ", " + fmt(hi) +
+                  "] at " + where(bad, step, t));
+    else
+      hook().fail("fluid_sph: non-finite position, velocity or density at " + where(bad, step, t));
+  }
+  hook().agree();
 }
 
 template std::string BasicSphFluid<2>::where(std::size_t, long, double) const;

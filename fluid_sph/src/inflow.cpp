@@ -23,7 +23,7 @@ template <int D> void BasicSphFluid<D>::impose_inflow(double t) requires(D == 2)
   auto& f = fluid_;
   const Inflow& in = options_.inflow;
   const double x0 = options_.domain_min.x(), x1 = x0 + in.buffer;
-  parallel_for(f.size(), [&](std::size_t i) {
+  parallel_for(owned(), [&](std::size_t i) {
     const double x = grid_.wrap_x(f.x[0][i]);
     if (x < x0 || x >= x1) return;
     f.v[0][i] = in.profile(f.x[1][i], t);

@@ -50,7 +50,7 @@ template <int D> void BasicSphFluid<D>::correction_matrices() {
   const double *vol = f.vol.data(), *wvol = walls_.vol.data();
   double* det_a = f.det_a.data();
   // Everything by value: the loop reads no member through this and no array through a reference.
-  parallel_for(f.size(), [=](std::size_t i) {
+  parallel_for(owned(), [=](std::size_t i) {
     // A_i = -sum_j r_ij (x) grad W_ij V_j = -sum_j r dW e (x) e V_j (eq. 19), symmetric.
     double A[S] = {};
     for (std::uint32_t k = pstart[i]; k < pstart[i + 1]; ++k) {

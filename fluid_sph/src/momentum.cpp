@@ -22,11 +22,12 @@ template <int D> void BasicSphFluid<D>::first_half(double dt) {
     wn[c] = walls_.n[c].data();
   }
   for (int s = 0; s < S; ++s) b[s] = f.b[s]->data();
-  parallel_for(f.size(), [&](std::size_t i) {
+  parallel_for(owned(), [&](std::size_t i) {
     f.rho[i] += f.drho[i] * half;
     f.p[i] = c2 * (f.rho[i] - rho0); // eq. 2
     for (int c = 0; c < D; ++c) x[c][i] += v[c][i] * half;
   });
+  hook().update_ghosts(f.fields); // p (and v after damping) for the pair sums
   const double rho0c0 = rho0 * options_.c0, inv_c0 = 1.0 / options_.c0, inv_m = 1.0 / mass_;
   const bool lim = options_.riemann_limiter;
   const double rho0c0_pairs = options_.pair_dissipation ? rho0c0 : 0.0;
@@ -37,7 +38,7 @@ template <int D> void BasicSphFluid<D>::first_half(double dt) {
   std::array<const double*, D> we;
   for (int c = 0; c < D; ++c) we[c] = we_[c].data();
   // Everything by value: the loop reads no member through this and no array through a reference.
-  parallel_for(f.size(), [=](std::size_t i) {
+  parallel_for(owned(), [=](std::size_t i) {
     const double p_i = p[i];
     double v_i[D], b_i[S], F[D] = {};
     FSI_UNROLL for (int c = 0; c < D; ++c) v_i[c] = v[c][i];

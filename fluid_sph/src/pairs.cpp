@@ -42,8 +42,9 @@ template <int D> inline double off_normal(double r, const double* e, const doubl
 
 template <int D> void BasicSphFluid<D>::build_pairs(bool guard) {
   auto& f = fluid_;
-  const std::size_t n = f.size(), nw = walls_.size();
-  grid_.bin(f.xb.coords(), n);
+  // Pairs of the owned particles; neighbours among owned and ghosts.
+  const std::size_t n = owned(), nw = walls_.size();
+  grid_.bin(f.xb.coords(), f.size());
   wall_grid_.bin(walls_.xb.coords(), nw);
   const double cut2 = kernel_.cutoff() * kernel_.cutoff();
   const particles::Coords<D> xb = f.xb.coords(), wxb = walls_.xb.coords();
@@ -157,9 +158,10 @@ template <int D> void BasicSphFluid<D>::build_pairs(bool guard) {
         return i;
       },
       [](std::size_t a, std::size_t b) { return std::min(a, b); });
-  if (behind != none)
-    throw RunError("fluid_sph: behind the first wall layer (through a wall): " +
-                   where(behind, step_, t_));
+  if (behind != none) // decomposed: every process throws at agree()
+    hook().fail("fluid_sph: behind the first wall layer (through a wall): " +
+                where(behind, step_, t_));
+  hook().agree();
 }
 
 template void BasicSphFluid<2>::build_pairs(bool);

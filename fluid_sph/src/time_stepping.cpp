@@ -32,7 +32,7 @@ template <int D> void BasicSphFluid<D>::advance(double dt) {
   if (options_.damping_time > 0.0 && t_ < options_.damping_time) {
     const double T = options_.damping_time;
     const double keep = std::max(0.0, 1.0 - dt * 20.0 / T * (1.0 - t_ / T));
-    parallel_for(fluid_.size(), [&](std::size_t i) {
+    parallel_for(owned(), [&](std::size_t i) {
       for (int c = 0; c < D; ++c) fluid_.v[c][i] *= keep;
     });
   }
@@ -56,6 +56,7 @@ template <int D> void BasicSphFluid<D>::per_advection_step() {
   auto& f = fluid_;
   compute_advection_dt();
   // Periodic wrap; particles that left a non-periodic side of the domain are removed.
+  hook().drop_ghosts(f.fields); // the owned particles are removed, moved and reordered
   const Vec lo = options_.domain_min, hi = options_.domain_max;
   const std::array<bool, D> periodic = options_.periodic();
   keep_.assign(f.size(), 1);
@@ -69,6 +70,7 @@ template <int D> void BasicSphFluid<D>::per_advection_step() {
     if (out) keep_[i] = 0, any_out = true;
   }
   if (any_out) removed_ += f.fields.compact(keep_);
+  hook().migrate(f.fields, f.x); // decomposed: to the ranks whose regions hold them now
   // Sort by cell (particles of a cell contiguous, neighbours close in memory).
   grid_.bin(f.x.coords(), f.size());
   f.fields.permute(grid_.order(), scratch_);
@@ -76,10 +78,13 @@ template <int D> void BasicSphFluid<D>::per_advection_step() {
     std::copy(f.x[c].begin(), f.x[c].end(), f.xb[c].begin());
     std::copy(walls_.x[c].begin(), walls_.x[c].end(), walls_.xb[c].begin());
   }
+  build_ghosts(f.x);
   build_pairs();
   ++builds_;
   reinitialise_density();
+  hook().update_ghosts(f.fields); // rho, V for B (eq. 19)
   correction_matrices();
+  hook().update_ghosts(f.fields); // B for the pair sums (eqs. 18, 20, 24)
   prior_acceleration();
   if (options_.transport_velocity) transport_shift();
   elapsed_ = 0.0;
@@ -94,27 +99,27 @@ template <int D> void BasicSphFluid<D>::per_advection_step() {
 template <int D> void BasicSphFluid<D>::compute_acoustic_dt() {
   const auto& f = fluid_;
   double worst = options_.c0;
-  for (std::size_t i = 0; i < f.size(); ++i) {
+  for (std::size_t i = 0; i < owned(); ++i) {
     double v_i[D], a_i[D];
     for (int c = 0; c < D; ++c) v_i[c] = f.v[c][i], a_i[c] = f.a[c][i];
     const double v = length<D>(v_i), a = length<D>(a_i);
     worst = std::max(worst, std::max(options_.c0 + v, std::sqrt(4.0 * h_ * a)));
   }
-  dt_acoustic_ = options_.acoustic_cfl * h_ / worst;
+  dt_acoustic_ = options_.acoustic_cfl * h_ / hook().max(worst);
 }
 
 template <int D> void BasicSphFluid<D>::compute_advection_dt() {
   const auto& f = fluid_;
   const double four_h = 4.0 * h_;
   // Dt = 0.25 h / max(sqrt(max(|v|^2, 4 h |a|)), U_ref, nu / h) (method notes).
-  const double worst = parallel_reduce(
-      f.size(), 0.0,
+  const double worst = hook().max(parallel_reduce(
+      owned(), 0.0,
       [&](std::size_t i) {
         double v_i[D], a_i[D];
         for (int c = 0; c < D; ++c) v_i[c] = f.v[c][i], a_i[c] = f.a[c][i];
         return std::max(dot<D>(v_i, v_i), four_h * std::sqrt(dot<D>(a_i, a_i)));
       },
-      [](double l, double r) { return std::max(l, r); });
+      [](double l, double r) { return std::max(l, r); }));
   const double speed =
       std::max({std::sqrt(worst), options_.u_advection(), options_.viscosity / h_});
   Dt_ = options_.advection_cfl * h_ / speed;
@@ -122,6 +127,21 @@ template <int D> void BasicSphFluid<D>::compute_advection_dt() {
   // viscous_number (the Taylor-Green decay gains 5 % at 0.19, docs/fluid_sph.md).
   const double nu = options_.viscosity, number = options_.viscous_number;
   if (nu > 0.0 && number > 0.0) Dt_ = std::min(Dt_, number * h_ * h_ / nu);
+}
+
+template <int D> void BasicSphFluid<D>::build_ghosts(const particles::VectorField<D>& x) {
+  hook().build_ghosts(fluid_.fields, x, kernel_.cutoff()); // the pairs' reach: no skin
+}
+
+template <int D> void BasicSphFluid<D>::decompose(particles::Decomposition<D>& decomposition) {
+  if (options_.periodic_x || options_.periodic_y || options_.periodic_z || tracked_ < walls_.size())
+    throw InputError("fluid_sph: a periodic fluid or tracked wall forces cannot be decomposed");
+  decomposition_ = &decomposition;
+  // The advection step under way: partitioned at its build positions, its pairs rebuilt there
+  // (B, V, rho and the prior acceleration are the particles' own, moved with them).
+  hook().migrate(fluid_.fields, fluid_.xb);
+  build_ghosts(fluid_.xb);
+  build_pairs(false);
 }
 
 template double BasicSphFluid<2>::next_dt() const;
@@ -136,5 +156,9 @@ template void BasicSphFluid<2>::compute_acoustic_dt();
 template void BasicSphFluid<3>::compute_acoustic_dt();
 template void BasicSphFluid<2>::compute_advection_dt();
 template void BasicSphFluid<3>::compute_advection_dt();
+template void BasicSphFluid<2>::build_ghosts(const particles::VectorField<2>&);
+template void BasicSphFluid<3>::build_ghosts(const particles::VectorField<3>&);
+template void BasicSphFluid<2>::decompose(particles::Decomposition<2>&);
+template void BasicSphFluid<3>::decompose(particles::Decomposition<3>&);
 
 } // namespace fsi::sph

@@ -11,10 +11,10 @@ template <int D> void BasicSphFluid<D>::transport_shift() {
   auto& f = fluid_;
   const double coefficient = options_.transport_coefficient * h_ * h_;
   auto& dx = scratch_;
-  dx.resize(D * f.size());
+  dx.resize(D * owned());
   std::array<const double*, S> b;
   for (int s = 0; s < S; ++s) b[s] = f.b[s]->data();
-  parallel_for(f.size(), [&](std::size_t i) {
+  parallel_for(owned(), [&](std::size_t i) {
     // Delta r_i = 0.2 h^2 (-sum_j (B_i + B_j) grad W_ij V_j - sum_a 2 B_i grad W_ia V_a)
     // (eq. 24 in the reference code's sign, method notes).
     double sum[D] = {}, b_i[S];
@@ -35,7 +35,7 @@ template <int D> void BasicSphFluid<D>::transport_shift() {
     FSI_UNROLL for (int c = 0; c < D; ++c) dx[D * i + static_cast<std::size_t>(c)] =
         -coefficient * sum[c];
   });
-  parallel_for(f.size(), [&](std::size_t i) {
+  parallel_for(owned(), [&](std::size_t i) {
     FSI_UNROLL for (int c = 0; c < D; ++c) f.x[c][i] += dx[D * i + static_cast<std::size_t>(c)];
   });
 }

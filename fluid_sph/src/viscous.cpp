@@ -13,7 +13,7 @@ template <int D> void BasicSphFluid<D>::prior_acceleration() {
   const Vec g = options_.gravity;
   const double mu = options_.rho0 * options_.viscosity, reg = 0.01 * h_;
   const double inv_m = 1.0 / mass_;
-  parallel_for(f.size(), [&](std::size_t i) {
+  parallel_for(owned(), [&](std::size_t i) {
     double F[D] = {};
     if (mu > 0.0) {
       // Viscous force 2 mu V_i sum_j V_j (v_i - v_j) dW / (r + 0.01 h) (eq. 3); no-slip walls

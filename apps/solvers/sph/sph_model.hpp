@@ -3,6 +3,7 @@
 // with the walls' prescribed motion) and, coupled, on boundary points of each structure's
 // interface mesh (fluid_sph/interface_boundary.hpp), whose forces return to the interface nodes
 // (BoundaryAdapter<2>).
+#include "decomposed_particles.hpp"
 #include "fluid_sph/interface_boundary.hpp"
 #include "fluid_sph/sph_fluid.hpp"
 #include "fsi_app/solver_plugin.hpp"
@@ -32,10 +33,17 @@ public:
   /// run's step holds the acoustic steps that cross it.
   std::optional<double> stable_dt(double courant) const override;
   void write_frame(FieldsFile& file, const std::vector<std::string>& fields) const override;
+  /// Decomposed: the value gather_frame evaluated over every rank.
   std::optional<double> probe(const ProbeSpec& probe) const override;
   std::optional<ParticleCount> particle_count() const override;
   std::optional<std::string> non_finite() const override;
   void report(JsonObject& run) const override;
+  /// The fluid steps over `ranks` (parallel::ParticleDecomposition under mpirun); every rank
+  /// built it from the whole scene and holds every wall particle. Without structures.
+  bool decompose(const Ranks& ranks) override;
+  /// Decomposed: every rank's owned particles to rank 0 in id order (one-process files and
+  /// N-process files compare directly) and every probe evaluated over every rank.
+  void gather_frame() override;
   /// The fluid under "fluid/", the interface motion at the fluid's time under "fluid/interface/".
   void write_state(StateArchive& archive) const override;
   void read_state(const StateArchive& archive) override;
@@ -52,8 +60,13 @@ public:
   Vec2 wall_force() const;
 
 private:
+  /// The probe's value (collective when decomposed).
+  std::optional<double> evaluate(const ProbeSpec& probe) const;
+
   std::vector<sph::InterfaceBoundary> boundaries_;
   std::vector<std::vector<Vec2>> interface_x_; // each interface's nodes where its points are now
+  DecomposedParticles<2> ranks_;               // the hook, before the fluid that uses it
+  std::vector<ProbeSpec> probes_; // the scene's, evaluated by gather_frame when decomposed
   std::unique_ptr<sph::SphFluid> fluid_;
   std::unique_ptr<BoundaryAdapter<2>> adapter_;
   std::size_t initial_count_ = 0, first_point_ = 0;

@@ -5,6 +5,7 @@
 // interface nodes (BoundaryAdapter<3>). Where a structure's boundary points stand, the tank's
 // dummies are left out (e.g. a plate forming the tank's floor: the fluid sees the plate there,
 // not a rigid floor); no fluid particle is filled behind an interface or within l0/2 of it.
+#include "decomposed_particles.hpp"
 #include "fluid_sph/interface_boundary3.hpp"
 #include "fluid_sph/sph_fluid.hpp"
 #include "fsi_app/solver_plugin.hpp"
@@ -39,9 +40,16 @@ public:
   /// The fluid's advection step Dt (its dual criteria; the Courant number is not used).
   std::optional<double> stable_dt(double courant) const override;
   void write_frame(FieldsFile& file, const std::vector<std::string>& fields) const override;
+  /// Decomposed: the value gather_frame evaluated over every rank.
   std::optional<double> probe(const ProbeSpec& probe) const override;
   std::optional<ParticleCount> particle_count() const override;
   void report(JsonObject& run) const override;
+  /// The fluid steps over `ranks` (parallel::ParticleDecomposition under mpirun); every rank
+  /// built it from the whole scene and holds every wall particle. Without structures.
+  bool decompose(const Ranks& ranks) override;
+  /// Decomposed: every rank's owned particles to rank 0 in id order (one-process files and
+  /// N-process files compare directly) and every probe evaluated over every rank.
+  void gather_frame() override;
   /// The fluid under "fluid/" and, coupled, the interface motion at the fluid's time under
   /// "fluid/interface/motion".
   void write_state(StateArchive& archive) const override;
@@ -58,8 +66,13 @@ public:
   std::size_t first_point() const { return first_point_; }
 
 private:
+  /// The probe's value (collective when decomposed).
+  std::optional<double> evaluate(const ProbeSpec& probe) const;
+
   std::vector<sph::InterfaceBoundary3> boundaries_;
   std::vector<std::vector<Vec3>> interface_x_; // each interface's nodes where its points are now
+  DecomposedParticles<3> ranks_;               // the hook, before the fluid that uses it
+  std::vector<ProbeSpec> probes_; // the scene's, evaluated by gather_frame when decomposed
   std::unique_ptr<sph::SphFluid3> fluid_;
   std::unique_ptr<BoundaryAdapter<3>> adapter_;
   std::size_t initial_count_ = 0, first_point_ = 0;

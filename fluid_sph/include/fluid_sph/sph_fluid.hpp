@@ -19,6 +19,7 @@
 // What stays 2-D (members requires(D == 2)): polylines, rigid wall motions, the inflow buffer and
 // the interface boundary of a 2-D interface mesh (fluid_sph/interface_boundary.hpp).
 #include "fluid_sph/options.hpp"
+#include "particles/decomposition.hpp"
 #include "particles/field_set.hpp"
 #include "particles/kernels.hpp"
 #include "particles/periodic_grid.hpp"
@@ -196,10 +197,21 @@ public:
   /// one is shortened to land on it; the advection step then goes on at the next advance).
   void advance_to(double t_end);
 
+  /// Steps from now on decomposed over processes through `decomposition` (issue 47), which must
+  /// outlive the fluid; every process built the whole fluid. The first migration partitions the
+  /// particles at their build positions and the advection step's pairs are rebuilt over the
+  /// owned particles and the ghosts within the kernel's support (every process holds every wall
+  /// particle). Not periodic, not tracking wall forces, not saved or checkpointed (refused
+  /// under mpirun before this).
+  void decompose(particles::Decomposition<D>& decomposition);
+  /// The particles this process owns: the first owned() entries of particles(); ghosts follow.
+  std::size_t owned() const { return fluid_.size() - hook().ghosts(); }
+
   double time() const { return t_; }
   long steps() const { return step_; }
   long advection_steps() const { return builds_; }
   double advection_dt() const { return Dt_; }
+  /// Particles that left the domain, on this process (decomposed: the caller sums them).
   std::size_t removed() const { return removed_; }
   double mean_neighbours() const;
   double sigma0() const { return sigma0_; }
@@ -207,7 +219,7 @@ public:
   const BasicFluidParticles<D>& particles() const { return fluid_; }
   const BasicWallParticles<D>& walls() const { return walls_; }
 
-  // Probes.
+  // Probes: over every process when decomposed (collective), the first owned() particles here.
   double kinetic_energy() const;
   Vec momentum() const;
   /// Kernel-weighted (Shepard) pressure at a point, from the fluid particles within 2h; 0 if none.
@@ -274,6 +286,11 @@ private:
   void first_half(double dt);
   void second_half(double dt);
   void guard(long step, double t) const;
+  /// The exchange hook: the decomposition given, or the serial one.
+  particles::Decomposition<D>& hook() const { return decomposition_ ? *decomposition_ : local_; }
+  /// Decomposed: the ghosts within the kernel's support of the owned particles at `x` (none
+  /// held on entry).
+  void build_ghosts(const particles::VectorField<D>& x);
   std::string where(std::size_t i, long step, double t) const;
 
   Options options_;
@@ -297,6 +314,8 @@ private:
   std::size_t tracked_ = static_cast<std::size_t>(-1); // first tracked wall particle
   std::array<std::vector<double>, D> wf_;              // their force, last acoustic step
   Reaction reaction_ = Reaction::exact;
+  mutable particles::LocalParticles<D> local_;           // the serial hook
+  particles::Decomposition<D>* decomposition_ = nullptr; // set by decompose
 };
 
 // No `extern template class`: the members are instantiated one by one in src/ (the class as a
