@@ -68,7 +68,7 @@ double mean_speed(const DecomposedParticles<D>& ranks, const sph::BasicSphFluid<
   return n ? ranks.sum(speeds) / static_cast<double>(n) : 0.0;
 }
 
-/// Collective: run.json's fluid block, counts over every rank.
+/// Collective: run.json's fluid block, counts over every rank (decomposed: and the ghosts).
 template <int D>
 JsonObject fluid_report(const DecomposedParticles<D>& ranks, const sph::BasicSphFluid<D>& fluid,
                         std::size_t initial, std::size_t first_point) {
@@ -81,6 +81,8 @@ JsonObject fluid_report(const DecomposedParticles<D>& ranks, const sph::BasicSph
       .add("mean_neighbours", fluid.mean_neighbours())
       .add("acoustic_steps", static_cast<long long>(fluid.steps()))
       .add("advection_steps", static_cast<long long>(fluid.advection_steps()));
+  if (ranks.decomposed()) // every rank's ghosts at the end (the halo of the last pair build)
+    f.add("ghosts", static_cast<long long>(ranks.global(fluid.particles().size() - fluid.owned())));
   return f;
 }
 
