@@ -231,6 +231,19 @@ TEST_CASE("bad input under mpirun: exit 2, the message once", "[mpi]") {
   INFO(coupled3.output);
   CHECK(coupled3.status == 2);
   CHECK(occurrences(coupled3.output, "(2 processes, issue 47): structures;") == 1);
+  // An SPH restart, and a periodic SPH fluid (the inflow channel): refused once.
+  const Outcome restart =
+      fsi(2, "run " + std::string(FSI_TEST_DATA) + "/dam_break_ranks_sph.yaml --out " +
+                 out.string() + " --restart " + (out / "none.h5").string());
+  INFO(restart.output);
+  CHECK(restart.status == 2);
+  CHECK(occurrences(restart.output, "checkpoints and --restart of an SPH fluid") == 1);
+  const Outcome periodic =
+      fsi(2, "run " + std::string(FSI_SOURCE_DIR) +
+                 "/data/scenes/poiseuille_channel_sph.yaml --out " + out.string());
+  INFO(periodic.output);
+  CHECK(periodic.status == 2);
+  CHECK(occurrences(periodic.output, "a periodic fluid or tracked wall forces cannot be") == 1);
   CHECK(!fs::exists(out / "fields.h5")); // refused before any computation
 }
 
