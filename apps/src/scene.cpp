@@ -503,9 +503,12 @@ MotionSpec read_motion3(Section s) {
   m.kind = motion_kind(s);
   m.dof = s.choice("dof", {"rotation", "x", "y", "z"}, "rotation",
                    "rotation about axis through pivot, or translation along x, y or z");
-  m.axis = s.vec3("axis", Vec3::UnitZ(),
-                  "rotation axis (normalised), right-handed: counter-clockwise seen from its tip");
-  m.pivot3 = s.vec3("pivot", Vec3::Zero(), "a point of the rotation axis in the scene frame, m");
+  m.axis =
+      s.vec3("axis", Vec3::UnitZ(),
+             "rotation axis (normalised; default [0, 0, 1]), right-handed: counter-clockwise seen "
+             "from its tip");
+  m.pivot3 = s.vec3("pivot", Vec3::Zero(),
+                    "a point of the rotation axis in the scene frame (default the origin), m");
   if (!s.context().documenting() && !(m.axis.norm() > 0.0)) s.fail("axis", "is zero");
   read_profile(s, m);
   return m;
