@@ -42,12 +42,13 @@ public:
   coupling::FluidSolver& coupling_solver() override { return *adapter_; }
   /// Pressure (mirror, eqs. 25-26), repulsive (eq. 27 and the wall damper) and viscous (eq. 24)
   /// parts of the wall force on the interfaces' segments (eq. 52, with the sign on the structure).
+  /// Decomposed: collective, every rank's particles summed.
   std::vector<std::pair<std::string, Vec2>> force_parts() const override;
   /// The fluid steps over `ranks` (parallel::ParticleDecomposition under mpirun); every rank
   /// built it from the whole scene.
   bool decompose(const Ranks& ranks) override;
   /// Decomposed: every rank's owned particles to rank 0, in id order (one-process files and
-  /// N-process files compare directly).
+  /// N-process files compare directly), and the wall force of every rank's particles.
   void gather_frame() override;
 
   emps::EmpsFluid& fluid() { return *fluid_; }
@@ -61,6 +62,9 @@ private:
   FrameParticles<2> frame() const;
   /// A count over every rank when decomposed (exact: a sum of integers below 2^53).
   std::size_t global(std::size_t local) const;
+  /// The force on the interfaces' segments (every wall's without one); decomposed: collective,
+  /// every rank's particles summed (Ranks::sum).
+  emps::WallForceParts wall_force() const;
   /// [first, last) wall segments of the interfaces (every wall without one).
   std::pair<int, int> interface_segments() const;
 
@@ -74,6 +78,7 @@ private:
   std::vector<std::string> wall_names_; ///< by wall group: the scene's walls, then the interfaces
   mutable std::vector<double> xy_, v_, flag_; // output buffers
   GatheredParticles<2> gathered_;             // on rank 0, in id order
+  emps::WallForceParts gathered_force_;       // decomposed: wall_force() at the last frame
 };
 
 } // namespace fsi::app::emps_plugin
