@@ -2,8 +2,9 @@
 // data/dam_break_ranks_3d.yaml (3-D, triangle walls) on 1, 2 and 4 ranks against one process,
 // through the files a user gets (probes.csv, fields.h5, run.json), bad input under mpirun: exit 2,
 // the message printed once, and a run that fails on some ranks only: exit 3 on every rank, the
-// failing rank's message once, the files kept. A plain program (not under mpiexec) that starts
-// mpirun itself.
+// failing rank's message once, the files kept; checkpoints restarted on another rank count; coupled
+// scenes (data/walhorn_ranks.yaml, an implicit scheme, a coupled checkpoint) against one process.
+// A plain program (not under mpiexec) that starts mpirun itself.
 #include <catch2/catch.hpp>
 #include <hdf5.h>
 
