@@ -275,10 +275,16 @@ template <int D> std::optional<double> BasicCoupledModel<D>::probe(const ProbeSp
 }
 
 template <int D> std::optional<std::string> BasicCoupledModel<D>::non_finite() const {
-  if (auto what = fluid_->non_finite()) return what;
-  for (const auto& st : structures_)
-    if (auto what = st->non_finite()) return what;
-  return std::nullopt;
+  if (auto what = fluid_->non_finite()) return what; // the same walls on every rank
+  std::optional<std::string> what;
+  if (!ranks_ || ranks_->rank() == 0) // decomposed: rank 0's, whose structures are solved
+    for (const auto& st : structures_)
+      if ((what = st->non_finite())) break;
+  if (!ranks_ || structures_.empty()) return what;
+  std::vector<double> found{what ? 1.0 : 0.0}; // every rank stops at the same step
+  ranks_->broadcast(found);
+  if (found[0] != 0.0 && !what) what = "a structure (solved on rank 0) is not finite";
+  return what;
 }
 
 template <int D> std::vector<std::string> BasicCoupledModel<D>::take_notes() {

@@ -1,6 +1,9 @@
 #include "fsi_app/root_structures.hpp"
 
+#include "fsi/core/error.hpp"
+
 #include <cstddef>
+#include <string>
 
 namespace fsi::app {
 
@@ -38,17 +41,31 @@ void sum_loads(const Ranks& ranks, coupling::BasicInterfaceLoads<D>& loads,
 
 template <int D> void RootStructures<D>::decompose(const Ranks& ranks) {
   ranks_ = &ranks;
-  motion_ = solver_.interface_motion();
-  pack_motion(motion_, packed_);
-  ranks.broadcast(packed_); // the same on entry: rank 0's bits, so that nothing depends on it
-  unpack_motion(packed_, motion_);
+  motion_ = solver_.interface_motion(); // the same on every rank: each built the scene
+  share("");
 }
 
 template <int D> void RootStructures<D>::advance(double t, double dt) {
-  if (solves()) solver_.advance(t, dt);
-  if (!ranks_) return;
-  if (solves()) pack_motion(solver_.interface_motion(), packed_);
-  ranks_->broadcast(packed_); // other ranks: packed_ has the size of the first motion
+  std::string failure;
+  try {
+    if (solves()) solver_.advance(t, dt);
+  } catch (const RunError& e) { // rank 0 alone: every rank must stop at the same point
+    if (!ranks_) throw;
+    failure = e.what();
+  }
+  if (ranks_) share(failure);
+}
+
+template <int D> void RootStructures<D>::share(const std::string& failure) {
+  if (solves()) {
+    pack_motion(solver_.interface_motion(), packed_);
+    packed_.push_back(failure.empty() ? 0.0 : 1.0);
+  } else {
+    packed_.resize(3 * D * motion_.size() + 1);
+  }
+  ranks_->broadcast(packed_);
+  if (packed_.back() != 0.0)
+    throw RunError(solves() ? failure : "a structure failed on rank 0, which solves it");
   unpack_motion(packed_, motion_);
 }
 

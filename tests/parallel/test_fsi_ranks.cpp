@@ -495,3 +495,25 @@ TEST_CASE("a coupled checkpoint at np = 4 continues on 2 ranks", "[mpi]") {
   CHECK(worst <= 1e-10 * largest);
   CHECK(relative_probes(out, four, 10) <= 1e-9);
 }
+
+TEST_CASE("a structure failing on rank 0 stops every rank as one process does", "[mpi]") {
+  // walhorn_ranks.yaml with an obstacle of E = 0.01 Pa and dt = 1 ms: its elements invert at
+  // structure step 3. Rank 0 solves it; the failure travels with the motion's broadcast, so no
+  // rank waits for it: exit 3 on every rank, rank 0's message once, run.json "failed".
+  const std::string set = "--set structures[0].material.youngs_modulus=0.01 --set time.dt=1e-3 "
+                          "--set time.end=0.05 --set output.interval=1e-3";
+  const fs::path serial = fs::temp_directory_path() / "walhorn_failure_np0",
+                 two = fs::temp_directory_path() / "walhorn_failure_np2";
+  for (const auto& out : {serial, two}) fs::remove_all(out);
+  const Outcome one = fsi(0, "run " + walhorn + " --out " + serial.string() + " " + set);
+  const Outcome o = fsi(2, "run " + walhorn + " --out " + two.string() + " " + set, 120);
+  INFO(o.output);
+  CHECK(one.status == 3);
+  CHECK(o.status == 3);
+  const std::string what = "structure 'obstacle': element 2: det F = ";
+  CHECK(occurrences(one.output, what) == 1);
+  CHECK(occurrences(o.output, what) == 1);
+  CHECK(occurrences(o.output, "(structure step 3, t = 0.003)") == 1);
+  CHECK(occurrences(text_of(two / "run.json"), "\"status\": \"failed\"") == 1);
+  CHECK(frames(two) == 4); // t = 0 to the last step, 3 ms
+}

@@ -54,6 +54,7 @@ public:
   void report(JsonObject& run) const override;
   std::vector<std::string> take_notes() override;
   std::optional<ParticleCount> particle_count() const override { return fluid_->particle_count(); }
+  /// Decomposed: collective (rank 0's structures' finiteness broadcast).
   std::optional<std::string> non_finite() const override;
   /// The coupler with both participants (coupling::CouplingScheme::write_state).
   void write_state(StateArchive& archive) const override { scheme_->write_state(archive); }

@@ -8,6 +8,7 @@
 #include "coupling/interface.hpp"
 #include "fsi_app/ranks.hpp"
 
+#include <string>
 #include <vector>
 
 namespace fsi::app {
@@ -27,7 +28,8 @@ public:
   void set_interface_loads(const coupling::BasicInterfaceLoads<D>& loads) override {
     if (solves()) solver_.set_interface_loads(loads);
   }
-  /// Rank 0 solves; then its motion reaches every rank (collective when decomposed).
+  /// Rank 0 solves; then its motion reaches every rank (collective when decomposed). A
+  /// RunError of rank 0's solve is thrown on every rank (rank 0's message there).
   void advance(double t, double dt) override;
   coupling::BasicInterfaceMotion<D> interface_motion() const override {
     return ranks_ ? motion_ : solver_.interface_motion();
@@ -41,6 +43,8 @@ public:
 
 private:
   bool solves() const { return !ranks_ || ranks_->rank() == 0; }
+  /// Rank 0's motion (and whether its solve failed, with `failure`) to every rank.
+  void share(const std::string& failure);
 
   coupling::BasicStructureSolver<D>& solver_;
   const Ranks* ranks_ = nullptr;
