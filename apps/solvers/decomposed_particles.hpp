@@ -26,6 +26,10 @@ public:
   std::size_t global(std::size_t local) const;
   /// A sum over every rank when decomposed.
   double sum(double local) const { return hook_ ? hook_->sum(local) : local; }
+  /// Every rank's `values` summed entry by entry, the same bits on every rank (Ranks::sum).
+  void sum(std::vector<double>& values) const {
+    if (ranks_) ranks_->sum(values);
+  }
 
   /// Collective: every probe's value by `evaluate` (itself collective, the same calls in the
   /// same order on every rank), kept for probe_value on rank 0, which alone asks.

@@ -7,22 +7,38 @@
 #include "fsi_app/solver_plugin.hpp"
 
 #include <algorithm>
+#include <functional>
 
 namespace fsi::app {
 
 // The fluid adapter as the coupler sees it, keeping the last wall motion it was given: what
-// interface.h5 records as the motion of the step.
+// interface.h5 records as the motion of the step. Decomposed: its loads are every rank's summed
+// (the same on every rank, so every rank's scheme computes the same iterates), and `after`
+// follows each advance (collective: the model's force columns).
 template <int D> class BasicCoupledModel<D>::FluidTap final : public coupling::BasicFluidSolver<D> {
 public:
   explicit FluidTap(coupling::BasicFluidSolver<D>& fluid) : fluid_(fluid) {}
+  /// From now on every rank's loads summed after each advance. Before the first, the loads
+  /// are the same on every rank (each built the same fluid and read the same checkpoint).
+  void decompose(const Ranks& ranks, std::function<void()> after) {
+    ranks_ = &ranks;
+    after_ = std::move(after);
+    loads_ = fluid_.interface_loads();
+  }
   void initialize() override { fluid_.initialize(); }
   void set_interface_motion(const coupling::BasicInterfaceMotion<D>& m) override {
     motion_ = m;
     fluid_.set_interface_motion(m);
   }
-  void advance(double t, double dt) override { fluid_.advance(t, dt); }
+  void advance(double t, double dt) override {
+    fluid_.advance(t, dt);
+    if (!ranks_) return;
+    loads_ = fluid_.interface_loads(); // this rank's particles' (eqs. 52-59)
+    sum_loads(*ranks_, loads_, buffer_);
+    after_();
+  }
   const coupling::BasicInterfaceLoads<D>& interface_loads() const override {
-    return fluid_.interface_loads();
+    return ranks_ ? loads_ : fluid_.interface_loads();
   }
   void save_state() override { fluid_.save_state(); }
   void restore_state() override { fluid_.restore_state(); }
@@ -35,6 +51,10 @@ public:
 private:
   coupling::BasicFluidSolver<D>& fluid_;
   coupling::BasicInterfaceMotion<D> motion_;
+  const Ranks* ranks_ = nullptr;
+  std::function<void()> after_;
+  coupling::BasicInterfaceLoads<D> loads_;
+  std::vector<double> buffer_;
 };
 
 namespace {
@@ -120,6 +140,7 @@ template <int D> BasicCoupledModel<D>::BasicCoupledModel(const Scene& scene) {
   }
   fluid_ = build_fluid<D>(scene, interfaces, solid);
   group_ = std::make_unique<coupling::BasicStructureGroup<D>>(std::move(members));
+  root_ = std::make_unique<RootStructures<D>>(*group_);
   const CouplingSpec c = scene.coupling.value_or(CouplingSpec{});
   tap_ = std::make_unique<FluidTap>(fluid_solver<D>(*fluid_));
   record_ = c.record_interface;
@@ -127,7 +148,7 @@ template <int D> BasicCoupledModel<D>::BasicCoupledModel(const Scene& scene) {
   needs_ = registry.scheme_needs(c.options.scheme);
   coupling::BasicParticipants<D> p;
   if (needs_.fluid) p.fluid = tap_.get();
-  if (needs_.structure) p.structure = group_.get();
+  if (needs_.structure) p.structure = root_.get();
   replay_ = open_replay<D>(scene, nodes);
   if (replay_) {
     BasicInterfaceHistory<D>* h = replay_.get();
@@ -146,9 +167,31 @@ template <int D> BasicCoupledModel<D>::BasicCoupledModel(const Scene& scene) {
 
 template <int D> std::optional<double> BasicCoupledModel<D>::stable_dt(double courant) const {
   std::optional<double> dt = fluid_->stable_dt(courant);
+  std::optional<double> solid; // decomposed: rank 0's, whose structures are solved
   for (const auto& s : structures_)
-    if (auto d = s->stable_dt(courant)) dt = dt ? std::min(*dt, *d) : *d;
+    if (auto d = s->stable_dt(courant)) solid = solid ? std::min(*solid, *d) : *d;
+  if (ranks_ && !structures_.empty()) {
+    std::vector<double> shared{solid ? *solid : -1.0};
+    ranks_->broadcast(shared);
+    solid = shared[0] >= 0.0 ? std::optional(shared[0]) : std::nullopt;
+  }
+  if (solid) dt = dt ? std::min(*dt, *solid) : *solid;
   return dt;
+}
+
+template <int D> bool BasicCoupledModel<D>::decompose(const Ranks& ranks) {
+  if (!fluid_->decompose(ranks)) return false;
+  ranks_ = &ranks;
+  root_->decompose(ranks);
+  std::function<void()> forces = [] {}; // 2-D: coupling.csv's force columns
+  if constexpr (D == 2) forces = [this] { forces_ = fluid_->force_parts(); }; // collective
+  forces();
+  tap_->decompose(ranks, forces);
+  return true;
+}
+
+template <int D> void BasicCoupledModel<D>::gather_frame() {
+  fluid_->gather_frame();
 }
 
 template <int D> void BasicCoupledModel<D>::advance(double time, double dt) {
@@ -178,8 +221,7 @@ void BasicCoupledModel<D>::open_logs(const std::filesystem::path& out, bool resu
     *step_log_ << "step,time,dt,iterations,residual_initial,residual_final,omega,converged,"
                   "seconds_fluid,seconds_structure,seconds_coupler";
     if constexpr (D == 2)
-      for (const auto& [name, f] : fluid_->force_parts())
-        *step_log_ << ",fx_" << name << ",fy_" << name;
+      for (const auto& [name, f] : force_parts()) *step_log_ << ",fx_" << name << ",fy_" << name;
     else
       *step_log_ << ",fx_total,fy_total,fz_total";
     *step_log_ << '\n';
@@ -200,7 +242,7 @@ void BasicCoupledModel<D>::open_logs(const std::filesystem::path& out, bool resu
 // carries it (FluidPart::force_parts), 3-D (N) the sum of the loads the structures took.
 template <int D> void BasicCoupledModel<D>::write_forces(std::ostream& log) const {
   if constexpr (D == 2) {
-    for (const auto& [name, f] : fluid_->force_parts()) log << ',' << f.x() << ',' << f.y();
+    for (const auto& [name, f] : force_parts()) log << ',' << f.x() << ',' << f.y();
   } else {
     Vec3 total = Vec3::Zero();
     for (const Vec3& f : scheme_->interface_loads().f) total += f;
@@ -233,10 +275,16 @@ template <int D> std::optional<double> BasicCoupledModel<D>::probe(const ProbeSp
 }
 
 template <int D> std::optional<std::string> BasicCoupledModel<D>::non_finite() const {
-  if (auto what = fluid_->non_finite()) return what;
-  for (const auto& st : structures_)
-    if (auto what = st->non_finite()) return what;
-  return std::nullopt;
+  if (auto what = fluid_->non_finite()) return what; // the same walls on every rank
+  std::optional<std::string> what;
+  if (!ranks_ || ranks_->rank() == 0) // decomposed: rank 0's, whose structures are solved
+    for (const auto& st : structures_)
+      if ((what = st->non_finite())) break;
+  if (!ranks_ || structures_.empty()) return what;
+  std::vector<double> found{what ? 1.0 : 0.0}; // every rank stops at the same step
+  ranks_->broadcast(found);
+  if (found[0] != 0.0 && !what) what = "a structure (solved on rank 0) is not finite";
+  return what;
 }
 
 template <int D> std::vector<std::string> BasicCoupledModel<D>::take_notes() {

@@ -26,6 +26,19 @@ Ranks::Agreed MpiRanks::agree(int signal, const std::string& failure) const {
           reduced.failed ? comm_.first_failure(failure, !failure.empty()) : std::string()};
 }
 
+void MpiRanks::sum(std::vector<double>& values) const {
+  const int n = static_cast<int>(values.size());
+  if (rank() == 0)
+    MPI_Reduce(MPI_IN_PLACE, values.data(), n, MPI_DOUBLE, MPI_SUM, 0, comm_.comm());
+  else
+    MPI_Reduce(values.data(), nullptr, n, MPI_DOUBLE, MPI_SUM, 0, comm_.comm());
+  broadcast(values);
+}
+
+void MpiRanks::broadcast(std::vector<double>& values) const {
+  MPI_Bcast(values.data(), static_cast<int>(values.size()), MPI_DOUBLE, 0, comm_.comm());
+}
+
 bool started_by_mpi_launcher() {
   for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"}) // OpenMPI's mpirun; Hydra, PMI-2
     if (std::getenv(name) != nullptr) return true;

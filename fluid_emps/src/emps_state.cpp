@@ -13,19 +13,30 @@
 
 namespace fsi::emps {
 
+// Decomposed (issue 47): the owned particles only, and restore() drops the ghosts and
+// invalidates the list, so that the next step migrates and builds ghosts afresh: the step
+// being redone may have rebuilt the halo, which then no longer matches the saved ghosts.
 template <int D> typename BasicEmpsFluid<D>::State BasicEmpsFluid<D>::save() const {
   State s{{}, step_, removed_, layout_, gap_dt_, gap_limited_steps_};
   particles_.fields.save(s.particles);
+  if (decomposed()) {
+    const std::size_t n = owned();
+    s.particles.size = n;
+    for (auto& v : s.particles.reals) v.resize(n);
+    for (auto& v : s.particles.flags) v.resize(n);
+    for (auto& v : s.particles.indices) v.resize(n);
+  }
   return s;
 }
 
 template <int D> void BasicEmpsFluid<D>::restore(const State& s) {
+  if (decomposed()) decomposition_->drop_ghosts(particles_.fields);
   particles_.fields.restore(s.particles);
   step_ = s.step;
   removed_ = s.removed;
   gap_dt_ = s.gap_dt;
   gap_limited_steps_ = s.gap_limited_steps;
-  if (s.layout != layout_) {
+  if (s.layout != layout_ || decomposed()) {
     layout_ = s.layout;
     neighbours_.invalidate();
   }

@@ -2,8 +2,9 @@
 // data/dam_break_ranks_3d.yaml (3-D, triangle walls) on 1, 2 and 4 ranks against one process,
 // through the files a user gets (probes.csv, fields.h5, run.json), bad input under mpirun: exit 2,
 // the message printed once, and a run that fails on some ranks only: exit 3 on every rank, the
-// failing rank's message once, the files kept. A plain program (not under mpiexec) that starts
-// mpirun itself.
+// failing rank's message once, the files kept; checkpoints restarted on another rank count; coupled
+// scenes (data/walhorn_ranks.yaml, an implicit scheme, a coupled checkpoint) against one process.
+// A plain program (not under mpiexec) that starts mpirun itself.
 #include <catch2/catch.hpp>
 #include <hdf5.h>
 
@@ -48,12 +49,14 @@ Outcome fsi(int np, const std::string& args, int limit = 0) {
   return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, text_of(log)};
 }
 
-/// Runs `scene` on `np` ranks (0: without mpirun) into a fresh folder.
-fs::path run(const std::string& scene, int np) {
-  const std::string name = fs::path(scene).stem().string();
+/// Runs `scene` on `np` ranks (0: without mpirun) with `args` (overrides) into a fresh folder,
+/// named after the scene and `tag`.
+fs::path run(const std::string& scene, int np, const std::string& args = "",
+             const std::string& tag = "") {
+  const std::string name = fs::path(scene).stem().string() + tag;
   const fs::path out = fs::temp_directory_path() / (name + "_np" + std::to_string(np));
   fs::remove_all(out);
-  const Outcome o = fsi(np, "run " + scene + " --out " + out.string() + " --threads 1");
+  const Outcome o = fsi(np, "run " + scene + " --out " + out.string() + " --threads 1 " + args);
   INFO(o.output);
   REQUIRE(o.status == 0);
   return out;
@@ -75,11 +78,10 @@ std::vector<std::vector<double>> probes(const fs::path& out) {
   return rows;
 }
 
-/// One dataset of fields.h5 (frames/<k>/particles/<name>), flattened.
-std::vector<double> field(const fs::path& out, int frame, const std::string& name) {
-  const hid_t file = H5Fopen((out / "fields.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+/// One dataset of an HDF5 file, flattened.
+std::vector<double> dataset(const fs::path& h5, const std::string& path) {
+  const hid_t file = H5Fopen(h5.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   REQUIRE(file >= 0);
-  const std::string path = "frames/" + std::to_string(frame) + "/particles/" + name;
   const hid_t set = H5Dopen2(file, path.c_str(), H5P_DEFAULT);
   REQUIRE(set >= 0);
   const hid_t space = H5Dget_space(set);
@@ -89,6 +91,12 @@ std::vector<double> field(const fs::path& out, int frame, const std::string& nam
   H5Dclose(set);
   H5Fclose(file);
   return values;
+}
+
+/// One dataset of fields.h5 (frames/<k>/<grid>/<name>), flattened.
+std::vector<double> field(const fs::path& out, int frame, const std::string& name,
+                          const std::string& grid = "particles") {
+  return dataset(out / "fields.h5", "frames/" + std::to_string(frame) + "/" + grid + "/" + name);
 }
 
 int frames(const fs::path& out) {
@@ -220,17 +228,17 @@ TEST_CASE("bad input under mpirun: exit 2, the message once", "[mpi]") {
   INFO(bad.output);
   CHECK(bad.status == 2);
   CHECK(occurrences(bad.output, "bad_density.yaml:") == 1);
-  const Outcome coupled = fsi(2, "run " + data + "tiny_coupled.yaml --out " + out.string());
-  INFO(coupled.output);
-  CHECK(coupled.status == 2);
-  CHECK(occurrences(coupled.output, "not yet supported under mpirun (2 processes") == 1);
+  const Outcome sph = fsi(2, "run " + data + "tiny_coupled_sph.yaml --out " + out.string());
+  INFO(sph.output);
+  CHECK(sph.status == 2);
+  CHECK(occurrences(sph.output, "not yet supported under mpirun (2 processes") == 1);
   // A 3-D EMPS scene with a structure: refused naming the key, once.
   const Outcome coupled3 =
       fsi(2, "run " + std::string(FSI_SOURCE_DIR) +
                  "/data/scenes/hydrostatic_plate_3d_emps.yaml --out " + out.string());
   INFO(coupled3.output);
   CHECK(coupled3.status == 2);
-  CHECK(occurrences(coupled3.output, "(2 processes, issue 47): structures;") == 1);
+  CHECK(occurrences(coupled3.output, "(2 processes, issue 47): structures in a 3-D scene;") == 1);
   // An SPH restart, and a periodic SPH fluid (the inflow channel): refused once.
   const Outcome restart =
       fsi(2, "run " + std::string(FSI_TEST_DATA) + "/dam_break_ranks_sph.yaml --out " +
@@ -382,4 +390,164 @@ TEST_CASE("a checkpoint with fewer particles than processes is refused once", "[
   INFO(o.output);
   CHECK(o.status == 2);
   CHECK(occurrences(o.output, checkpoint + ": fluid: 2 particles for 4 processes") == 1);
+}
+
+namespace {
+
+const std::string walhorn = std::string(FSI_TEST_DATA) + "/walhorn_ranks.yaml";
+
+/// A run's interface.h5 dataset (one row a step: the interface motion the fluid used, the loads
+/// the structure took); "displacement": the positions less the first row's.
+std::vector<double> history(const fs::path& out, const std::string& name) {
+  const fs::path h5 = out / "interface.h5";
+  if (name != "displacement") return dataset(h5, name);
+  std::vector<double> x = dataset(h5, "position");
+  const std::size_t row = x.size() / dataset(h5, "time").size();
+  for (std::size_t i = x.size(); i-- > row;) x[i] -= x[i % row];
+  std::fill(x.begin(), x.begin() + static_cast<std::ptrdiff_t>(row), 0.0);
+  return x;
+}
+
+/// The largest |a - b| of two runs' history(name) relative to the largest |b|.
+double relative_history(const fs::path& a, const fs::path& b, const std::string& name) {
+  const auto x = history(a, name), y = history(b, name);
+  return max_difference(x, y) / max_abs(y);
+}
+
+/// The iterations column of coupling.csv, one entry a step.
+std::vector<int> iterations(const fs::path& out) {
+  std::ifstream in(out / "coupling.csv");
+  std::string line, cell;
+  std::getline(in, line);
+  std::vector<int> counts;
+  while (std::getline(in, line)) {
+    std::stringstream cells(line);
+    for (int k = 0; k <= 3; ++k) std::getline(cells, cell, ',');
+    counts.push_back(std::stoi(cell));
+  }
+  return counts;
+}
+
+/// probes.csv of two runs: the largest difference of each probe relative to its largest |value|.
+double relative_probes(const fs::path& a, const fs::path& b, std::size_t first_row = 0) {
+  const auto x = probes(a), y = probes(b);
+  if (x.size() != y.size()) return INFINITY;
+  double worst = 0.0;
+  for (std::size_t c = 1; c < y[0].size(); ++c) {
+    std::vector<double> u, w;
+    for (std::size_t r = first_row; r < y.size(); ++r) u.push_back(x[r][c]), w.push_back(y[r][c]);
+    worst = std::max(worst, max_difference(u, w) / max_abs(w));
+  }
+  return worst;
+}
+
+} // namespace
+
+TEST_CASE("mpirun -np N fsi run of a coupled scene gives the one-process answer", "[mpi]") {
+  // Walhorn coarse's fluid and obstacle (css), 200 steps: the obstacle solved on rank 0, the
+  // loads of every rank's particles summed. interface.h5 holds every step's interface motion and
+  // loads to 17 digits; probes.csv (corner_x, wall_force_x|y) 10 digits.
+  const std::string record = "--set coupling.record_interface=true";
+  const fs::path serial = run(walhorn, 0, record), one = run(walhorn, 1, record);
+  REQUIRE(probes(serial).size() == 21);
+  // np = 1: the serial sums in the serial order (the loads' sum over one rank is the identity).
+  CHECK(text_of(one / "probes.csv") == text_of(serial / "probes.csv"));
+  CHECK(relative_history(one, serial, "load") == 0.0);
+  CHECK(relative_history(one, serial, "displacement") == 0.0);
+  CHECK(max_abs(history(serial, "load")) > 0.1);           // N/m: the column loads it
+  CHECK(max_abs(history(serial, "displacement")) > 1e-10); // m: and moves it
+  for (const int np : {2, 3, 4}) {
+    const fs::path out = run(walhorn, np, record);
+    const double loads = relative_history(out, serial, "load"),
+                 motion = relative_history(out, serial, "displacement"),
+                 velocity = relative_history(out, serial, "velocity"),
+                 digits = relative_probes(out, serial);
+    std::printf("walhorn_ranks np=%d against one process, 200 steps: loads %.2e, interface "
+                "displacements %.2e, velocities %.2e (relative to the largest); probes %.2e\n",
+                np, loads, motion, velocity, digits);
+    CHECK(loads <= 1e-10);
+    CHECK(motion <= 1e-10);
+    CHECK(velocity <= 1e-10);
+    CHECK(digits <= 1e-9); // 10 printed digits
+    CHECK(occurrences(text_of(out / "run.json"), "\"status\": \"completed\"") == 1);
+  }
+}
+
+TEST_CASE("an implicit coupling scheme under mpirun iterates as one process", "[mpi]") {
+  // tests/apps/data/hydrostatic_plate_small.yaml with bgs, 30 steps: every rank's scheme works on
+  // the same summed loads and broadcast motion, so it converges in the same iterations.
+  const std::string scene =
+      std::string(FSI_SOURCE_DIR) + "/tests/apps/data/hydrostatic_plate_small.yaml";
+  for (const std::string acceleration : {"iqn-ils", "aitken"}) {
+    const std::string args = "--set time.end=0.003 --set output.interval=0.001 "
+                             "--set coupling.scheme=bgs --set coupling.acceleration=" +
+                             acceleration + " --set coupling.record_interface=true";
+    const fs::path serial = run(scene, 0, args, acceleration);
+    const auto counts = iterations(serial);
+    REQUIRE(counts.size() == 30);
+    CHECK(*std::max_element(counts.begin(), counts.end()) > 2); // iterated
+    for (const int np : {2, 4}) {
+      const fs::path out = run(scene, np, args, acceleration);
+      const double loads = relative_history(out, serial, "load"),
+                   motion = relative_history(out, serial, "displacement");
+      std::printf("hydrostatic_plate_small bgs %s np=%d: iterations %s, loads %.2e, interface "
+                  "displacements %.2e against one process\n",
+                  acceleration.c_str(), np, iterations(out) == counts ? "equal" : "DIFFER", loads,
+                  motion);
+      CHECK(iterations(out) == counts);
+      CHECK(loads <= 1e-10);
+      CHECK(motion <= 1e-10);
+      CHECK(relative_probes(out, serial) <= 1e-9);
+    }
+  }
+}
+
+TEST_CASE("a coupled checkpoint at np = 4 continues on 2 ranks", "[mpi]") {
+  // walhorn_ranks.yaml, 200 steps, checkpoints every 100: the np = 4 checkpoint of step 100
+  // (written by rank 0, the obstacle's state from rank 0, which solves it) on 2 ranks.
+  const std::string set = "--set checkpoint.interval_steps=100";
+  const fs::path four = run(walhorn, 4, set, "_ckpt");
+  const std::string hundred = "checkpoint_000000100.h5";
+  REQUIRE(fs::exists(four / hundred));
+  const fs::path out = copy_of(four, "walhorn_ckpt_np4_on2");
+  const Outcome o = fsi(2, "run " + walhorn + " --out " + out.string() + " --threads 1 " + set +
+                               " --restart " + (out / hundred).string());
+  INFO(o.output);
+  REQUIRE(o.status == 0);
+  // Frames 10 (the checkpoint's) to 20; the obstacle's displacement field to 17 digits.
+  double worst = 0.0, largest = 0.0;
+  for (int f = 10; f <= 20; ++f) {
+    const auto a = field(out, f, "displacement", "obstacle"),
+               b = field(four, f, "displacement", "obstacle");
+    worst = std::max(worst, max_difference(a, b));
+    largest = std::max(largest, max_abs(b));
+  }
+  std::printf("walhorn_ranks checkpoint of np=4 on np=2: obstacle displacement %.2e relative, "
+              "probes %.2e\n",
+              worst / largest, relative_probes(out, four, 10));
+  CHECK(largest > 0.0);
+  CHECK(worst <= 1e-10 * largest);
+  CHECK(relative_probes(out, four, 10) <= 1e-9);
+}
+
+TEST_CASE("a structure failing on rank 0 stops every rank as one process does", "[mpi]") {
+  // walhorn_ranks.yaml with an obstacle of E = 0.01 Pa and dt = 1 ms: its elements invert at
+  // structure step 3. Rank 0 solves it; the failure travels with the motion's broadcast, so no
+  // rank waits for it: exit 3 on every rank, rank 0's message once, run.json "failed".
+  const std::string set = "--set structures[0].material.youngs_modulus=0.01 --set time.dt=1e-3 "
+                          "--set time.end=0.05 --set output.interval=1e-3";
+  const fs::path serial = fs::temp_directory_path() / "walhorn_failure_np0",
+                 two = fs::temp_directory_path() / "walhorn_failure_np2";
+  for (const auto& out : {serial, two}) fs::remove_all(out);
+  const Outcome one = fsi(0, "run " + walhorn + " --out " + serial.string() + " " + set);
+  const Outcome o = fsi(2, "run " + walhorn + " --out " + two.string() + " " + set, 120);
+  INFO(o.output);
+  CHECK(one.status == 3);
+  CHECK(o.status == 3);
+  const std::string what = "structure 'obstacle': element 2: det F = ";
+  CHECK(occurrences(one.output, what) == 1);
+  CHECK(occurrences(o.output, what) == 1);
+  CHECK(occurrences(o.output, "(structure step 3, t = 0.003)") == 1);
+  CHECK(occurrences(text_of(two / "run.json"), "\"status\": \"failed\"") == 1);
+  CHECK(frames(two) == 4); // t = 0 to the last step, 3 ms
 }

@@ -11,6 +11,7 @@
 #include "coupling/registry.hpp"
 #include "coupling/scheme.hpp"
 #include "coupling/structure_group.hpp"
+#include "fsi_app/root_structures.hpp"
 #include "fsi_app/solver_plugin.hpp"
 
 #include <array>
@@ -53,10 +54,16 @@ public:
   void report(JsonObject& run) const override;
   std::vector<std::string> take_notes() override;
   std::optional<ParticleCount> particle_count() const override { return fluid_->particle_count(); }
+  /// Decomposed: collective (rank 0's structures' finiteness broadcast).
   std::optional<std::string> non_finite() const override;
   /// The coupler with both participants (coupling::CouplingScheme::write_state).
   void write_state(StateArchive& archive) const override { scheme_->write_state(archive); }
   void read_state(const StateArchive& archive) override { scheme_->read_state(archive); }
+  /// Under mpirun (issue 47): the fluid decomposed, the structures solved on rank 0
+  /// (RootStructures), the loads every rank's summed; every rank runs the same scheme on the
+  /// same data. False when the fluid cannot be decomposed.
+  bool decompose(const Ranks& ranks) override;
+  void gather_frame() override;
 
   const Scheme& scheme() const { return *scheme_; }
   FluidPart& fluid() { return *fluid_; }
@@ -64,9 +71,16 @@ public:
 
 private:
   void write_forces(std::ostream& log) const; ///< the force columns of coupling.csv's row
+  /// 2-D: the fluid's force_parts (decomposed: every rank's summed after each fluid advance).
+  std::vector<std::pair<std::string, Vec2>> force_parts() const {
+    return ranks_ ? forces_ : fluid_->force_parts();
+  }
   std::vector<std::unique_ptr<StructurePart>> structures_;
   std::unique_ptr<FluidPart> fluid_;
   std::unique_ptr<coupling::BasicStructureGroup<D>> group_;
+  std::unique_ptr<RootStructures<D>> root_; ///< the group as the scheme's S
+  const Ranks* ranks_ = nullptr;            ///< set when decomposed
+  std::vector<std::pair<std::string, Vec2>> forces_;
   std::unique_ptr<Scheme> scheme_;
   std::unique_ptr<std::ofstream> step_log_;
   // Recording and one-way replay.

@@ -20,6 +20,9 @@ public:
   void gather(const std::vector<double>& local, std::vector<double>& all) const override {
     comm_.gather(local, all);
   }
+  /// MPI_Reduce to rank 0 and MPI_Bcast, not MPI_Allreduce: the same bits on every rank.
+  void sum(std::vector<double>& values) const override;
+  void broadcast(std::vector<double>& values) const override;
 
 private:
   std::unique_ptr<particles::Decomposition<2>>

@@ -45,6 +45,11 @@ public:
   /// Every rank's `local`, concatenated in rank order, into `all` on rank 0 (emptied on the
   /// others); no allocation once `all` has held the largest frame.
   virtual void gather(const std::vector<double>& local, std::vector<double>& all) const = 0;
+  /// Every rank's `values` summed entry by entry, the same bits on every rank (sizes agree): a
+  /// structure's interface loads from every rank's particles.
+  virtual void sum(std::vector<double>& values) const = 0;
+  /// Rank 0's `values` on every rank (sizes agree): a structure's motion from the rank solving it.
+  virtual void broadcast(std::vector<double>& values) const = 0;
 
 private:
   // particle_decomposition<D>'s hooks, one per dimension.
@@ -65,6 +70,8 @@ public:
   void gather(const std::vector<double>& local, std::vector<double>& all) const override {
     all.assign(local.begin(), local.end());
   }
+  void sum(std::vector<double>&) const override {}
+  void broadcast(std::vector<double>&) const override {}
 
 private:
   std::unique_ptr<particles::Decomposition<2>>

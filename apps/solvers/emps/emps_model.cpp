@@ -64,6 +64,17 @@ void EmpsModel::gather_frame() {
   if (!ranks_.decomposed()) return;
   gathered_.gather(ranks_, fluid_->particles(), fluid_->owned());
   kinetic_energy_ = fluid_->kinetic_energy(); // collective
+  gathered_force_ = wall_force();             // collective
+}
+
+emps::WallForceParts EmpsModel::wall_force() const {
+  const auto [first, last] = interface_segments();
+  emps::WallForceParts f = fluid_->wall_force_parts(first, last); // this rank's particles
+  if (!ranks_.decomposed()) return f;
+  std::vector<double> sum{f.pressure.x(),  f.pressure.y(), f.repulsive.x(),
+                          f.repulsive.y(), f.viscous.x(),  f.viscous.y()};
+  ranks_.sum(sum);
+  return {{sum[0], sum[1]}, {sum[2], sum[3]}, {sum[4], sum[5]}};
 }
 
 void EmpsModel::write_frame(FieldsFile& file, const std::vector<std::string>& fields) const {
@@ -124,8 +135,7 @@ std::optional<double> EmpsModel::probe(const ProbeSpec& probe) const {
     return p.n ? speeds / static_cast<double>(p.n) : 0.0;
   }
   if (probe.quantity == "wall_force_x" || probe.quantity == "wall_force_y") {
-    const auto [first, last] = interface_segments();
-    const emps::WallForceParts f = fluid_->wall_force_parts(first, last);
+    const emps::WallForceParts f = ranks_.decomposed() ? gathered_force_ : wall_force();
     const Vec2 v = probe.part == "pressure"    ? f.pressure
                    : probe.part == "repulsive" ? f.repulsive
                    : probe.part == "viscous"   ? f.viscous
@@ -142,8 +152,7 @@ std::pair<int, int> EmpsModel::interface_segments() const {
 }
 
 std::vector<std::pair<std::string, Vec2>> EmpsModel::force_parts() const {
-  const auto [first, last] = interface_segments();
-  const emps::WallForceParts f = fluid_->wall_force_parts(first, last);
+  const emps::WallForceParts f = wall_force();
   return {{"pressure", f.pressure}, {"repulsive", f.repulsive}, {"viscous", f.viscous}};
 }
 

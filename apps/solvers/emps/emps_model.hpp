@@ -42,12 +42,14 @@ public:
   coupling::FluidSolver& coupling_solver() override { return *adapter_; }
   /// Pressure (mirror, eqs. 25-26), repulsive (eq. 27 and the wall damper) and viscous (eq. 24)
   /// parts of the wall force on the interfaces' segments (eq. 52, with the sign on the structure).
+  /// Decomposed: collective, every rank's particles summed.
   std::vector<std::pair<std::string, Vec2>> force_parts() const override;
   /// The fluid steps over `ranks` (parallel::ParticleDecomposition under mpirun); every rank
   /// built it from the whole scene.
   bool decompose(const Ranks& ranks) override;
   /// Decomposed: every rank's owned particles to rank 0, in id order (one-process files and
-  /// N-process files compare directly), and the kinetic energy (a global sum) for the probes.
+  /// N-process files compare directly), the kinetic energy and the wall force (global sums) for
+  /// the probes.
   void gather_frame() override;
 
   emps::EmpsFluid& fluid() { return *fluid_; }
@@ -59,6 +61,9 @@ public:
 private:
   /// The particles a frame and the probes read: the fluid's own, or (decomposed) the gathered.
   FrameParticles<2> frame() const { return gathered_.view(ranks_, fluid_->particles()); }
+  /// The force on the interfaces' segments (every wall's without one); decomposed: collective,
+  /// every rank's particles summed.
+  emps::WallForceParts wall_force() const;
   /// [first, last) wall segments of the interfaces (every wall without one).
   std::pair<int, int> interface_segments() const;
 
@@ -72,6 +77,7 @@ private:
   mutable std::vector<double> xy_, v_, flag_; // output buffers
   GatheredParticles<2> gathered_;             // on rank 0, in id order
   double kinetic_energy_ = 0.0;               // decomposed: at the last gather, J/m
+  emps::WallForceParts gathered_force_;       // decomposed: wall_force() at the last gather
 };
 
 } // namespace fsi::app::emps_plugin

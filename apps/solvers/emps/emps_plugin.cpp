@@ -42,7 +42,13 @@ Footprint footprint(const Scene& scene) {
 
 // Against the scene: the regions and the fluid probes lie in the domain (given or derived).
 void check(const Scene& scene, Section& s, std::vector<Section>& probes) {
-  if (scene.dimension == 3) return check3(scene, s, probes);
+  if (scene.dimension == 3) {
+    for (std::size_t i = 0; i < scene.output.probes.size(); ++i)
+      if (scene.output.probes[i].quantity.starts_with("wall_force"))
+        probes[i].fail("quantity",
+                       scene.output.probes[i].quantity + " is a probe of 2-D scenes for type emps");
+    return check3(scene, s, probes);
+  }
   const emps::FluidOptions o = fluid_options(scene);
   check_in_domain(scene, s, probes, scene.fluid->as<FluidSpec>().area,
                   {o.domain_min, o.domain_max});
@@ -79,7 +85,7 @@ FluidPlugin plugin() {
           footprint,
           {"velocity", "pressure", "pnd", "free_surface"},
           {"surge_front", "pressure", "mean_pressure", "mean_speed", "kinetic_energy", "particles",
-           "wall_gap"},
+           "wall_gap", "wall_force_x", "wall_force_y"},
           [](const Scene& scene,
              const std::vector<InterfaceMesh3>& interfaces) -> std::unique_ptr<FluidPart> {
             return std::make_unique<EmpsModel3>(scene, interfaces);

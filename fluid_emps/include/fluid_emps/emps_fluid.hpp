@@ -155,8 +155,9 @@ public:
   /// parallel::ParticleDecomposition). Without it the fluid is serial (particles::LocalParticles).
   /// The exchange points of the step are listed in docs/architecture.md "Processes (MPI)".
   /// After read_state (a restart on any process count), the checkpoint is partitioned as its
-  /// run was at its last neighbour-list build (scatter_restored). Not yet decomposed:
-  /// save/restore and the wall forces' sums (local per process).
+  /// run was at its last neighbour-list build (scatter_restored). Decomposed, save() keeps the
+  /// owned particles and restore() drops the ghosts (the next step migrates and builds them
+  /// afresh); the wall forces are this process's particles' (the caller sums them).
   void decompose(particles::Decomposition<D>& decomposition);
   /// The particles this process owns: the first owned() entries of particles(); ghosts follow.
   std::size_t owned() const { return particles_.size() - decomposition_->ghosts(); }
@@ -190,7 +191,8 @@ public:
   double kinetic_energy() const;
   double max_speed() const;
 
-  /// A full copy of the fluid state; restore() returns to it (iterative coupling re-runs steps).
+  /// A full copy of the fluid state; restore() returns to it (iterative coupling re-runs steps;
+  /// decomposed: the owned particles, to round-off, the list being rebuilt).
   struct State {
     particles::FieldSet::Snapshot particles;
     long step = 0;
