@@ -69,6 +69,28 @@ PointLoadSpec read_load(Section& load) {
   return p;
 }
 
+ClampRotationSpec read_clamp_rotation(Section r) {
+  ClampRotationSpec c;
+  c.axis = r.vec3("axis", Vec3::UnitZ(),
+                  "direction of the axis (right-hand rule), any length; absent: z");
+  if (!r.context().documenting()) {
+    if (!(c.axis.norm() > 0.0) || !std::isfinite(c.axis.norm()))
+      r.fail("axis", "must be a non-zero, finite direction");
+    c.axis.normalize();
+  }
+  c.centre = r.vec3("centre", Vec3::Zero(), "a point on the axis, m");
+  c.amplitude = r.real("amplitude", Range::any(), "rad");
+  c.period = r.real("period", Range::positive(), "s");
+  c.phase = r.real("phase", 0.0, Range::any(), "rad");
+  const double omega = 2.0 * M_PI / c.period;
+  if (!r.context().documenting() &&
+      !(std::isfinite(omega * omega) && std::isfinite(std::abs(c.amplitude) * omega * omega)))
+    r.fail("period", "the angular acceleration amplitude * (2 pi / period)^2 is not finite; "
+                     "give a longer period");
+  r.finish();
+  return c;
+}
+
 } // namespace
 
 std::shared_ptr<const SolverSpec> read_structure(Section& s) {
@@ -89,6 +111,18 @@ std::shared_ptr<const SolverSpec> read_structure(Section& s) {
              "name of a wall with a motion: the clamped nodes follow its rigid motion (u, v, a "
              "prescribed; e.g. a beam clamped to a rolling tank), starting from static "
              "equilibrium with the wall at t = 0; empty: they stay fixed");
+  if (three_d || doc) {
+    if (auto r = s.block("clamped_rotation",
+                         "3-D: the clamped faces turn rigidly about an axis by theta(t) = "
+                         "amplitude sin(2 pi t / period + phase), starting from static "
+                         "equilibrium with the clamp at t = 0 (the 2-D walls' sinusoid)"))
+      st.clamped_rotation = read_clamp_rotation(*r);
+    if (!doc && st.clamped_rotation && st.clamped.empty())
+      s.fail("clamped_rotation", "needs clamped boundary tags to turn");
+    if (!doc && three_d && !st.clamped_motion.empty())
+      s.fail("clamped_motion", "names a 2-D wall; 3-D scenes have none: turn the clamp with "
+                               "clamped_rotation");
+  }
   st.interface = s.names("interface", {}, "boundary tags wetted by the fluid");
   if (auto nb = s.block("newmark", "Newmark-beta coefficients (eqs. 40-41)")) {
     OptionReader reader(*nb);
