@@ -238,4 +238,11 @@ TEST_CASE("apps: a 3-D scene's clamped_rotation turns the body rigidly, stress-f
                   {"structures[0].clamped=[]",
                    "structures[0].clamped_rotation={axis: [0, 1, 0], amplitude: 1, period: 1}"}),
       Catch::Contains("structures[0].clamped_rotation: needs clamped boundary tags to turn"));
+  // A TL-SPH solid made from the entry (--set type=tlsph) would drop the turn: refused.
+  CHECK_THROWS_WITH(
+      parse_scene(box_scene, "b.yaml",
+                  {"structures[0].loads=[]", "structures[0].type=tlsph",
+                   "structures[0].clamped_rotation={axis: [0, 1, 0], amplitude: 1, period: 1}"}),
+      Catch::Contains("structures[0].clamped_rotation: a 3-D TL-SPH solid's clamps are fixed: "
+                      "with a turning clamp the entry is of type fem only"));
 }
