@@ -59,7 +59,12 @@ std::string gmsh_input(const std::string& text) {
     std::istringstream in(text);
     erp::read_stl(in, "fuzz.msh");
   });
+  const std::string surface = message_of([&] {
+    std::istringstream in(text);
+    fem::read_gmsh_surface(in, "fuzz.msh");
+  });
   if (!well_formed("gmsh", t10)) return t10;
+  if (!well_formed("gmsh", surface)) return surface;
   return well_formed("gmsh", stl) ? t6 : stl;
 }
 

@@ -1,6 +1,6 @@
-"""One frame of a run's fields.xmf rendered by ParaView to a PNG (issue 46): the particles as
-points coloured by pressure, each structure as its surface coloured by von Mises stress, each with
-its own colour bar, seen obliquely (3-D) or face on (2-D); --clip cuts the fluid's upper half
+"""One frame of a run's fields.xmf rendered by ParaView to a PNG (issue 46): the fluid coloured by
+pressure, each structure by von Mises stress, each with its own colour bar; a grid of particles
+(vertex cells: a fluid, a TL-SPH solid) drawn as spheres, a mesh (FE) as its surface; seen obliquely (3-D) or face on (2-D); --clip cuts the fluid's upper half
 along an axis away to show the inside (the colour range stays the whole fluid's).
 
 The file is opened by ParaView's default reader for .xmf (Xdmf3ReaderS), as a user would open it;
@@ -55,7 +55,12 @@ def pieces(reader, time):
     return out
 
 
-def colour(view, data, field, preset, title, as_points, clip=None):
+def particles(data):
+    """True for a grid of particles: no cells, or cells of dimension 0 (one XDMF topology a grid)."""
+    return data.GetNumberOfCells() == 0 or data.GetCell(0).GetCellDimension() == 0
+
+
+def colour(view, data, field, preset, title, clip=None):
     """data shown in view coloured by field over its own range; returns that range. clip: an axis
     (0, 1, 2) whose upper half of the data is cut away (to see inside a 3-D fluid)."""
     source = TrivialProducer()
@@ -66,7 +71,7 @@ def colour(view, data, field, preset, title, as_points, clip=None):
         source.ClipType.Origin = [0.5 * (b[2 * k] + b[2 * k + 1]) for k in range(3)]
         source.ClipType.Normal = [1.0 if k == clip else 0.0 for k in range(3)]
     display = Show(source, view)
-    if as_points:  # spheres of the particles' mean spacing (volume per particle, or area in 2-D)
+    if particles(data):  # spheres of the particles' mean spacing (volume per particle, or area in 2-D)
         b = data.GetBounds()
         extents = [e for e in (b[1] - b[0], b[3] - b[2], b[5] - b[4]) if e > 0.0]
         volume = 1.0
@@ -111,11 +116,10 @@ def main():
         names = [point_data.GetArrayName(k) for k in range(point_data.GetNumberOfArrays())]
         if "pressure" in names:
             clip = None if a.clip is None else "xyz".index(a.clip)
-            ranges["pressure"] = colour(view, g, "pressure", "Cool to Warm", "pressure [Pa]", True,
-                                        clip)
+            ranges["pressure"] = colour(view, g, "pressure", "Cool to Warm", "pressure [Pa]", clip)
         elif "von_mises" in names:
             ranges["von_mises"] = colour(view, g, "von_mises", "Viridis (matplotlib)",
-                                         "von Mises [Pa]", False)
+                                         "von Mises [Pa]")
     if not ranges:
         sys.exit("%s: the frame at t = %g holds neither pressure nor von_mises" % (xmf, time))
     view.ResetCamera()

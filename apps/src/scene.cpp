@@ -187,14 +187,9 @@ OutputSpec read_output(Section s, double end_time, std::vector<Section>& probe_s
   return o;
 }
 
-MotionSpec read_motion(Section s) {
-  MotionSpec m;
+// The keys of a motion's profile s(t) after kind, dof and pivot (read_motion, read_motion3).
+void read_profile(Section& s, MotionSpec& m) {
   const bool doc = s.context().documenting();
-  m.kind = s.choice("kind", {"sinusoid", "table"}, "",
-                    "sinusoid: amplitude sin(2 pi t / period + phase); table: CSV time,value");
-  m.dof = s.choice("dof", {"rotation", "x", "y"}, "rotation",
-                   "rotation about pivot, or translation along x or y");
-  m.pivot = s.vec2("pivot", Vec2::Zero(), "rotation centre in the scene frame, m");
   if (doc || m.kind == "sinusoid") {
     m.amplitude = s.real("amplitude", Range::any(), "rad for rotation, m for translation");
     m.period = s.real("period", Range::positive(), "s");
@@ -224,6 +219,20 @@ MotionSpec read_motion(Section s) {
       s.fail("unit", "'" + unit + "' does not match dof '" + m.dof + "'");
   }
   s.finish();
+}
+
+std::string motion_kind(Section& s) {
+  return s.choice("kind", {"sinusoid", "table"}, "",
+                  "sinusoid: amplitude sin(2 pi t / period + phase); table: CSV time,value");
+}
+
+MotionSpec read_motion(Section s) {
+  MotionSpec m;
+  m.kind = motion_kind(s);
+  m.dof = s.choice("dof", {"rotation", "x", "y"}, "rotation",
+                   "rotation about pivot, or translation along x or y");
+  m.pivot = s.vec2("pivot", Vec2::Zero(), "rotation centre in the scene frame, m");
+  read_profile(s, m);
   return m;
 }
 
@@ -488,6 +497,22 @@ Scene read_scene(Section top) {
 }
 
 } // namespace
+
+MotionSpec read_motion3(Section s) {
+  MotionSpec m;
+  m.kind = motion_kind(s);
+  m.dof = s.choice("dof", {"rotation", "x", "y", "z"}, "rotation",
+                   "rotation about axis through pivot, or translation along x, y or z");
+  m.axis =
+      s.vec3("axis", Vec3::UnitZ(),
+             "rotation axis (normalised; default [0, 0, 1]), right-handed: counter-clockwise seen "
+             "from its tip");
+  m.pivot3 = s.vec3("pivot", Vec3::Zero(),
+                    "a point of the rotation axis in the scene frame (default the origin), m");
+  if (!s.context().documenting() && !(m.axis.norm() > 0.0)) s.fail("axis", "is zero");
+  read_profile(s, m);
+  return m;
+}
 
 void fail_at(const Scene& scene, int line, const std::string& key, const std::string& what) {
   throw InputError(scene.path.string() + ":" + std::to_string(line) + ": " + key + ": " + what);

@@ -9,10 +9,11 @@
 
 namespace fsi::app {
 
-std::shared_ptr<const erp::Motion> make_motion(const WallSpec& wall) {
-  const MotionSpec& m = *wall.motion;
+namespace {
+
+/// The motion's profile: a rotation's angle, or a translation s(t) `direction`.
+std::shared_ptr<const erp::Motion> make_profile(const MotionSpec& m, const Vec2& direction) {
   const bool rotation = m.dof == "rotation";
-  const Vec2 direction = m.dof == "x" ? Vec2(1, 0) : Vec2(0, 1);
   if (m.kind == "sinusoid") {
     if (rotation) return std::make_shared<erp::SinusoidRotation>(m.amplitude, m.period, m.phase);
     return std::make_shared<erp::SinusoidTranslation>(m.amplitude * direction, m.period, m.phase);
@@ -22,27 +23,46 @@ std::shared_ptr<const erp::Motion> make_motion(const WallSpec& wall) {
   return std::make_shared<erp::TableRotation>(m.table.string(), m.table_scale);
 }
 
+} // namespace
+
+std::shared_ptr<const erp::Motion> make_motion(const WallSpec& wall) {
+  const MotionSpec& m = *wall.motion;
+  return make_profile(m, m.dof == "x" ? Vec2(1, 0) : Vec2(0, 1));
+}
+
+erp::RigidMotion3 make_motion3(const MotionSpec& m) {
+  const auto profile = make_profile(m, Vec2(1, 0)); // s(t) in d.x() (RigidMotion3)
+  if (m.dof == "rotation") return erp::RigidMotion3::rotation(profile, m.axis, m.pivot3);
+  return erp::RigidMotion3::translation(profile, m.dof == "x"   ? Vec3::UnitX()
+                                                 : m.dof == "y" ? Vec3::UnitY()
+                                                                : Vec3::UnitZ());
+}
+
+void check_motion_table(const Scene& scene, const MotionSpec& m, int line, const std::string& key) {
+  if (m.kind != "table") return;
+  const std::string file = m.table.string();
+  const int columns = 2; // time and one value (rotation, or translation along one axis)
+  erp::CsvTable table;
+  try {
+    table = erp::read_csv_table(file, columns);
+  } catch (const InputError& e) {
+    fail_at(scene, line, key, e.what());
+  }
+  const double first = table.columns[0].front(), last = table.columns[0].back();
+  const double end = scene.time.end;
+  if (!m.hold && (first > 0.0 || last < end * (1.0 - 1e-12))) {
+    std::ostringstream what;
+    what << file << ": covers t = " << first << " .. " << last << " s, the run needs 0 .. " << end
+         << " s (extend it, lower time.end, or give hold: true to hold its end values)";
+    fail_at(scene, line, key, what.str());
+  }
+}
+
 void check_motion_tables(const Scene& scene) {
   for (std::size_t i = 0; i < scene.walls.size(); ++i) {
     const WallSpec& w = scene.walls[i];
-    if (!w.motion || w.motion->kind != "table") continue;
-    const std::string key = "walls[" + std::to_string(i) + "].motion.table";
-    const std::string file = w.motion->table.string();
-    const int columns = 2; // time and one value (rotation, or translation along x or y)
-    erp::CsvTable table;
-    try {
-      table = erp::read_csv_table(file, columns);
-    } catch (const InputError& e) {
-      fail_at(scene, w.line, key, e.what());
-    }
-    const double first = table.columns[0].front(), last = table.columns[0].back();
-    const double end = scene.time.end;
-    if (!w.motion->hold && (first > 0.0 || last < end * (1.0 - 1e-12))) {
-      std::ostringstream what;
-      what << file << ": covers t = " << first << " .. " << last << " s, the run needs 0 .. " << end
-           << " s (extend it, lower time.end, or give hold: true to hold its end values)";
-      fail_at(scene, w.line, key, what.str());
-    }
+    if (w.motion)
+      check_motion_table(scene, *w.motion, w.line, "walls[" + std::to_string(i) + "].motion.table");
   }
 }
 

@@ -1,5 +1,5 @@
-// STL surfaces as triangle walls: the ASCII and binary readers, the vertex merge and the checks
-// (geometry_erp/stl_reader.hpp).
+// STL surfaces as triangle walls: the ASCII and binary readers, and the vertex merge and the
+// checks of every surface read from a file (geometry_erp/stl_reader.hpp).
 #include "geometry_erp/stl_reader.hpp"
 
 #include <Eigen/Geometry> // cross products
@@ -18,13 +18,6 @@
 namespace fsi::erp {
 
 namespace {
-
-/// One facet as read: the stored normal, the vertices, and where it is (for messages).
-struct Facet {
-  Vec3 n;
-  std::array<Vec3, 3> v;
-  std::string where;
-};
 
 [[noreturn]] void fail(const std::string& where, const std::string& what) {
   throw InputError(where + ": " + what);
@@ -87,13 +80,13 @@ Vec3 vector_at(const std::vector<std::string>& w, std::size_t first, const Lines
           number(w[first + 2], lines.where())};
 }
 
-std::vector<Facet> read_ascii(const std::string& text, const std::string& file) {
+std::vector<SurfaceFacet> read_ascii(const std::string& text, const std::string& file) {
   Lines lines(text, file);
-  std::vector<Facet> facets;
+  std::vector<SurfaceFacet> facets;
   for (auto w = lines.next(); !w.empty(); w = lines.next()) {
     if (w[0] != "solid") fail(lines.where(), "expected 'solid'");
     for (w = lines.next(); !w.empty() && w[0] == "facet"; w = lines.next()) {
-      Facet f;
+      SurfaceFacet f;
       expect(w, {"facet", "normal"}, 5, lines);
       f.n = vector_at(w, 2, lines);
       f.where = lines.where();
@@ -118,17 +111,17 @@ std::uint32_t facet_count(const std::string& bytes) {
   return n;
 }
 
-std::vector<Facet> read_binary(const std::string& bytes, const std::string& file) {
+std::vector<SurfaceFacet> read_binary(const std::string& bytes, const std::string& file) {
   if (bytes.size() < 84) fail(file, "binary STL shorter than its 84-byte header");
   const std::uint32_t n = facet_count(bytes);
   if (bytes.size() != 84 + 50 * static_cast<std::size_t>(n))
     fail(file, "binary STL of " + std::to_string(bytes.size()) + " bytes for " + std::to_string(n) +
                    " facets (84 + 50 n expected)");
-  std::vector<Facet> facets(n);
+  std::vector<SurfaceFacet> facets(n);
   for (std::size_t k = 0; k < n; ++k) {
     float c[12];
     std::memcpy(c, bytes.data() + 84 + 50 * k, sizeof c);
-    Facet& f = facets[k];
+    SurfaceFacet& f = facets[k];
     f.where = file + ": facet " + std::to_string(k + 1);
     for (int i = 0; i < 12; ++i)
       if (!std::isfinite(c[i])) fail(f.where, "a coordinate is not finite");
@@ -139,14 +132,22 @@ std::vector<Facet> read_binary(const std::string& bytes, const std::string& file
   return facets;
 }
 
-/// Merges equal vertices, checks every facet and edge, counts the open edges.
-StlSurface assemble(const std::vector<Facet>& facets, const std::string& file) {
+bool is_ascii(const std::string& bytes) {
+  const bool solid = bytes.compare(0, 5, "solid") == 0 &&
+                     (bytes.size() == 5 || std::isspace(static_cast<unsigned char>(bytes[5])));
+  return solid && !(bytes.size() >= 84 &&
+                    bytes.size() == 84 + 50 * static_cast<std::size_t>(facet_count(bytes)));
+}
+
+} // namespace
+
+StlSurface assemble_surface(const std::vector<SurfaceFacet>& facets, const std::string& file) {
   if (facets.empty()) fail(file, "no facets");
   StlSurface s;
   std::map<std::array<double, 3>, int> index;
   std::map<std::pair<int, int>, std::pair<int, int>> edges; // (lo, hi) -> (facets on it, first)
   for (std::size_t t = 0; t < facets.size(); ++t) {
-    const Facet& f = facets[t];
+    const SurfaceFacet& f = facets[t];
     const Vec3 normal = (f.v[1] - f.v[0]).cross(f.v[2] - f.v[0]);
     double longest = 0.0;
     for (int k = 0; k < 3; ++k)
@@ -184,18 +185,10 @@ StlSurface assemble(const std::vector<Facet>& facets, const std::string& file) {
   return s;
 }
 
-bool is_ascii(const std::string& bytes) {
-  const bool solid = bytes.compare(0, 5, "solid") == 0 &&
-                     (bytes.size() == 5 || std::isspace(static_cast<unsigned char>(bytes[5])));
-  return solid && !(bytes.size() >= 84 &&
-                    bytes.size() == 84 + 50 * static_cast<std::size_t>(facet_count(bytes)));
-}
-
-} // namespace
-
 StlSurface read_stl(std::istream& in, const std::string& file) {
   const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-  return assemble(is_ascii(bytes) ? read_ascii(bytes, file) : read_binary(bytes, file), file);
+  return assemble_surface(is_ascii(bytes) ? read_ascii(bytes, file) : read_binary(bytes, file),
+                          file);
 }
 
 StlSurface read_stl_file(const std::string& path) {

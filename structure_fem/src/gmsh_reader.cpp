@@ -42,7 +42,7 @@ std::string Parsed::boundary_name(long tag) const {
 }
 
 Parsed parse(std::istream& in, const std::string& path, int dim,
-             const std::vector<std::string>& required_groups) {
+             const std::vector<std::string>& required_groups, bool surface) {
   std::string data{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
   Lexer lex(std::move(data), path);
   if (lex.blank()) throw InputError(path + ": empty file (need a Gmsh .msh file)");
@@ -72,6 +72,7 @@ Parsed parse(std::istream& in, const std::string& path, int dim,
 
   Parsed p;
   p.dim = dim;
+  p.surface = surface;
   p.path = path;
   p.binary = lex.binary();
   p.msh22 = msh22;

@@ -66,6 +66,32 @@ int nodes_per_element(Lexer& lex, int dim, long type, long tag) {
                      : " (only 11, 9, 8 and 15: a 3D mesh from gmsh -3 -order 2)"));
 }
 
+/// The number of nodes of an element of Gmsh type `type` in a surface mesh (3-node triangles,
+/// lines and points dropped); refuses what a surface of flat triangles cannot be made of.
+int surface_nodes_per_element(Lexer& lex, long type, long tag) {
+  const std::string element =
+      "element " + std::to_string(tag) + " (type " + std::to_string(type) + "): ";
+  switch (type) {
+  case 2:
+    return 3; // 3-node triangle
+  case 1:
+    return 2; // 2-node line
+  case 15:
+    return 1; // point
+  case 8:
+  case 9:
+    lex.fail(element + "second-order element: need 3-node triangles (type 2): mesh with gmsh -2 "
+                       "(order 1)");
+  case 4:
+  case 11:
+  case 29:
+    lex.fail(element + "tetrahedron: a volume mesh: need the surface only, gmsh -2");
+  default:
+    break;
+  }
+  lex.fail(element + "unsupported element type (only 2, 1 and 15: a surface mesh from gmsh -2)");
+}
+
 /// A node's z in a 2-D mesh: it must lie in the plane z = 0. The first node off it is kept and
 /// refused after the elements, so that a 3-D mesh is named as such (its tetrahedra) first.
 void check_planar(const Lexer& lex, Parsed& p, long tag, double z) {
@@ -92,7 +118,8 @@ void add_node(Lexer& lex, Parsed& p, long tag, double x, double y, double z, int
 template <class Next>
 void add_element(Lexer& lex, Parsed& p, long type, long tag, long entity, int at, Next node,
                  std::vector<long> physicals = {}) {
-  const int nn = nodes_per_element(lex, p.dim, type, tag);
+  const int nn = p.surface ? surface_nodes_per_element(lex, type, tag)
+                           : nodes_per_element(lex, p.dim, type, tag);
   std::vector<int> nodes;
   for (int k = 0; k < nn; ++k) {
     const long n = node();
@@ -102,11 +129,11 @@ void add_element(Lexer& lex, Parsed& p, long type, long tag, long entity, int at
     nodes.push_back(it->second);
   }
   if (type == p.domain_type()) {
-    std::vector<int> corners(nodes.begin(), nodes.begin() + p.dim + 1);
+    std::vector<int> corners(nodes.begin(), nodes.begin() + p.corners());
     std::sort(corners.begin(), corners.end());
     if (p.msh22 && !p.domain_corners.insert(corners).second) return; // the same, another group
   } else if (type != p.boundary_type()) {
-    return; // points, and lines of a 3-D mesh
+    return; // points, and lines of a 3-D mesh or a surface
   }
   p.elements.push_back({type, tag, entity, at, std::move(nodes), std::move(physicals)});
 }

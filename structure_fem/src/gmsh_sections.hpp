@@ -26,7 +26,8 @@ struct RawElement {
 
 /// What the sections of a file build up.
 struct Parsed {
-  int dim = 2; // of the mesh read: 2 (T6, nodes in the plane z = 0) or 3 (T10)
+  int dim = 2;          // of the mesh read: 2 (T6, nodes in the plane z = 0) or 3 (T10)
+  bool surface = false; // dim 3: a surface of 3-node triangles (gmsh -2 on a 3-D geometry)
   std::string path;
   bool binary = false, msh22 = false;
   std::map<std::pair<long, long>, std::string> physical_name;          // (dim, tag) -> name
@@ -39,10 +40,13 @@ struct Parsed {
   std::set<std::vector<int>> domain_corners; // sorted (MSH 2.2 repeats an element per group)
   std::string off_plane; // 2-D: the refusal of the first node off z = 0 (empty: none)
 
-  /// Gmsh's element type of the domain (9: 6-node triangle, 11: 10-node tetrahedron).
-  long domain_type() const { return dim == 2 ? 9 : 11; }
-  /// Gmsh's element type of the boundary (8: 3-node line, 9: 6-node triangle).
-  long boundary_type() const { return dim == 2 ? 8 : 9; }
+  /// Gmsh's element type of the domain (9: 6-node triangle, 11: 10-node tetrahedron, a
+  /// surface's 2: 3-node triangle).
+  long domain_type() const { return surface ? 2 : dim == 2 ? 9 : 11; }
+  /// Gmsh's element type of the boundary (8: 3-node line, 9: 6-node triangle; a surface: none).
+  long boundary_type() const { return surface ? -1 : dim == 2 ? 8 : 9; }
+  /// The corners of a domain element.
+  int corners() const { return surface ? 3 : dim + 1; }
   /// "PATH:LINE: " for an ASCII file, "PATH: " for a binary one.
   std::string at(int line) const {
     return binary ? path + ": " : path + ":" + std::to_string(line) + ": ";
@@ -56,9 +60,10 @@ struct Parsed {
 
 /// `path` opened for reading; throws InputError when it is no regular file or cannot be opened.
 std::ifstream open_mesh_file(const std::string& path);
-/// The whole file: the format line, the sections in file order, the required physical groups.
+/// The whole file: the format line, the sections in file order, the required physical groups;
+/// `surface` (dim 3): 3-node triangles.
 Parsed parse(std::istream& in, const std::string& path, int dim,
-             const std::vector<std::string>& required_groups);
+             const std::vector<std::string>& required_groups, bool surface = false);
 
 /// $PhysicalNames: the (dimension, tag) -> name map (both formats).
 void read_physical_names(Lexer& lex, Parsed& p);

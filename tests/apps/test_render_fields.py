@@ -3,9 +3,12 @@
 fluid clipped. The picture must be the file's: the frame drawn is t = 0.01 s, the pressure and von
 Mises colour maps span that frame's own minimum and maximum in fields.h5 exactly, the PNG has the
 asked size, and it shows both (pixels of the pressure map's warm end and of the stress map's
-yellow end, and 5-95 % of it not background).
+yellow end, and 5-95 % of it not background). Then a TL-SPH solid (CANTILEVER, the 3-D cantilever
+as TL-SPH, 0.02 s): its particles drawn as spheres, not one-pixel points: over 3 % of the picture
+left of the colour bar drawn (spheres 6.8 %, points 1.1 %), its von Mises range fields.h5's.
 
-Usage: python3 test_render_fields.py RENDER FSI SCENE OUTDIR. Exit 77 without ParaView or Xvfb.
+Usage: python3 test_render_fields.py RENDER FSI SCENE CANTILEVER OUTDIR. Exit 77 without ParaView
+or Xvfb.
 """
 import json
 import shutil
@@ -16,7 +19,7 @@ import h5py
 import matplotlib.image
 import numpy as np
 
-render, fsi, scene, out = sys.argv[1:5]
+render, fsi, scene, cantilever, out = sys.argv[1:6]
 if shutil.which("pvpython") is None or shutil.which("Xvfb") is None:
     print("skipped: pvpython or Xvfb missing (python3-paraview, xvfb: scripts/setup)")
     sys.exit(77)
@@ -54,6 +57,28 @@ yellow = np.sum((r > 0.8) & (g > 0.8) & (b < 0.3))  # Viridis's yellow end: the 
 if warm < 100 or yellow < 100:
     failures.append("pixels: %d of the pressure map's red end, %d of the stress map's yellow end"
                     % (warm, yellow))
+
+solid = out + "/tlsph"
+subprocess.run([fsi, "run", cantilever, "--out", solid, "--threads", "1", "--set",
+                "structures[0].type=tlsph", "--set", "time.end=0.02", "--set",
+                "output.interval=0.01"], check=True, stdout=subprocess.DEVNULL)
+drawn = subprocess.run([render, solid, "--png", solid + "/picture.png", "--size", "800", "450"],
+                       capture_output=True, text=True)
+if drawn.returncode != 0:
+    failures.append("scripts/render exited %d on the TL-SPH run:\n%s%s"
+                    % (drawn.returncode, drawn.stdout, drawn.stderr))
+else:
+    report = json.loads(drawn.stdout.strip().splitlines()[-1])
+    with h5py.File(solid + "/fields.h5", "r") as h5:
+        data = h5["frames/2/beam/von_mises"][...]
+        want = [float(data.min()), float(data.max())]
+    if report["ranges"].get("von_mises") != want:
+        failures.append("TL-SPH von_mises range %s, fields.h5 %s"
+                        % (report["ranges"].get("von_mises"), want))
+    image = matplotlib.image.imread(solid + "/picture.png")[:, :640, :3]
+    spheres = np.mean(np.any(image < 0.97, axis=2))
+    if spheres < 0.03:
+        failures.append("the TL-SPH beam covers %.3f of the picture left of the bar" % spheres)
 for f in failures:
     print("FAIL:", f)
 print("ok: %.3f drawn, %d red, %d yellow pixels" % (drawn_share, warm, yellow)

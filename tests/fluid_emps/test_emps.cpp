@@ -385,7 +385,7 @@ TEST_CASE("emps: across a wall thinner than 2 r_e the mirror sums see the far si
 }
 
 TEST_CASE("emps: a tank rolling +-4 degrees, half full, keeps every particle for 5 periods",
-          "[emps]") {
+          "[emps][long]") {
   const double l0 = 0.01, L = 0.6, H = 0.4;
   erp::WallSet walls;
   const std::vector<Vec2> tank{{0, 0}, {L, 0}, {L, H}, {0, H}}; // closed, counter-clockwise

@@ -218,7 +218,7 @@ TEST_CASE("sph 3-D interface: a still water column on a fixed plate loads it wit
 
 TEST_CASE("sph 3-D interface: the signed distance through the grid of faces equals the scan over "
           "all faces bit for bit",
-          "[sph][3d][interface][grid]") {
+          "[sph][3d][interface][grid][long]") {
   // A bumpy plate of 3,200 order-1 faces (nodes jittered up and down) and the same faces as
   // order 2 (mid-side nodes lifted): random points above, below, beyond the rim and far off, and
   // points just off nodes and edge midpoints, where equally near faces tie.

@@ -53,7 +53,7 @@ double tlsph_mid_span(const Plate& p, int layers) {
 
 TEST_CASE("tlsph: the hydrostatic plate alone converges to the plane-strain plate's deflection "
           "at second order (4, 8 particles through the thickness)",
-          "[solid_tlsph][plate]") {
+          "[solid_tlsph][plate][convergence]") {
   const Plate p;
   const double continuum = fem_test::fem_mid_span(p, 160, 16); // -7.062e-5 m
   double error[2];

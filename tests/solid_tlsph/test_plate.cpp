@@ -153,7 +153,7 @@ double energy_drift(const Beam& b, double periods) {
 } // namespace
 
 TEST_CASE("tlsph: undamped plate conserves energy over 10 periods (H/dp = 4)",
-          "[solid_tlsph][energy]") {
+          "[solid_tlsph][energy][long]") {
   const double drift = energy_drift(plate(4), 10.0), paper = energy_drift(plate(4).paper(), 10.0);
   INFO("max |E - E0| / E0 over 10 periods: defaults " << drift << ", paper form " << paper);
   CHECK(drift < 0.01);

@@ -44,8 +44,10 @@ struct OutputSpec {
 
 struct MotionSpec {
   std::string kind;            ///< sinusoid | table
-  std::string dof;             ///< rotation | x | y
+  std::string dof;             ///< rotation | x | y (| z in 3-D)
   Vec2 pivot = Vec2::Zero();   ///< rotation centre (reference configuration)
+  Vec3 pivot3 = Vec3::Zero();  ///< 3-D: a point of the rotation axis (reference configuration)
+  Vec3 axis = Vec3::UnitZ();   ///< 3-D: the rotation axis
   double amplitude = 0.0;      ///< rad for rotation, m for translation
   double period = 1.0;         ///< s
   double phase = 0.0;          ///< rad

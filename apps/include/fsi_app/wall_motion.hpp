@@ -4,6 +4,7 @@
 #include "fsi_app/scene.hpp"
 #include "fsi_app/scene_reader.hpp"
 #include "geometry_erp/motion.hpp"
+#include "geometry_erp/motion3.hpp"
 
 #include <memory>
 #include <optional>
@@ -14,6 +15,18 @@ namespace fsi::app {
 /// The motion of a wall that has a motion block (the table, if any, read here: InputError with
 /// the table's file and line).
 std::shared_ptr<const erp::Motion> make_motion(const WallSpec& wall);
+
+/// A 3-D motion block (fluid.tank_motion): kind, dof (rotation, x, y or z), axis and pivot
+/// as [x, y, z], and the profile keys of a wall's motion (scene.cpp).
+MotionSpec read_motion3(Section s);
+
+/// The 3-D rigid motion of a read_motion3 block (the table, if any, read here: InputError with
+/// the table's file and line).
+erp::RigidMotion3 make_motion3(const MotionSpec& m);
+
+/// Reads the motion's table (if any) and checks it covers 0 .. time.end unless it holds:
+/// fail_at(line, key) with the table's message.
+void check_motion_table(const Scene& scene, const MotionSpec& m, int line, const std::string& key);
 
 /// Reads every motion table of the scene's walls and checks that it covers the run, 0 ..
 /// time.end (unless the motion says hold: true). InputError `SCENE:LINE: walls[i].motion.table:

@@ -1,6 +1,7 @@
 #pragma once
 // The EMPS fluid of a 3-D scene (dimension: 3, fluid.type: emps): boxes of water in a tank of
-// static ERP triangles (fluid.tank, a closed box, or fluid.tank_file, an STL surface) and,
+// ERP triangles (fluid.tank, a closed box, or fluid.tank_file, an STL surface; static, or moved
+// rigidly by fluid.tank_motion to t + dt before each step) and,
 // coupled, the flat triangles of each structure's interface (erp::InterfaceTriangles, group
 // 1 + j), moved by the coupler through TriangleAdapter. A tank triangle the interfaces' faces
 // cover wholly is left out (a plate forming the tank's floor: the fluid sees the plate there);
@@ -10,10 +11,12 @@
 #include "emps/triangle_adapter.hpp"
 #include "fluid_emps/emps_fluid.hpp"
 #include "fsi_app/solver_plugin.hpp"
+#include "geometry_erp/motion3.hpp"
 #include "geometry_erp/triangle_locator.hpp"
 #include "geometry_erp/triangle_wall_set.hpp"
 
 #include <memory>
+#include <optional>
 
 namespace fsi::app::emps_plugin {
 
@@ -25,7 +28,8 @@ emps::FluidOptions3 fluid_options3(const Scene& scene);
 void check3(const Scene& scene, Section& s, std::vector<Section>& probes);
 Footprint footprint3(const Scene& scene);
 /// The regions hold particles, each on the fluid side of its nearest wall triangle (an STL
-/// surface facing away from the fluid is refused naming its file), the interfaces' meshes make
+/// surface facing away from the fluid is refused naming its file; a moving tank at t = 0; its
+/// motion's table covers the run and there are no structures), the interfaces' meshes make
 /// triangles and cover tank triangles wholly or not at all; InputError naming the key.
 void validate3(const Scene& scene, const std::vector<InterfaceMesh3>& interfaces = {});
 
@@ -71,6 +75,7 @@ private:
 
   std::unique_ptr<erp::TriangleWallSet> walls_; // before the fluid that keeps a reference
   std::vector<erp::InterfaceTriangles> interfaces_;
+  std::optional<erp::RigidTriangles3> tank_motion_; ///< fluid.tank_motion over the tank's nodes
   std::unique_ptr<particles::Decomposition<3>> decomposition_; // before the fluid that uses it
   const Ranks* ranks_ = nullptr;                               ///< set when decomposed
   std::unique_ptr<emps::EmpsFluid3> fluid_;

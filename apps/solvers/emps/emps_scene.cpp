@@ -10,7 +10,7 @@ std::shared_ptr<const SolverSpec> read_fluid(Section& s) {
     FluidSpec3 documented;
     read_tank(s, documented);
   } else {
-    for (const char* key : {"tank", "tank_file"})
+    for (const char* key : {"tank", "tank_file", "tank_motion"})
       if (s.has(key))
         s.fail(key, "is a key of 3-D scenes (dimension: 3); in 2-D the tank is a wall polyline");
   }

@@ -2,6 +2,8 @@
 // (a box, or an STL surface), the fluid and the domain as boxes. What 3-D does not have yet is
 // refused by name.
 #include "emps/emps_spec.hpp"
+#include "fsi_app/wall_motion.hpp"
+#include "structure_fem/gmsh_reader.hpp"
 
 namespace fsi::app::emps_plugin {
 
@@ -16,6 +18,22 @@ void refuse_2d_only(Section& s, const emps::FluidOptions3& o) {
     s.fail("wall_pressure", "'neighbours' is not available in 3-D yet");
 }
 
+/// A tank surface from a file: a Gmsh surface mesh (.msh, gmsh -2) or an STL file, both checked
+/// as geometry_erp's assemble_surface (InputError `FILE[:LINE]: what`).
+erp::StlSurface read_surface_file(const std::filesystem::path& path) {
+  if (path.extension() != ".msh") return erp::read_stl_file(path.string());
+  const fem::SurfaceMesh mesh = fem::read_gmsh_surface(path.string());
+  std::vector<erp::SurfaceFacet> facets;
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    erp::SurfaceFacet& f = facets.emplace_back();
+    f.n = Vec3::Zero(); // no stored normal: the corner order orients the triangle
+    for (std::size_t k = 0; k < 3; ++k)
+      f.v[k] = mesh.X[static_cast<std::size_t>(mesh.triangles[t][k])];
+    f.where = mesh.where[t];
+  }
+  return erp::assemble_surface(facets, path.string());
+}
+
 } // namespace
 
 void read_tank(Section& s, FluidSpec3& f) {
@@ -28,16 +46,24 @@ void read_tank(Section& s, FluidSpec3& f) {
     f.tank_line = t->line();
     f.tank = read_box_region(*t, "the tank's inside");
   }
+  if (auto m =
+          s.block("tank_motion",
+                  "(dimension 3; optional) the tank's prescribed rigid motion, the 3-D form "
+                  "of walls[].motion (docs/fluid_emps.md, \"Moving tanks\"); absent: static")) {
+    f.tank_motion_line = m->line();
+    f.tank_motion = read_motion3(*m);
+  }
   if (!doc && !s.has("tank_file")) return;
   const std::filesystem::path path =
       s.file("tank_file",
              "(dimension 3; optional, instead of tank) the tank's walls as an STL surface (ASCII "
-             "or binary), each facet's normal pointing into the fluid; checked as "
-             "geometry_erp's read_stl (docs/geometry_erp.md)");
+             "or binary) or a Gmsh surface mesh (.msh 4.1 or 2.2 of 3-node triangles, gmsh -2), "
+             "each facet's normal (its corners counter-clockwise) pointing into the fluid; "
+             "checked as geometry_erp's read_stl (docs/geometry_erp.md)");
   if (doc) return;
   f.tank_line = s.line();
   f.tank_path = path.string();
-  f.tank_surface = erp::read_stl_file(path.string()); // InputError `FILE: what is wrong`
+  f.tank_surface = read_surface_file(path); // InputError `FILE: what is wrong`
 }
 
 std::shared_ptr<const SolverSpec> read_fluid3(Section& s) {

@@ -28,6 +28,8 @@ struct FluidSpec3 final : SolverSpec {
   std::optional<erp::StlSurface> tank_surface; ///< tank_file's triangles, normals into the fluid
   std::string tank_path;                       ///< tank_file as resolved, for messages
   int tank_line = 0;                           ///< the line of tank or tank_file
+  std::optional<MotionSpec> tank_motion;       ///< the tank's rigid motion (read_motion3)
+  int tank_motion_line = 0;
   std::vector<Box> regions;  ///< boxes filled at spacing l0 (l0/2 from their faces)
   std::optional<Box> domain; ///< particles leaving it are removed; absent: walls and regions
 };

@@ -30,6 +30,18 @@ struct StlSurface {
   int open_edges = 0;                        ///< edges with one facet
 };
 
+/// One facet as read: the stored normal (zero: none, as a Gmsh triangle), the vertices in their
+/// order, and where it is for messages (`FILE:LINE` or `FILE: facet K`).
+struct SurfaceFacet {
+  Vec3 n;
+  std::array<Vec3, 3> v;
+  std::string where;
+};
+
+/// Merges equal vertices and makes the checks above of every facet and edge (`WHERE: what`),
+/// counts the open edges; shared by the STL reader and the Gmsh surfaces (fluid.tank_file).
+StlSurface assemble_surface(const std::vector<SurfaceFacet>& facets, const std::string& file);
+
 /// Reads an STL surface from `in`; `file` names it in messages. Binary if the stream does not
 /// start with "solid" followed by white space, or if it does but its size is 84 + 50 n with n
 /// the count at byte 80 (binary files whose header starts with "solid").

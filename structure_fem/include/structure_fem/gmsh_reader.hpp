@@ -1,6 +1,7 @@
 #pragma once
 // Gmsh .msh import of second-order triangle (2-D) and tetrahedron (3-D) meshes: format 4.1 (ASCII
 // and binary, `-bin`) and ASCII 2.2 (`-format msh22`), as Gmsh writes them.
+#include <array>
 #include <istream>
 #include <string>
 #include <vector>
@@ -38,5 +39,21 @@ TetMesh read_gmsh_t10(const std::string& path,
 /// The same from a stream; `path` names it in messages and in TetMesh::source.
 TetMesh read_gmsh_t10(std::istream& in, const std::string& path,
                       const std::vector<std::string>& required_groups = {});
+
+/// A surface of flat triangles in 3-D (walls for a fluid, geometry_erp), as read_gmsh_surface
+/// reads it: the nodes, the triangles in the file's corner order, and where each is.
+struct SurfaceMesh {
+  std::vector<Vec3> X;
+  std::vector<std::array<int, 3>> triangles; ///< indices into X
+  std::vector<std::string> where; ///< per triangle: `PATH:LINE: element TAG` (ASCII) or `PATH: ...`
+};
+
+/// Reads `path` as a surface mesh (gmsh -2 on a 3-D geometry): 3-node triangles (type 2) in file
+/// order, lines (1) and points (15) ignored; format 4.1 (ASCII or binary) or ASCII 2.2. Throws
+/// InputError as read_gmsh does, and for second-order elements, tetrahedra (a volume mesh) and a
+/// file without triangles. The surface's own checks (orientation, open edges) are the caller's
+/// (geometry_erp's assemble_surface).
+SurfaceMesh read_gmsh_surface(const std::string& path);
+SurfaceMesh read_gmsh_surface(std::istream& in, const std::string& path);
 
 } // namespace fsi::fem
