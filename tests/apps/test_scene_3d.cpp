@@ -171,18 +171,19 @@ TEST_CASE("apps: sliding faces of a 3-D scene hold the displacement along their 
                     Catch::Contains("sliding: unknown boundary tag 'lid'"));
 }
 
-TEST_CASE("apps: a 3-D scene's clamped_rotation turns the body rigidly, stress-free",
+TEST_CASE("apps: a 3-D scene's clamped_rigid_motion turns the body rigidly, stress-free",
           "[apps][scene][3d]") {
   // The 1 x 0.1 x 0.1 beam's left face turned about y (axis given unnormalised) through its
   // centre c by theta(t) = 1 rad sin(2 pi t / 4 s): solved statically at t = 1 s (theta = 1 rad),
   // every node is at c + R (X - c) and the stress vanishes (F = R: E = 0); a positive turn
   // about +y carries the tip to -z. Then one step from t = 0.5 s: the clamped nodes' v and a are
   // the central differences of their prescribed u.
-  const Scene s = parse_scene(box_scene, "b.yaml",
-                              {"gravity=[0, 0, 0]", "structures[0].loads=[]",
-                               "structures[0].clamped_rotation={axis: [0, 2, 0], centre: [0, "
-                               "0.05, 0.05], amplitude: 1.0, period: 4.0}",
-                               "output.probes=[]"});
+  const Scene s = parse_scene(
+      box_scene, "b.yaml",
+      {"gravity=[0, 0, 0]", "structures[0].loads=[]",
+       "structures[0].clamped_rigid_motion={kind: sinusoid, axis: [0, 2, 0], pivot: [0, "
+       "0.05, 0.05], amplitude: 1.0, period: 4.0}",
+       "output.probes=[]"});
   const auto part = find_structure_plugin("fem")->build(s, 0);
   auto& structure = dynamic_cast<fem_plugin::FemModelT10&>(*part).structure();
   const fsi::Vec3 c(0.0, 0.05, 0.05), y(0.0, 1.0, 0.0);
@@ -200,7 +201,7 @@ TEST_CASE("apps: a 3-D scene's clamped_rotation turns the body rigidly, stress-f
                              u_at(X[k], 1.0))
                                 .norm());
   const double stress = structure.von_mises().cwiseAbs().maxCoeff();
-  WARN("clamped_rotation 1 rad about y: largest deviation from the rigid rotation "
+  WARN("clamped_rigid_motion 1 rad about y: largest deviation from the rigid rotation "
        << deviation << " m, largest von Mises / E " << stress / 1e7);
   CHECK(deviation < 1e-12); // m; the tip moves 0.96 m
   CHECK(stress < 1e-9 * 1e7);
@@ -225,24 +226,27 @@ TEST_CASE("apps: a 3-D scene's clamped_rotation turns the body rigidly, stress-f
   CHECK(a_error < 1e-5); // |a| up to 0.16 m/s^2
 
   // Bad input, one line each: a zero axis; the 2-D wall key in 3-D; no clamp to turn.
-  CHECK_THROWS_WITH(parse_scene(box_scene + "    clamped_rotation: {axis: [0, 0, 0], amplitude: "
-                                            "1, period: 1}\n",
-                                "b.yaml", {}),
-                    "b.yaml:15: structures[0].clamped_rotation.axis: must be a non-zero, finite "
-                    "direction");
+  CHECK_THROWS_WITH(
+      parse_scene(box_scene +
+                      "    clamped_rigid_motion: {kind: sinusoid, axis: [0, 0, 0], amplitude: "
+                      "1, period: 1}\n",
+                  "b.yaml", {}),
+      "b.yaml:15: structures[0].clamped_rigid_motion.axis: is zero");
   CHECK_THROWS_WITH(parse_scene(box_scene, "b.yaml", {"structures[0].clamped_motion=tank"}),
                     Catch::Contains("structures[0].clamped_motion: names a 2-D wall; 3-D scenes "
-                                    "have none: turn the clamp with clamped_rotation"));
+                                    "have none: move the clamp with clamped_rigid_motion"));
   CHECK_THROWS_WITH(
-      parse_scene(box_scene, "b.yaml",
-                  {"structures[0].clamped=[]",
-                   "structures[0].clamped_rotation={axis: [0, 1, 0], amplitude: 1, period: 1}"}),
-      Catch::Contains("structures[0].clamped_rotation: needs clamped boundary tags to turn"));
+      parse_scene(
+          box_scene, "b.yaml",
+          {"structures[0].clamped=[]", "structures[0].clamped_rigid_motion={kind: sinusoid, axis: "
+                                       "[0, 1, 0], amplitude: 1, period: 1}"}),
+      Catch::Contains("structures[0].clamped_rigid_motion: needs clamped boundary tags to move"));
   // A TL-SPH solid made from the entry (--set type=tlsph) would drop the turn: refused.
   CHECK_THROWS_WITH(
       parse_scene(box_scene, "b.yaml",
                   {"structures[0].loads=[]", "structures[0].type=tlsph",
-                   "structures[0].clamped_rotation={axis: [0, 1, 0], amplitude: 1, period: 1}"}),
-      Catch::Contains("structures[0].clamped_rotation: a 3-D TL-SPH solid's clamps are fixed: "
-                      "with a turning clamp the entry is of type fem only"));
+                   "structures[0].clamped_rigid_motion={kind: sinusoid, axis: [0, 1, 0], "
+                   "amplitude: 1, period: 1}"}),
+      Catch::Contains("structures[0].clamped_rigid_motion: a 3-D TL-SPH solid's clamps are "
+                      "fixed: with a moving clamp the entry is of type fem only"));
 }

@@ -2,15 +2,13 @@
 
 #include "fem/fem_model.hpp"
 #include "fsi/core/error.hpp"
+#include "fsi_app/wall_motion.hpp"
 #include "structure_fem/box_mesher.hpp"
 #include "structure_fem/gmsh_reader.hpp"
 #include "structure_fem/loads.hpp"
 
-#include <Eigen/Geometry>
-
 #include <algorithm>
 #include <array>
-#include <cmath>
 #include <limits>
 #include <stdexcept>
 
@@ -81,16 +79,11 @@ int plane_axis(const Scene& scene, const StructureBlock& block, const fem::TetMe
   return axis;
 }
 
-// The rigid rotation of the clamped faces (clamped_rotation): r = R(theta) (X - c),
-// u = c + r - X, v = theta' a x r, acceleration theta'' a x r + theta'^2 a x (a x r).
-fem::PrescribedMotion3 clamp_rotation(const ClampRotationSpec& c) {
-  return [c](const Vec3& X, double t) {
-    const double w = 2.0 * M_PI / c.period, phase = w * t + c.phase;
-    const double theta = c.amplitude * std::sin(phase), rate = c.amplitude * w * std::cos(phase);
-    const double rate2 = -w * w * theta;
-    const Vec3 r = Eigen::AngleAxisd(theta, c.axis) * (X - c.centre), ar = c.axis.cross(r);
-    return fem::PrescribedKinematics3{c.centre + r - X, rate * ar,
-                                      rate2 * ar + rate * rate * c.axis.cross(ar)};
+// The clamped faces' rigid motion (clamped_rigid_motion; erp::RigidMotion3, exact v and a).
+fem::PrescribedMotion3 clamp_motion(const MotionSpec& m) {
+  return [motion = make_motion3(m)](const Vec3& X, double t) {
+    const erp::NodeState3 n = motion.at(t, X);
+    return fem::PrescribedKinematics3{n.x - X, n.v, n.a};
   };
 }
 
@@ -105,7 +98,7 @@ std::unique_ptr<fem::StructureT10> build_structure_t10(const Scene& scene,
   o.linear_solver = spec.options.linear_solver;
   o.gravity = scene.gravity3;
   const fem::PrescribedMotion3 motion =
-      spec.clamped_rotation ? clamp_rotation(*spec.clamped_rotation) : nullptr; // null: fixed
+      spec.clamped_rigid_motion ? clamp_motion(*spec.clamped_rigid_motion) : nullptr; // null: fixed
   for (const auto& tag : spec.clamped) o.clamped.push_back({tag, {true, true, true}, {}, motion});
   for (const auto& tag : spec.sliding) {
     std::array<bool, 3> fix{false, false, false};
@@ -129,12 +122,12 @@ std::unique_ptr<fem::StructureT10> build_structure_t10(const Scene& scene,
     structure->set_external_forces(loads);
     structure->update_acceleration();
   }
-  if (motion) { // start at rest, in equilibrium with the clamp at its angle at t = 0
+  if (motion) { // start at rest, in equilibrium with the clamp where it is at t = 0
     try {
       structure->solve_static({.load_steps = 1, .time = 0.0});
       structure->update_acceleration();
     } catch (const RunError& e) {
-      fail_at(scene, block.line, block.key + ".clamped_rotation", e.what());
+      fail_at(scene, block.line, block.key + ".clamped_rigid_motion", e.what());
     }
   }
   return structure;

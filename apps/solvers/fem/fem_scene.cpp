@@ -2,6 +2,7 @@
 #include "fem/fem_spec.hpp"
 
 #include "fsi_app/material_reader.hpp"
+#include "fsi_app/wall_motion.hpp"
 #include "structure_fem/options.hpp"
 
 #include <cmath>
@@ -69,28 +70,6 @@ PointLoadSpec read_load(Section& load) {
   return p;
 }
 
-ClampRotationSpec read_clamp_rotation(Section r) {
-  ClampRotationSpec c;
-  c.axis = r.vec3("axis", Vec3::UnitZ(),
-                  "direction of the axis (right-hand rule), any length; absent: z");
-  if (!r.context().documenting()) {
-    if (!(c.axis.norm() > 0.0) || !std::isfinite(c.axis.norm()))
-      r.fail("axis", "must be a non-zero, finite direction");
-    c.axis.normalize();
-  }
-  c.centre = r.vec3("centre", Vec3::Zero(), "a point on the axis, m");
-  c.amplitude = r.real("amplitude", Range::any(), "rad");
-  c.period = r.real("period", Range::positive(), "s");
-  c.phase = r.real("phase", 0.0, Range::any(), "rad");
-  const double omega = 2.0 * M_PI / c.period;
-  if (!r.context().documenting() &&
-      !(std::isfinite(omega * omega) && std::isfinite(std::abs(c.amplitude) * omega * omega)))
-    r.fail("period", "the angular acceleration amplitude * (2 pi / period)^2 is not finite; "
-                     "give a longer period");
-  r.finish();
-  return c;
-}
-
 } // namespace
 
 std::shared_ptr<const SolverSpec> read_structure(Section& s) {
@@ -112,16 +91,19 @@ std::shared_ptr<const SolverSpec> read_structure(Section& s) {
              "prescribed; e.g. a beam clamped to a rolling tank), starting from static "
              "equilibrium with the wall at t = 0; empty: they stay fixed");
   if (three_d || doc) {
-    if (auto r = s.block("clamped_rotation",
-                         "3-D: the clamped faces turn rigidly about an axis by theta(t) = "
-                         "amplitude sin(2 pi t / period + phase), starting from static "
-                         "equilibrium with the clamp at t = 0 (the 2-D walls' sinusoid)"))
-      st.clamped_rotation = read_clamp_rotation(*r);
-    if (!doc && st.clamped_rotation && st.clamped.empty())
-      s.fail("clamped_rotation", "needs clamped boundary tags to turn");
+    if (auto r = s.block("clamped_rigid_motion",
+                         "3-D: the clamped faces' rigid motion, the keys of fluid.tank_motion "
+                         "(a translation along x, y or z, or a rotation about an axis; a "
+                         "sinusoid or a table), starting from static equilibrium with the clamp "
+                         "at t = 0")) {
+      st.clamped_rigid_motion_line = r->line();
+      st.clamped_rigid_motion = read_motion3(*r);
+    }
+    if (!doc && st.clamped_rigid_motion && st.clamped.empty())
+      s.fail("clamped_rigid_motion", "needs clamped boundary tags to move");
     if (!doc && three_d && !st.clamped_motion.empty())
-      s.fail("clamped_motion", "names a 2-D wall; 3-D scenes have none: turn the clamp with "
-                               "clamped_rotation");
+      s.fail("clamped_motion", "names a 2-D wall; 3-D scenes have none: move the clamp with "
+                               "clamped_rigid_motion");
   }
   st.interface = s.names("interface", {}, "boundary tags wetted by the fluid");
   if (auto nb = s.block("newmark", "Newmark-beta coefficients (eqs. 40-41)")) {

@@ -31,14 +31,6 @@ struct PointLoadSpec {
   double pressure = 0.0;      ///< 3-D: Pa against the outward normal
 };
 
-/// 3-D: the clamped faces turn rigidly about the axis through `centre` along `axis` (right-hand
-/// rule) by theta(t) = amplitude sin(2 pi t / period + phase), the 2-D walls' sinusoid.
-struct ClampRotationSpec {
-  Vec3 axis = Vec3::UnitZ(); ///< unit direction
-  Vec3 centre = Vec3::Zero();
-  double amplitude = 0.0, period = 1.0, phase = 0.0; ///< rad, s, rad
-};
-
 struct StructureSpec final : SolverSpec {
   MeshSpec mesh;
   /// What structure_fem and materials/ declare (visit_options): material, newmark, newton and
@@ -47,8 +39,9 @@ struct StructureSpec final : SolverSpec {
   std::vector<std::string> clamped; ///< boundary tags held fixed
   std::vector<std::string> sliding; ///< 3-D: tags sliding in their coordinate plane
   std::string clamped_motion;       ///< wall whose rigid motion the clamped nodes follow
-  std::optional<ClampRotationSpec> clamped_rotation; ///< 3-D: the clamped faces' rotation
-  std::vector<std::string> interface;                ///< boundary tags wetted by the fluid
+  std::optional<MotionSpec> clamped_rigid_motion; ///< 3-D: the clamped faces' rigid motion
+  int clamped_rigid_motion_line = 0;
+  std::vector<std::string> interface; ///< boundary tags wetted by the fluid
   std::vector<PointLoadSpec> loads;
 };
 
