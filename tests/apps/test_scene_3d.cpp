@@ -236,10 +236,10 @@ TEST_CASE("apps: a 3-D scene's clamped_rigid_motion turns the body rigidly, stre
                     Catch::Contains("structures[0].clamped_motion: names a 2-D wall; 3-D scenes "
                                     "have none: move the clamp with clamped_rigid_motion"));
   CHECK_THROWS_WITH(
-      parse_scene(
-          box_scene, "b.yaml",
-          {"structures[0].clamped=[]", "structures[0].clamped_rigid_motion={kind: sinusoid, axis: "
-                                       "[0, 1, 0], amplitude: 1, period: 1}"}),
+      parse_scene(box_scene, "b.yaml",
+                  {"structures[0].clamped=[]",
+                   "structures[0].clamped_rigid_motion={kind: sinusoid, axis: "
+                   "[0, 1, 0], amplitude: 1, period: 1}"}),
       Catch::Contains("structures[0].clamped_rigid_motion: needs clamped boundary tags to move"));
   // A TL-SPH solid made from the entry (--set type=tlsph) would drop the turn: refused.
   CHECK_THROWS_WITH(
