@@ -222,6 +222,9 @@ void tlsph_from_fem(Section& s) {
   if (!fe.loads.empty())
     fe_keys.fail("loads", "a TL-SPH solid takes no constant loads: with loads the entry is of "
                           "type fem only");
+  if (fe.clamped_rigid_motion)
+    fe_keys.fail("clamped_rigid_motion", "a 3-D TL-SPH solid's clamps are fixed: with a moving "
+                                         "clamp the entry is of type fem only");
   const std::set<std::string> moved =
       only_in(declared_keys(fem_plugin::read_structure), declared_keys(tlsph_plugin::read_tlsph));
   if (s.context().dimension == 3) {

@@ -259,6 +259,12 @@ TEST_CASE("fem: Gmsh T10 reader: bad meshes are refused with their file and line
         "t.msh:55: element 1: inverted element (det J <= 0 inside; mid-node too far from its "
         "edge midpoint)");
 
+  Fixture swapped = two_tets(); // the last two edge nodes in CalculiX's C3D10 order, not Gmsh's
+  std::swap(swapped.elements[2].nodes[8], swapped.elements[2].nodes[9]);
+  CHECK(message_of_text(ascii41(swapped)) ==
+        "t.msh:55: element 1: inverted element (det J <= 0 inside; mid-node too far from its "
+        "edge midpoint)");
+
   CHECK(message_of_text(ascii41(two_tets()), {"solid", "interface"}) ==
         "t.msh: missing physical group \"interface\" (the file names: clamped, loaded, solid)");
 

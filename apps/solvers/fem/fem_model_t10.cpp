@@ -2,6 +2,7 @@
 
 #include "fem/fem_model.hpp"
 #include "fsi/core/error.hpp"
+#include "fsi_app/wall_motion.hpp"
 #include "structure_fem/box_mesher.hpp"
 #include "structure_fem/gmsh_reader.hpp"
 #include "structure_fem/loads.hpp"
@@ -78,6 +79,14 @@ int plane_axis(const Scene& scene, const StructureBlock& block, const fem::TetMe
   return axis;
 }
 
+// The clamped faces' rigid motion (clamped_rigid_motion; erp::RigidMotion3, exact v and a).
+fem::PrescribedMotion3 clamp_motion(const MotionSpec& m) {
+  return [motion = make_motion3(m)](const Vec3& X, double t) {
+    const erp::NodeState3 n = motion.at(t, X);
+    return fem::PrescribedKinematics3{n.x - X, n.v, n.a};
+  };
+}
+
 std::unique_ptr<fem::StructureT10> build_structure_t10(const Scene& scene,
                                                        const StructureBlock& block) {
   const StructureSpec& spec = block.as<StructureSpec>();
@@ -88,7 +97,9 @@ std::unique_ptr<fem::StructureT10> build_structure_t10(const Scene& scene,
   o.newton = spec.options.newton;
   o.linear_solver = spec.options.linear_solver;
   o.gravity = scene.gravity3;
-  for (const auto& tag : spec.clamped) o.clamped.push_back({tag, {true, true, true}, {}, {}});
+  const fem::PrescribedMotion3 motion =
+      spec.clamped_rigid_motion ? clamp_motion(*spec.clamped_rigid_motion) : nullptr; // null: fixed
+  for (const auto& tag : spec.clamped) o.clamped.push_back({tag, {true, true, true}, {}, motion});
   for (const auto& tag : spec.sliding) {
     std::array<bool, 3> fix{false, false, false};
     fix[static_cast<std::size_t>(plane_axis(scene, block, mesh, tag))] = true;
@@ -110,6 +121,14 @@ std::unique_ptr<fem::StructureT10> build_structure_t10(const Scene& scene,
   if (!spec.loads.empty()) {
     structure->set_external_forces(loads);
     structure->update_acceleration();
+  }
+  if (motion) { // start at rest, in equilibrium with the clamp where it is at t = 0
+    try {
+      structure->solve_static({.load_steps = 1, .time = 0.0});
+      structure->update_acceleration();
+    } catch (const RunError& e) {
+      fail_at(scene, block.line, block.key + ".clamped_rigid_motion", e.what());
+    }
   }
   return structure;
 }

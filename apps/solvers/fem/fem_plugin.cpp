@@ -63,6 +63,9 @@ void check(const Scene& scene, std::size_t index, Section& s, std::vector<Sectio
       if (!tags.count(l.boundary)) s.fail("loads", "unknown boundary tag '" + l.boundary + "'");
   }
   check_clamped_motion(scene, st.clamped_motion, !st.clamped.empty(), "clamped boundary tags", s);
+  if (st.clamped_rigid_motion)
+    check_motion_table(scene, *st.clamped_rigid_motion, st.clamped_rigid_motion_line,
+                       s.path() + ".clamped_rigid_motion.table");
   if (scene.fluid && st.interface.empty()) // a fluid and a structure are coupled
     s.fail("interface", "a structure coupled to the fluid needs the boundary tags it is wetted on");
   for (std::size_t i = 0; i < scene.output.probes.size(); ++i) {

@@ -2,6 +2,7 @@
 #include "fem/fem_spec.hpp"
 
 #include "fsi_app/material_reader.hpp"
+#include "fsi_app/wall_motion.hpp"
 #include "structure_fem/options.hpp"
 
 #include <cmath>
@@ -89,6 +90,21 @@ std::shared_ptr<const SolverSpec> read_structure(Section& s) {
              "name of a wall with a motion: the clamped nodes follow its rigid motion (u, v, a "
              "prescribed; e.g. a beam clamped to a rolling tank), starting from static "
              "equilibrium with the wall at t = 0; empty: they stay fixed");
+  if (three_d || doc) {
+    if (auto r = s.block("clamped_rigid_motion",
+                         "3-D: the clamped faces' rigid motion, the keys of fluid.tank_motion "
+                         "(a translation along x, y or z, or a rotation about an axis; a "
+                         "sinusoid or a table), starting from static equilibrium with the clamp "
+                         "at t = 0")) {
+      st.clamped_rigid_motion_line = r->line();
+      st.clamped_rigid_motion = read_motion3(*r);
+    }
+    if (!doc && st.clamped_rigid_motion && st.clamped.empty())
+      s.fail("clamped_rigid_motion", "needs clamped boundary tags to move");
+    if (!doc && three_d && !st.clamped_motion.empty())
+      s.fail("clamped_motion", "names a 2-D wall; 3-D scenes have none: move the clamp with "
+                               "clamped_rigid_motion");
+  }
   st.interface = s.names("interface", {}, "boundary tags wetted by the fluid");
   if (auto nb = s.block("newmark", "Newmark-beta coefficients (eqs. 40-41)")) {
     OptionReader reader(*nb);

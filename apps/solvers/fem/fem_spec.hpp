@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -35,9 +36,11 @@ struct StructureSpec final : SolverSpec {
   /// What structure_fem and materials/ declare (visit_options): material, newmark, newton and
   /// the linear solver; gravity and clamped conditions are set from the scene when built.
   fem::StructureOptions options;
-  std::vector<std::string> clamped;   ///< boundary tags held fixed
-  std::vector<std::string> sliding;   ///< 3-D: tags sliding in their coordinate plane
-  std::string clamped_motion;         ///< wall whose rigid motion the clamped nodes follow
+  std::vector<std::string> clamped; ///< boundary tags held fixed
+  std::vector<std::string> sliding; ///< 3-D: tags sliding in their coordinate plane
+  std::string clamped_motion;       ///< wall whose rigid motion the clamped nodes follow
+  std::optional<MotionSpec> clamped_rigid_motion; ///< 3-D: the clamped faces' rigid motion
+  int clamped_rigid_motion_line = 0;
   std::vector<std::string> interface; ///< boundary tags wetted by the fluid
   std::vector<PointLoadSpec> loads;
 };
