@@ -17,12 +17,24 @@
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
+#include <unistd.h>
 #include <vector>
 
 namespace {
 
 namespace fs = std::filesystem;
 const std::string dam_break = std::string(FSI_TEST_DATA) + "/dam_break_ranks.yaml";
+
+/// This process's folder for logs and runs, so two test programs at once (two builds on one
+/// machine) do not share files.
+const fs::path& scratch() {
+  static const fs::path dir = [] {
+    const fs::path d = fs::temp_directory_path() / ("fsi_ranks_" + std::to_string(getpid()));
+    fs::create_directories(d);
+    return d;
+  }();
+  return dir;
+}
 
 struct Outcome {
   int status = -1;
@@ -39,7 +51,7 @@ std::string text_of(const fs::path& file) {
 /// Runs `fsi ARGS` under mpirun on `np` ranks (np = 0: without mpirun); with `limit` seconds,
 /// killed after them (status 124, a hang).
 Outcome fsi(int np, const std::string& args, int limit = 0) {
-  const fs::path log = fs::temp_directory_path() / "fsi_ranks_log.txt";
+  const fs::path log = scratch() / "fsi_ranks_log.txt";
   std::string command = std::string(FSI_EXE) + " " + args;
   if (np > 0)
     command = std::string(FSI_MPIEXEC) + " --oversubscribe --allow-run-as-root -np " +
@@ -54,7 +66,7 @@ Outcome fsi(int np, const std::string& args, int limit = 0) {
 fs::path run(const std::string& scene, int np, const std::string& args = "",
              const std::string& tag = "") {
   const std::string name = fs::path(scene).stem().string() + tag;
-  const fs::path out = fs::temp_directory_path() / (name + "_np" + std::to_string(np));
+  const fs::path out = scratch() / (name + "_np" + std::to_string(np));
   fs::remove_all(out);
   const Outcome o = fsi(np, "run " + scene + " --out " + out.string() + " --threads 1 " + args);
   INFO(o.output);
@@ -221,7 +233,7 @@ TEST_CASE("mpirun -np N fsi run of a 3-D SPH scene gives the one-process files",
 }
 
 TEST_CASE("bad input under mpirun: exit 2, the message once", "[mpi]") {
-  const fs::path out = fs::temp_directory_path() / "fsi_ranks_bad";
+  const fs::path out = scratch() / "fsi_ranks_bad";
   fs::remove_all(out);
   const std::string data = std::string(FSI_SOURCE_DIR) + "/tests/apps/data/";
   const Outcome bad = fsi(2, "run " + data + "bad_density.yaml --out " + out.string());
@@ -261,7 +273,7 @@ TEST_CASE("a run failing on some ranks stops every rank as one process does", "[
   const std::string failing = std::string(FSI_TEST_DATA) + "/one_rank_failure.yaml";
   const std::string what = "is behind wall segment";
   for (const int np : {0, 2, 4}) {
-    const fs::path out = fs::temp_directory_path() / ("fsi_rank_failure_np" + std::to_string(np));
+    const fs::path out = scratch() / ("fsi_rank_failure_np" + std::to_string(np));
     fs::remove_all(out);
     const Outcome o = fsi(np, "run " + failing + " --out " + out.string() + " --threads 1", 240);
     INFO("np = " << np << ":\n" << o.output);
@@ -301,7 +313,7 @@ void run_into(int np, const fs::path& out, const std::string& args) {
 
 /// A fresh copy of `from` (a run's folder) at `to`.
 fs::path copy_of(const fs::path& from, const std::string& to) {
-  const fs::path out = fs::temp_directory_path() / to;
+  const fs::path out = scratch() / to;
   fs::remove_all(out);
   fs::copy(from, out);
   return out;
@@ -313,13 +325,13 @@ TEST_CASE("a checkpoint of a decomposed run restarts on any process count", "[mp
   // 20 steps, a checkpoint after 10 (and one at the end); the restarts continue from step 10.
   const std::string set = "--set time.end=0.002 --set checkpoint.interval_steps=10";
   const std::string ten = "/checkpoint_000000010.h5";
-  const fs::path four = fs::temp_directory_path() / "fsi_ckpt_np4";
+  const fs::path four = scratch() / "fsi_ckpt_np4";
   fs::remove_all(four);
   run_into(4, four, set);
   REQUIRE(fs::exists(four / ten.substr(1)));
   // An np = 4 checkpoint continued on 4 and 2 ranks and by plain fsi (the one-process format);
   // a one-process checkpoint continued on 2 ranks.
-  const fs::path serial = fs::temp_directory_path() / "fsi_ckpt_np0";
+  const fs::path serial = scratch() / "fsi_ckpt_np0";
   fs::remove_all(serial);
   run_into(0, serial, set);
   struct Case {
@@ -381,7 +393,7 @@ TEST_CASE("a checkpoint with fewer particles than processes is refused once", "[
   const std::string set = "--set time.end=1e-4 --set output.interval=1e-4 "
                           "--set checkpoint.interval_steps=1 "
                           "--set 'fluid.regions[0].max=[0.004, 0.002]'";
-  const fs::path out = fs::temp_directory_path() / "fsi_ckpt_tiny";
+  const fs::path out = scratch() / "fsi_ckpt_tiny";
   fs::remove_all(out);
   run_into(0, out, set);
   const std::string checkpoint = (out / "checkpoint_000000001.h5").string();
@@ -536,8 +548,8 @@ TEST_CASE("a structure failing on rank 0 stops every rank as one process does", 
   // rank waits for it: exit 3 on every rank, rank 0's message once, run.json "failed".
   const std::string set = "--set structures[0].material.youngs_modulus=0.01 --set time.dt=1e-3 "
                           "--set time.end=0.05 --set output.interval=1e-3";
-  const fs::path serial = fs::temp_directory_path() / "walhorn_failure_np0",
-                 two = fs::temp_directory_path() / "walhorn_failure_np2";
+  const fs::path serial = scratch() / "walhorn_failure_np0",
+                 two = scratch() / "walhorn_failure_np2";
   for (const auto& out : {serial, two}) fs::remove_all(out);
   const Outcome one = fsi(0, "run " + walhorn + " --out " + serial.string() + " " + set);
   const Outcome o = fsi(2, "run " + walhorn + " --out " + two.string() + " " + set, 120);
