@@ -39,7 +39,8 @@ public:
   std::optional<std::string> non_finite() const override;
   void report(JsonObject& run) const override;
   /// The fluid steps over `ranks` (parallel::ParticleDecomposition under mpirun); every rank
-  /// built it from the whole scene and holds every wall particle. Without structures.
+  /// built it from the whole scene and holds every wall particle, the boundary points moved
+  /// alike on every rank by the same (rank 0's) interface motion.
   bool decompose(const Ranks& ranks) override;
   /// Decomposed: every rank's owned particles to rank 0 in id order (one-process files and
   /// N-process files compare directly) and every probe evaluated over every rank.
@@ -56,7 +57,7 @@ public:
   /// Boundary points of each coupled interface, in order.
   const std::vector<sph::InterfaceBoundary>& boundaries() const { return boundaries_; }
   /// Mean force of the fluid on the coupled structures (on all walls without one) over the last
-  /// advance, N/m.
+  /// advance, N/m; decomposed, every rank's particles' summed (collective).
   Vec2 wall_force() const;
 
 private:

@@ -45,7 +45,8 @@ public:
   std::optional<ParticleCount> particle_count() const override;
   void report(JsonObject& run) const override;
   /// The fluid steps over `ranks` (parallel::ParticleDecomposition under mpirun); every rank
-  /// built it from the whole scene and holds every wall particle. Without structures.
+  /// built it from the whole scene and holds every wall particle, the boundary points moved
+  /// alike on every rank by the same (rank 0's) interface motion.
   bool decompose(const Ranks& ranks) override;
   /// Decomposed: every rank's owned particles to rank 0 in id order (one-process files and
   /// N-process files compare directly) and every probe evaluated over every rank.
