@@ -502,7 +502,7 @@ void check_coupled(const std::string& scene, const std::string& args, const Coup
   }
 }
 
-/// The plate of hydrostatic_plate_3d(_emps) as 4 x 1 x 4 T10 cells (10 x 2 x 10 in the scenes,
+/// The plate of hydrostatic_plate_3d(_emps) as 3 x 1 x 3 T10 cells (10 x 2 x 10 in the scenes,
 /// whose solve is most of their step) and l0 = 0.1 m (500 particles).
 const std::string coarse_plate =
     "--set fluid.l0=0.1 --set structures[0].mesh.elements_x=3 "
