@@ -113,7 +113,6 @@ void check_decomposable(const Scene& scene, const Args& a, const Ranks& ranks) {
     refuse(scene.fluid ? "fluid.type " + scene.fluid->type + " (EMPS and SPH only)"
                        : "a scene without fluid");
   if (scene.fluid->type == "sph") {
-    if (scene.checkpoint || !a.restart.empty()) refuse("checkpoints and --restart of an SPH fluid");
     // The decomposed SPH fluid's save/restore would need its halo remade (EMPS's restore).
     if (!scene.structures.empty() && scene.coupling && scene.coupling->options.scheme == "bgs")
       refuse("an implicit coupling scheme (bgs) with an SPH fluid");

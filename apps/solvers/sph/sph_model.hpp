@@ -45,7 +45,8 @@ public:
   /// Decomposed: every rank's owned particles to rank 0 in id order (one-process files and
   /// N-process files compare directly) and every probe evaluated over every rank.
   void gather_frame() override;
-  /// The fluid under "fluid/", the interface motion at the fluid's time under "fluid/interface/".
+  /// The fluid under "fluid/", the interface motion at the fluid's time under "fluid/interface/";
+  /// collective when decomposed (the one-process format, written by rank 0).
   void write_state(StateArchive& archive) const override;
   void read_state(const StateArchive& archive) override;
   coupling::FluidSolver& coupling_solver() override;

@@ -52,7 +52,7 @@ public:
   /// N-process files compare directly) and every probe evaluated over every rank.
   void gather_frame() override;
   /// The fluid under "fluid/" and, coupled, the interface motion at the fluid's time under
-  /// "fluid/interface/motion".
+  /// "fluid/interface/motion"; collective when decomposed (the one-process format, rank 0's).
   void write_state(StateArchive& archive) const override;
   void read_state(const StateArchive& archive) override;
   /// Throws RunError: a 3-D fluid couples through coupling_solver3().
