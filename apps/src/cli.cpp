@@ -113,12 +113,10 @@ void check_decomposable(const Scene& scene, const Args& a, const Ranks& ranks) {
     refuse(scene.fluid ? "fluid.type " + scene.fluid->type + " (EMPS and SPH only)"
                        : "a scene without fluid");
   if (scene.fluid->type == "sph") {
-    if (scene.checkpoint || !a.restart.empty()) refuse("checkpoints and --restart of an SPH fluid");
-    if (!scene.structures.empty()) refuse("structures with an SPH fluid");
-    for (const auto& p : scene.output.probes)
-      if (p.quantity.rfind("wall_force", 0) == 0) refuse("wall_force probes of an SPH fluid");
+    // The decomposed SPH fluid's save/restore would need its halo remade (EMPS's restore).
+    if (!scene.structures.empty() && scene.coupling && scene.coupling->options.scheme == "bgs")
+      refuse("an implicit coupling scheme (bgs) with an SPH fluid");
   }
-  if (!scene.structures.empty() && scene.dimension == 3) refuse("structures in a 3-D scene");
 }
 
 int dispatch(const Args& a, std::ostream& out, std::ostream& err, bool terminal,

@@ -5,6 +5,7 @@
 #include "fsi/core/error.hpp"
 #include "fsi/core/parallel.hpp"
 #include "fsi/core/state_archive.hpp"
+#include "particles/state_rows.hpp"
 
 #include <cstdint>
 
@@ -28,13 +29,29 @@ template <int D> void BasicSphFluid<D>::restore(const State& s) {
   });
 }
 
+// One process: the arrays in the particles' order. Decomposed (collective): every process's
+// owned particles gathered to process 0 in id order, the one-process format (issue 47), whose
+// archive alone is whole; the tracked walls' viscous force and the removed count summed over the
+// processes (each holds its particles' part).
 template <int D>
 void BasicSphFluid<D>::write_state(StateArchive& a, const std::string& prefix) const {
-  fluid_.fields.write_state(a, prefix + "fluid/");
+  if (decomposition_) {
+    StateArchive rows;
+    fluid_.fields.write_state(rows, prefix + "fluid/", owned());
+    particles::gather_rows(hook(), rows, prefix + "fluid/id", a);
+  } else {
+    fluid_.fields.write_state(a, prefix + "fluid/");
+  }
   walls_.fields.write_state(a, prefix + "walls/");
+  if (decomposition_ && tracked_ < walls_.size())
+    for (int c = 0; c < D; ++c) {
+      std::vector<double> fv = walls_.fv[c];
+      for (std::size_t k = tracked_; k < fv.size(); ++k) fv[k] = hook().sum(fv[k]);
+      a.put(prefix + "walls/fv" + "xyz"[c], std::move(fv));
+    }
+  const auto removed = static_cast<std::int64_t>(hook().sum(static_cast<double>(removed_)));
   a.put(prefix + "clock", std::vector<double>{t_, Dt_, elapsed_, dt_acoustic_});
-  a.put(prefix + "counters", std::vector<std::int64_t>{step_, builds_, sub_, subs_,
-                                                       static_cast<std::int64_t>(removed_)});
+  a.put(prefix + "counters", std::vector<std::int64_t>{step_, builds_, sub_, subs_, removed});
 }
 
 template <int D>

@@ -134,9 +134,15 @@ template <int D> void BasicSphFluid<D>::build_ghosts(const particles::VectorFiel
 }
 
 template <int D> void BasicSphFluid<D>::decompose(particles::Decomposition<D>& decomposition) {
-  if (options_.periodic_x || options_.periodic_y || options_.periodic_z || tracked_ < walls_.size())
-    throw InputError("fluid_sph: a periodic fluid or tracked wall forces cannot be decomposed");
+  if (options_.periodic_x || options_.periodic_y || options_.periodic_z)
+    throw InputError("fluid_sph: a periodic fluid cannot be decomposed");
   decomposition_ = &decomposition;
+  // The tracked walls' viscous force of this Dt was summed over every particle on every rank
+  // (each built the whole fluid): rank 0 keeps it, so the ranks' parts sum to it.
+  if (tracked_ < walls_.size() && hook().rank() != 0)
+    for (int c = 0; c < D; ++c)
+      std::fill(walls_.fv[c].begin() + static_cast<std::ptrdiff_t>(tracked_), walls_.fv[c].end(),
+                0.0);
   // The advection step under way: partitioned at its build positions, its pairs rebuilt there
   // (B, V, rho and the prior acceleration are the particles' own, moved with them).
   hook().migrate(fluid_.fields, fluid_.xb);

@@ -54,7 +54,8 @@ template void BasicSphFluid<3>::track_wall_forces(std::size_t, Reaction);
 // The wall terms of first_half for each pair (i, a) with a tracked, times -V_i: the force on a,
 // plus the viscous force of this advection step (kept in fv). Reaction::reference_code
 // takes B_i = I in the pressure part (the reference code's reaction, method notes).
-// Sequential scatter over the fluid particles (deterministic for any thread count).
+// Sequential scatter over the owned fluid particles (deterministic for any thread count;
+// decomposed, each rank's part of the force: the caller sums them over the ranks).
 template <int D> void BasicSphFluid<D>::wall_reaction() {
   const auto& f = fluid_;
   const double rho0c0 = options_.rho0 * options_.c0, inv_c0 = 1.0 / options_.c0;
@@ -63,7 +64,7 @@ template <int D> void BasicSphFluid<D>::wall_reaction() {
     std::copy(walls_.fv[c].begin() + static_cast<std::ptrdiff_t>(tracked_), walls_.fv[c].end(),
               wf_[c].begin());
   const bool exact = reaction_ == Reaction::exact;
-  for (std::size_t i = 0; i < f.size(); ++i) {
+  for (std::size_t i = 0; i < owned(); ++i) {
     const double p_i = f.p[i], rho_i = f.rho[i], V_i = f.vol[i];
     double b_i[S];
     for (int r = 0; r < D; ++r)
@@ -94,7 +95,7 @@ template <int D> void BasicSphFluid<D>::wall_viscous_reaction() {
   for (std::size_t a = tracked_; a < walls_.size(); ++a)
     for (int c = 0; c < D; ++c) walls_.fv[c][a] = 0.0;
   if (!(mu > 0.0)) return;
-  for (std::size_t i = 0; i < f.size(); ++i) {
+  for (std::size_t i = 0; i < owned(); ++i) {
     const double c = 2.0 * mu * f.vol[i];
     for (std::uint32_t k = wstart_[i]; k < wstart_[i + 1]; ++k) {
       const std::uint32_t a = wj_[k];

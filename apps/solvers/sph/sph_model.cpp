@@ -133,12 +133,15 @@ void SphModel::write_frame(FieldsFile& file, const std::vector<std::string>& fie
 }
 
 Vec2 SphModel::wall_force() const {
+  Vec2 total = wall_force_;
   if (!boundaries_.empty()) {
-    Vec2 total = Vec2::Zero();
+    total = Vec2::Zero();
     for (const Vec2& q : adapter_->interface_loads().f) total += q;
-    return total;
   }
-  return wall_force_;
+  if (!ranks_.decomposed()) return total;
+  std::vector<double> sum{total.x(), total.y()}; // this rank's particles' part
+  ranks_.sum(sum);
+  return {sum[0], sum[1]};
 }
 
 std::optional<double> SphModel::evaluate(const ProbeSpec& probe) const {
@@ -194,10 +197,6 @@ std::optional<ParticleCount> SphModel::particle_count() const {
 }
 
 void SphModel::write_state(StateArchive& archive) const {
-  if (ranks_
-          .decomposed()) // a signal's checkpoint under mpirun (check_decomposable refuses the rest)
-    throw RunError(
-        "fluid_sph: checkpoints of a decomposed SPH fluid are not yet written (issue 47)");
   adapter_->write_state(archive);
 }
 

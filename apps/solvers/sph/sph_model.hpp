@@ -39,12 +39,14 @@ public:
   std::optional<std::string> non_finite() const override;
   void report(JsonObject& run) const override;
   /// The fluid steps over `ranks` (parallel::ParticleDecomposition under mpirun); every rank
-  /// built it from the whole scene and holds every wall particle. Without structures.
+  /// built it from the whole scene and holds every wall particle, the boundary points moved
+  /// alike on every rank by the same (rank 0's) interface motion.
   bool decompose(const Ranks& ranks) override;
   /// Decomposed: every rank's owned particles to rank 0 in id order (one-process files and
   /// N-process files compare directly) and every probe evaluated over every rank.
   void gather_frame() override;
-  /// The fluid under "fluid/", the interface motion at the fluid's time under "fluid/interface/".
+  /// The fluid under "fluid/", the interface motion at the fluid's time under "fluid/interface/";
+  /// collective when decomposed (the one-process format, written by rank 0).
   void write_state(StateArchive& archive) const override;
   void read_state(const StateArchive& archive) override;
   coupling::FluidSolver& coupling_solver() override;
@@ -56,7 +58,7 @@ public:
   /// Boundary points of each coupled interface, in order.
   const std::vector<sph::InterfaceBoundary>& boundaries() const { return boundaries_; }
   /// Mean force of the fluid on the coupled structures (on all walls without one) over the last
-  /// advance, N/m.
+  /// advance, N/m; decomposed, every rank's particles' summed (collective).
   Vec2 wall_force() const;
 
 private:

@@ -238,10 +238,6 @@ std::optional<ParticleCount> SphModel3::particle_count() const {
 }
 
 void SphModel3::write_state(StateArchive& archive) const {
-  if (ranks_
-          .decomposed()) // a signal's checkpoint under mpirun (check_decomposable refuses the rest)
-    throw RunError(
-        "fluid_sph: checkpoints of a decomposed SPH fluid are not yet written (issue 47)");
   adapter_->write_state(archive);
 }
 

@@ -45,13 +45,14 @@ public:
   std::optional<ParticleCount> particle_count() const override;
   void report(JsonObject& run) const override;
   /// The fluid steps over `ranks` (parallel::ParticleDecomposition under mpirun); every rank
-  /// built it from the whole scene and holds every wall particle. Without structures.
+  /// built it from the whole scene and holds every wall particle, the boundary points moved
+  /// alike on every rank by the same (rank 0's) interface motion.
   bool decompose(const Ranks& ranks) override;
   /// Decomposed: every rank's owned particles to rank 0 in id order (one-process files and
   /// N-process files compare directly) and every probe evaluated over every rank.
   void gather_frame() override;
   /// The fluid under "fluid/" and, coupled, the interface motion at the fluid's time under
-  /// "fluid/interface/motion".
+  /// "fluid/interface/motion"; collective when decomposed (the one-process format, rank 0's).
   void write_state(StateArchive& archive) const override;
   void read_state(const StateArchive& archive) override;
   /// Throws RunError: a 3-D fluid couples through coupling_solver3().

@@ -201,8 +201,9 @@ public:
   /// outlive the fluid; every process built the whole fluid. The first migration partitions the
   /// particles at their build positions and the advection step's pairs are rebuilt over the
   /// owned particles and the ghosts within the kernel's support (every process holds every wall
-  /// particle). Not periodic, not tracking wall forces, not saved or checkpointed (refused
-  /// under mpirun before this).
+  /// particle). Tracked wall forces (wall_force) are then this rank's particles' part: the
+  /// caller sums them. Not periodic (refused); write_state is then collective (the one-process
+  /// format on process 0); save/restore are for one process (bgs is refused under mpirun).
   void decompose(particles::Decomposition<D>& decomposition);
   /// The particles this process owns: the first owned() entries of particles(); ghosts follow.
   std::size_t owned() const { return fluid_.size() - hook().ghosts(); }
