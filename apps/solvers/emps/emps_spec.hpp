@@ -30,7 +30,10 @@ struct FluidSpec3 final : SolverSpec {
   int tank_line = 0;                           ///< the line of tank or tank_file
   std::optional<MotionSpec> tank_motion;       ///< the tank's rigid motion (read_motion3)
   int tank_motion_line = 0;
-  std::vector<Box> regions;  ///< boxes filled at spacing l0 (l0/2 from their faces)
+  std::vector<Box> regions; ///< boxes filled at spacing l0 (l0/2 from their faces)
+  std::optional<erp::StlSurface> region_surface; ///< region_file's closed surface, filled too
+  std::string region_path;                       ///< region_file as resolved, for messages
+  int region_line = 0;
   std::optional<Box> domain; ///< particles leaving it are removed; absent: walls and regions
 };
 
