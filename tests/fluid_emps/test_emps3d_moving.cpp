@@ -1,7 +1,8 @@
 // Moving triangle walls in 3-D (#43): a tank translating at a constant velocity U with water that
 // starts at U is the static tank seen from a moving frame (Galilean invariance: the fluid terms
-// and the wall terms read positions relative to the walls and velocities relative to v_wall),
-// to round-off with and without the viscous loop.
+// and the wall terms read positions relative to the walls and velocities relative to v_wall):
+// to round-off without the viscous loop; with it, up to the no-slip ghost of eq. 24 (of order
+// nu U_n, not of dt), the viscous stage seeing the walls at t^n.
 #include "fluid_emps/emps_fluid.hpp"
 #include "fsi/core/state_archive.hpp"
 #include "geometry_erp/box_walls.hpp"
@@ -117,33 +118,10 @@ TEST_CASE("emps 3-D moving walls: without the viscous loop a tank and its water 
 }
 
 // With the viscous loop the viscous stage queries the walls at x^n as they were at t^n
-// (SpaceWalls::before; the caller has moved its own to t + dt). The slip mirror (eq. 24's
-// ghost reflected about the wall's normal velocity) is then frame-invariant to round-off; the
-// paper's no-slip ghost v_i' = 2 v_wall,t - v_i drops the wall's normal velocity, so a tank moving
-// across its faces keeps a difference of order nu U_n that does not shrink with dt.
-TEST_CASE("emps 3-D moving walls: with the viscous loop a tank and its water translating at U "
-          "are the static tank in a moving frame to round-off (slip mirror)",
-          "[emps][walls3d]") {
-  emps::FluidOptions3 o = tank_water(0.02);
-  o.wall.mirror.condition = emps::WallCondition::slip;
-  REQUIRE(o.viscous_loop());
-  REQUIRE(o.viscosity > 0);
-  REQUIRE(o.pair_viscosity_alpha() > 0);
-  const double rho_g_H = o.density * 9.81 * 0.12;
-  const Frames f = frames(o, Vec3(0.3, -0.2, 0.1), 5e-4, 0.1);
-  INFO("|x - U t - x_static| <= " << f.dx / o.l0 << " l0, |v - U - v_static| <= " << f.dv
-                                  << " m/s, |p - p_static| <= " << f.dp / rho_g_H
-                                  << " rho g H, nearest centre to a wall " << f.min_gap / o.l0
-                                  << " l0");
-  CHECK(f.p_max > 0.5 * rho_g_H);
-  CHECK(f.v_max > 0.1);
-  CHECK(f.dx < 1e-10 * o.l0);
-  CHECK(f.dv < 1e-10);
-  CHECK(f.dp < 1e-10 * rho_g_H);
-  CHECK(f.removed == 0);
-  CHECK(f.min_gap > 0.0);
-}
-
+// (SpaceWalls::before; the caller has moved its own to t + dt), so the moving frame's difference
+// no longer falls with dt (it was first order in dt, 2.6e-3 l0 at dt = 5e-4 s, with the walls at
+// t + dt). What remains grows with nu: the paper's no-slip ghost v_i' = 2 v_wall,t - v_i (eq. 24)
+// drops the wall's normal velocity, which a tank moving across its faces has.
 TEST_CASE("emps 3-D moving walls: with the no-slip mirror of eq. 24 the moving frame's difference "
           "is of order nu U_n, not of dt",
           "[emps][walls3d]") {

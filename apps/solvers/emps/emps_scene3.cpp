@@ -66,7 +66,6 @@ void read_tank(Section& s, FluidSpec3& f) {
   f.tank_surface = read_surface_file(path); // InputError `FILE: what is wrong`
 }
 
-/// The key region_file: a closed surface (STL or .msh) whose inside is filled with fluid.
 void read_region_file(Section& s, FluidSpec3& f) {
   const bool doc = s.context().documenting();
   if (!doc && !s.has("region_file")) return;

@@ -46,5 +46,8 @@ std::shared_ptr<const SolverSpec> read_fluid(Section& s);
 std::shared_ptr<const SolverSpec> read_fluid3(Section& s);
 /// The keys tank and tank_file: documented in either dimension, read in 3-D.
 void read_tank(Section& s, FluidSpec3& f);
+/// The key region_file, a fluid region as a closed surface (STL or .msh; an open one is refused):
+/// documented in either dimension, read in 3-D.
+void read_region_file(Section& s, FluidSpec3& f);
 
 } // namespace fsi::app::emps_plugin
