@@ -171,10 +171,10 @@ BoxRegion read_box_region(Section& s, const std::string& what) {
 }
 
 void read_box_area(Section& s, double l0, std::vector<BoxRegion>& regions,
-                   std::optional<BoxRegion>& domain) {
+                   std::optional<BoxRegion>& domain, bool other_regions) {
   for (auto& r : s.list("regions", "boxes filled with particles at spacing l0"))
     regions.push_back(read_box_region(r, "a box of fluid"));
-  if (regions.empty()) s.fail("regions", "at least one region is required");
+  if (regions.empty() && !other_regions) s.fail("regions", "at least one region is required");
   for (std::size_t i = 0; i < regions.size(); ++i)
     if (l0 > (regions[i].max - regions[i].min).minCoeff())
       s.fail("l0", "particle spacing " + significant(l0, 3) + " m is larger than fluid region " +

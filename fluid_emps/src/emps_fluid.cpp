@@ -73,13 +73,30 @@ BasicEmpsFluid<D>::BasicEmpsFluid(const Options& options, const std::vector<Vec>
 
 SpaceWalls::SpaceWalls(const FluidOptions3& options, double n0, const erp::TriangleWallSet& walls,
                        const Particles3& particles, const particles::BasicCellGrid<3>& grid)
-    : locator(walls, options.r_e()), terms(options, n0, particles, grid, hits),
-      corner_faces(options.wall.corner_faces) {
+    : locator(walls, options.r_e()), before(walls), before_locator(before, options.r_e()),
+      terms(options, n0, particles, grid, hits), corner_faces(options.wall.corner_faces) {
   // Not in 3-D yet: the two 2-D-only wall options are refused, not ignored.
   if (options.wall.contact.model == WallContact::viscous)
     throw InputError("fluid.wall_contact: 'viscous' is not available in 3-D yet");
   if (options.wall.mirror.pressure == WallPressure::neighbours)
     throw InputError("fluid.wall_pressure: 'neighbours' is not available in 3-D yet");
+}
+
+namespace {
+bool same_nodes(const erp::TriangleWallNodes& a, const erp::TriangleWallNodes& b) {
+  return a.x == b.x && a.v == b.v && a.a == b.a;
+}
+} // namespace
+
+const erp::TriangleLocator& SpaceWalls::at_step_start() const {
+  return same_nodes(locator.walls().nodes(), before.nodes()) ? locator : before_locator;
+}
+
+void SpaceWalls::set_step_start(const erp::TriangleWallNodes& nodes) {
+  if (same_nodes(nodes, before.nodes())) return; // static walls: nothing to refit
+  before.nodes() = nodes;
+  before.update();
+  before_locator.update();
 }
 
 template <int D>
@@ -149,7 +166,7 @@ void BasicEmpsFluid<D>::refresh_neighbours(bool allow_reorder, long step, double
                          " (particles clustered: the step is likely unstable)");
 }
 
-template <int D> void BasicEmpsFluid<D>::query_walls() {
+template <int D> void BasicEmpsFluid<D>::query_walls([[maybe_unused]] bool step_start) {
   Timer timer(times_.walls);
   if constexpr (D == 2) {
     walls_.locator->query(std::span<const double>(particles_.x),
@@ -159,9 +176,10 @@ template <int D> void BasicEmpsFluid<D>::query_walls() {
     const std::span<const double> x(particles_.position[0]), y(particles_.position[1]),
         z(particles_.position[2]);
     SpaceHits& hits = walls_.hits;
-    walls_.locator.query(x, y, z, hits[0]);
+    const erp::TriangleLocator& locator = step_start ? walls_.at_step_start() : walls_.locator;
+    locator.query(x, y, z, hits[0]);
     if (walls_.corner_faces) {
-      walls_.locator.corner_faces(x, y, z, hits);
+      locator.corner_faces(x, y, z, hits);
     } else {
       for (std::size_t k = 1; k < max_faces3; ++k) {
         hits[k].resize(x.size());
@@ -211,11 +229,11 @@ template <int D> void BasicEmpsFluid<D>::advance(double t, double dt) {
   if (viscous) {
     // The wall hits of the last step's x* serve x^n (which differs by dt^2 |grad p| / rho, and
     // they see the walls at t^n) unless particles were reordered or removed since.
-    // In 3-D the hits are taken at x^n (a restart then needs no stored hits).
+    // In 3-D the hits are taken at x^n with the walls at t^n (SpaceWalls::before).
     if constexpr (D == 2) {
       if (walls_.hits_layout != layout_) query_walls();
     } else {
-      query_walls();
+      query_walls(true);
     }
     viscosity();
   }
@@ -242,6 +260,8 @@ template <int D> void BasicEmpsFluid<D>::advance(double t, double dt) {
     gap_dt_ = wall_gap_dt();
   }
   ++step_;
+  if constexpr (D == 3)
+    if (viscous) walls_.set_step_start(walls_.locator.walls().nodes()); // t^n of the next step
   Timer timer(times_.other);
   damp(t, dt);
   check_finite(step_, t + dt);

@@ -2,6 +2,7 @@
 #include "fluid_emps/emps_fluid.hpp"
 
 #include "fsi/core/error.hpp"
+#include "fsi/core/node_archive.hpp"
 #include "fsi/core/state_archive.hpp"
 #include "particles/state_rows.hpp"
 
@@ -19,6 +20,7 @@ namespace fsi::emps {
 template <int D> typename BasicEmpsFluid<D>::State BasicEmpsFluid<D>::save() const {
   State s{{}, step_, removed_, layout_, gap_dt_, gap_limited_steps_};
   particles_.fields.save(s.particles);
+  if constexpr (D == 3) s.walls_before = walls_.before.nodes();
   if (decomposed()) {
     const std::size_t n = owned();
     s.particles.size = n;
@@ -40,7 +42,10 @@ template <int D> void BasicEmpsFluid<D>::restore(const State& s) {
     layout_ = s.layout;
     neighbours_.invalidate();
   }
-  if constexpr (D == 2) walls_.hits_layout = -1; // the hits belong to the abandoned step
+  if constexpr (D == 2)
+    walls_.hits_layout = -1; // the hits belong to the abandoned step
+  else
+    walls_.set_step_start(s.walls_before); // the walls at the redone step's start
 }
 
 namespace {
@@ -80,7 +85,10 @@ void BasicEmpsFluid<D>::write_state(StateArchive& a, const std::string& prefix) 
     a.put_real(prefix + "gap_dt", gap_dt_);
     a.put_integer(prefix + "gap_limited_steps", gap_limited_steps_);
   }
-  if constexpr (D == 2) a.put_integer(prefix + "hits/valid", hits);
+  if constexpr (D == 2)
+    a.put_integer(prefix + "hits/valid", hits);
+  else
+    put_nodes(a, prefix + "walls_before/", walls_.before.nodes()); // the walls at t^n
 }
 
 // The per-particle arrays of the owned particles: the fields, the neighbour list's build
@@ -134,7 +142,13 @@ void BasicEmpsFluid<D>::read_state(const StateArchive& a, const std::string& pre
     gap_limited_steps_ = a.integer(prefix + "gap_limited_steps");
   }
   bool hits = false;
-  if constexpr (D == 2) hits = a.integer(prefix + "hits/valid") != 0;
+  if constexpr (D == 2) {
+    hits = a.integer(prefix + "hits/valid") != 0;
+  } else {
+    erp::TriangleWallNodes before = walls_.before.nodes(); // sized as the walls
+    read_nodes(a, prefix + "walls_before/", before);
+    walls_.set_step_start(before);
+  }
   read_rows(a, prefix, hits);
   restored_ = true;
 }

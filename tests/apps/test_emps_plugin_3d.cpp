@@ -13,6 +13,7 @@
 #include <fstream>
 #include <sstream>
 #include <tuple>
+#include <utility>
 
 using namespace fsi;
 using namespace fsi::app;
@@ -298,4 +299,77 @@ TEST_CASE("apps: what a 3-D EMPS scene does not have yet, and bad tanks, are ref
   }
   std::filesystem::remove(flipped);
   std::filesystem::remove(broken);
+}
+
+namespace {
+
+/// An ASCII STL of the octahedron |x - c|_1 = R (8 facets, normals out; `skip`: a facet left
+/// out, an open surface) in the temporary folder.
+std::string octahedron_stl(const std::string& name, const Vec3& c, double R, int skip = -1) {
+  const std::string path = (std::filesystem::temp_directory_path() / name).string();
+  std::ofstream out(path);
+  out.precision(17);
+  out << "solid octahedron\n";
+  int k = 0;
+  for (const double sx : {1.0, -1.0})
+    for (const double sy : {1.0, -1.0})
+      for (const double sz : {1.0, -1.0}) {
+        if (k++ == skip) continue;
+        Vec3 a = c + sx * R * Vec3::UnitX(), b = c + sy * R * Vec3::UnitY(),
+             d = c + sz * R * Vec3::UnitZ();
+        if (sx * sy * sz < 0) std::swap(b, d); // counter-clockwise seen from outside
+        const Vec3 n = (b - a).cross(d - a).normalized();
+        out << "facet normal " << n.x() << ' ' << n.y() << ' ' << n.z() << "\nouter loop\n";
+        for (const Vec3& v : {a, b, d})
+          out << "vertex " << v.x() << ' ' << v.y() << ' ' << v.z() << '\n';
+        out << "endloop\nendfacet\n";
+      }
+  out << "endsolid octahedron\n";
+  return path;
+}
+
+} // namespace
+
+TEST_CASE("apps: a 3-D EMPS fluid region given as a closed surface (fluid.region_file) holds its "
+          "lattice count",
+          "[apps][emps][3d]") {
+  // |x - c|_1 < R = 4 l0 on the lattice c - R + (i + 1/2) l0: the odd triples (p, q, r) with
+  // p + q + r < 8, 10 of them in each of the 8 octants (geometry_erp's fill).
+  const double l0 = 0.02, R = 4 * l0;
+  const Vec3 c(0.1, 0.3, 0.1); // above the shipped scene's box of water, inside its tank
+  const std::string stl = octahedron_stl("test_emps_plugin_3d_octahedron.stl", c, R);
+  SECTION("alone: 80 particles, all inside") {
+    const Scene scene = load_scene(kScene, {"fluid.regions=[]", "fluid.region_file=" + stl});
+    emps_plugin::EmpsModel3 model(scene);
+    const auto& p = model.fluid().particles();
+    REQUIRE(p.size() == 80);
+    for (std::size_t i = 0; i < p.size(); ++i)
+      CHECK((Vec3(p.position[0][i], p.position[1][i], p.position[2][i]) - c).cwiseAbs().sum() < R);
+    // The footprint counts the enclosed volume 4/3 R^3 in l0^3.
+    CHECK_THAT(emps_plugin::footprint3(scene).count,
+               Catch::Matchers::WithinRel(4.0 / 3.0 * 64.0, 1e-12));
+  }
+  SECTION("beside the box of water: 1,080 particles, four steps with none lost") {
+    emps_plugin::EmpsModel3 model(load_scene(kScene, {"fluid.region_file=" + stl}));
+    CHECK(model.fluid().particles().size() == 1080);
+    advance(model, 0, 4);
+    CHECK(probe(model, "particles") == 1080.0);
+    CHECK(probe(model, "wall_gap") > 0.0);
+  }
+  SECTION("an open surface is refused naming the key and the file") {
+    const std::string open = octahedron_stl("test_emps_plugin_3d_open.stl", c, R, 3);
+    CHECK_THROWS_WITH(emps_plugin::EmpsModel3(load_scene(kScene, {"fluid.region_file=" + open})),
+                      Catch::Contains("fluid.region_file: " + open +
+                                      ": 3 edges with one facet (a fluid region must be a "
+                                      "closed surface)"));
+    std::filesystem::remove(open);
+  }
+  SECTION("a surface outside the domain is refused") {
+    CHECK_THROWS_WITH(emps_plugin::EmpsModel3(load_scene(
+                          kScene, {"fluid.region_file=" + stl,
+                                   "fluid.domain={min: [0, 0, 0], max: [0.2, 0.25, 0.2]}"})),
+                      Catch::Contains("fluid.domain: the region_file surface reaches outside the "
+                                      "domain"));
+  }
+  std::filesystem::remove(stl);
 }

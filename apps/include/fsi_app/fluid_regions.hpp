@@ -42,10 +42,10 @@ struct BoxRegion {
 /// above min.
 BoxRegion read_box_region(Section& s, const std::string& what);
 
-/// Reads a 3-D particle fluid's `regions` (boxes, at least one, none thinner than the spacing l0)
-/// and its optional `domain` box.
+/// Reads a 3-D particle fluid's `regions` (boxes, at least one unless `other_regions`: the fluid
+/// has regions of another kind, none thinner than the spacing l0) and its optional `domain` box.
 void read_box_area(Section& s, double l0, std::vector<BoxRegion>& regions,
-                   std::optional<BoxRegion>& domain);
+                   std::optional<BoxRegion>& domain, bool other_regions = false);
 
 /// Whether p lies in the box [lo, hi], its faces included.
 bool inside_box(const Vec3& p, const Vec3& lo, const Vec3& hi);
@@ -55,7 +55,7 @@ bool inside_box(const Vec3& p, const Vec3& lo, const Vec3& hi);
 std::vector<Vec3> fill_box_regions(const std::vector<BoxRegion>& regions, double l0);
 
 /// A 3-D particle fluid's domain: `domain` as given, else the box around the tank, `tank_points`
-/// (an STL tank's) and the regions, grown by margin on every side.
+/// (an STL tank's, a surface region's) and the regions, grown by margin on every side.
 std::pair<Vec3, Vec3> box_domain(const std::optional<BoxRegion>& domain,
                                  const std::optional<BoxRegion>& tank,
                                  std::span<const Vec3> tank_points,

@@ -8,6 +8,7 @@
 #include "fsi/core/format.hpp"
 #include "fsi_app/wall_motion.hpp"
 #include "geometry_erp/box_walls.hpp"
+#include "geometry_erp/surface_fill.hpp"
 #include "geometry_erp/triangle_locator.hpp"
 #include "particles/kernels.hpp"
 
@@ -61,21 +62,46 @@ void check_open_edges(const Scene& scene, const FluidSpec3& f, const std::vector
     }
 }
 
+/// The line of the fluid's first region (a box, else region_file) for messages.
+int regions_line(const FluidSpec3& f) {
+  return f.regions.empty() ? f.region_line : regions_line(f);
+}
+
+/// The volume a closed surface encloses (either orientation), m^3: |sum a . (b x c)| / 6.
+double enclosed_volume(const erp::StlSurface& surface) {
+  const auto& X = surface.points;
+  double v = 0.0;
+  for (const auto& t : surface.triangles)
+    v += X[static_cast<std::size_t>(t[0])].dot(
+        X[static_cast<std::size_t>(t[1])].cross(X[static_cast<std::size_t>(t[2])]));
+  return std::abs(v) / 6.0;
+}
+
 } // namespace
 
 emps::FluidOptions3 fluid_options3(const Scene& scene) {
   const FluidSpec3& f = scene.fluid->as<FluidSpec3>();
   emps::FluidOptions3 o = f.options;
   o.gravity = scene.gravity3;
-  std::tie(o.domain_min, o.domain_max) = box_domain(
-      f.domain, f.tank,
-      f.tank_surface ? std::span<const Vec3>(f.tank_surface->points) : std::span<const Vec3>(),
-      f.regions, 4.0 * o.r_e());
+  std::vector<Vec3> surfaces; // the tank_file's and the region_file's points
+  for (const auto* surface : {&f.tank_surface, &f.region_surface})
+    if (*surface)
+      surfaces.insert(surfaces.end(), (*surface)->points.begin(), (*surface)->points.end());
+  std::tie(o.domain_min, o.domain_max) =
+      box_domain(f.domain, f.tank, surfaces, f.regions, 4.0 * o.r_e());
   return o;
 }
 
 std::vector<Vec3> fill_regions3(const FluidSpec3& f) {
-  return fill_box_regions(f.regions, f.options.l0);
+  std::vector<Vec3> x = fill_box_regions(f.regions, f.options.l0);
+  if (!f.region_surface) return x;
+  for (const Vec3& p : erp::fill_closed_surface(f.region_surface->points,
+                                                f.region_surface->triangles, f.options.l0)) {
+    bool in_box = false;
+    for (const Box& r : f.regions) in_box = in_box || inside_box(p, r.min, r.max);
+    if (!in_box) x.push_back(p);
+  }
+  return x;
 }
 
 std::unique_ptr<erp::TriangleWallSet> fluid_walls(const Scene& scene,
@@ -108,6 +134,13 @@ void check3(const Scene& scene, Section& s, std::vector<Section>& probes) {
   const FluidSpec3& f = scene.fluid->as<FluidSpec3>();
   const emps::FluidOptions3 o = fluid_options3(scene);
   check_box_regions(scene, s, probes, f.regions, f.tank, o.domain_min, o.domain_max);
+  if (f.region_surface)
+    for (const Vec3& p : f.region_surface->points) {
+      if (!inside_box(p, o.domain_min, o.domain_max))
+        s.fail("domain", "the region_file surface reaches outside the domain");
+      if (f.tank && !inside_box(p, f.tank->min, f.tank->max))
+        s.fail("region_file", "the surface reaches outside the tank");
+    }
 }
 
 // Bytes per fluid particle in 3-D, as emps_plugin.cpp counts 2-D: the registered particle
@@ -126,6 +159,7 @@ Footprint footprint3(const Scene& scene) {
                               3 * 52 + 24 + 1 + (24 + 24 + 8);
   Footprint e;
   for (const Box& r : f.regions) e.count += (r.max - r.min).prod() / std::pow(o.l0, 3);
+  if (f.region_surface) e.count += enclosed_volume(*f.region_surface) / std::pow(o.l0, 3);
   double cells = 1.0;
   for (int c = 0; c < 3; ++c)
     cells *= std::ceil((o.domain_max[c] - o.domain_min[c]) / (o.r_e() * (1.0 + o.skin))) + 2.0;
@@ -140,7 +174,9 @@ Footprint footprint3(const Scene& scene) {
 void validate3(const Scene& scene, const std::vector<InterfaceMesh3>& interfaces) {
   const FluidSpec3& f = scene.fluid->as<FluidSpec3>();
   const std::vector<Vec3> x = fill_regions3(f);
-  if (x.empty()) fail_at(scene, f.regions.front().line, "fluid.regions", "no particle fits");
+  if (x.empty())
+    fail_at(scene, regions_line(f), f.regions.empty() ? "fluid.region_file" : "fluid.regions",
+            "no particle fits");
   if (f.tank_motion) {
     if (!scene.structures.empty())
       fail_at(scene, f.tank_motion_line, "fluid.tank_motion", "not available with structures yet");
@@ -164,7 +200,7 @@ void validate3(const Scene& scene, const std::vector<InterfaceMesh3>& interfaces
          << significant(x[i].z(), 6) << ") m";
       const int group = walls->triangles().group[static_cast<std::size_t>(hits.triangle[i])];
       if (group > 0)
-        fail_at(scene, f.regions.front().line, "fluid.regions",
+        fail_at(scene, regions_line(f), "fluid.regions",
                 "the fluid at " + at.str() + " lies behind the interface of structure '" +
                     scene.structures[static_cast<std::size_t>(group - 1)].name + "'");
       if (f.tank_surface)
@@ -172,7 +208,7 @@ void validate3(const Scene& scene, const std::vector<InterfaceMesh3>& interfaces
                 f.tank_path + ": the fluid at " + at.str() + " lies behind facet " +
                     std::to_string(hits.triangle[i] + 1) +
                     " (each facet's normal must point into the fluid)");
-      fail_at(scene, f.regions.front().line, "fluid.regions",
+      fail_at(scene, regions_line(f), "fluid.regions",
               "the fluid at " + at.str() + " lies behind a wall of the tank");
     }
 }

@@ -9,10 +9,13 @@ std::shared_ptr<const SolverSpec> read_fluid(Section& s) {
   if (doc) {
     FluidSpec3 documented;
     read_tank(s, documented);
+    read_region_file(s, documented);
   } else {
     for (const char* key : {"tank", "tank_file", "tank_motion"})
       if (s.has(key))
         s.fail(key, "is a key of 3-D scenes (dimension: 3); in 2-D the tank is a wall polyline");
+    if (s.has("region_file"))
+      s.fail("region_file", "is a key of 3-D scenes (dimension: 3); in 2-D regions are polygons");
   }
   auto spec = std::make_shared<FluidSpec>();
   OptionReader reader(s);

@@ -66,6 +66,24 @@ void read_tank(Section& s, FluidSpec3& f) {
   f.tank_surface = read_surface_file(path); // InputError `FILE: what is wrong`
 }
 
+void read_region_file(Section& s, FluidSpec3& f) {
+  const bool doc = s.context().documenting();
+  if (!doc && !s.has("region_file")) return;
+  const std::filesystem::path path =
+      s.file("region_file",
+             "(dimension 3; optional, besides or instead of regions) a fluid region as a closed "
+             "surface, STL or Gmsh (.msh) as tank_file, of either orientation, filled with the "
+             "lattice lo + (i + 1/2, j + 1/2, k + 1/2) l0 from its bounding box's corner lo "
+             "(erp::fill_closed_surface); a point inside a box region is left out");
+  if (doc) return;
+  f.region_line = s.line();
+  f.region_path = path.string();
+  f.region_surface = read_surface_file(path); // InputError `FILE: what is wrong`
+  if (f.region_surface->open_edges > 0)
+    s.fail("region_file", f.region_path + ": " + std::to_string(f.region_surface->open_edges) +
+                              " edges with one facet (a fluid region must be a closed surface)");
+}
+
 std::shared_ptr<const SolverSpec> read_fluid3(Section& s) {
   auto spec = std::make_shared<FluidSpec3>();
   FluidSpec3& f = *spec;
@@ -73,7 +91,8 @@ std::shared_ptr<const SolverSpec> read_fluid3(Section& s) {
   emps::visit_options(f.options, reader);
   refuse_2d_only(s, f.options);
   read_tank(s, f);
-  read_box_area(s, f.options.l0, f.regions, f.domain);
+  read_region_file(s, f);
+  read_box_area(s, f.options.l0, f.regions, f.domain, f.region_surface.has_value());
   return spec;
 }
 

@@ -30,7 +30,10 @@ struct FluidSpec3 final : SolverSpec {
   int tank_line = 0;                           ///< the line of tank or tank_file
   std::optional<MotionSpec> tank_motion;       ///< the tank's rigid motion (read_motion3)
   int tank_motion_line = 0;
-  std::vector<Box> regions;  ///< boxes filled at spacing l0 (l0/2 from their faces)
+  std::vector<Box> regions; ///< boxes filled at spacing l0 (l0/2 from their faces)
+  std::optional<erp::StlSurface> region_surface; ///< region_file's closed surface, filled too
+  std::string region_path;                       ///< region_file as resolved, for messages
+  int region_line = 0;
   std::optional<Box> domain; ///< particles leaving it are removed; absent: walls and regions
 };
 
@@ -43,5 +46,8 @@ std::shared_ptr<const SolverSpec> read_fluid(Section& s);
 std::shared_ptr<const SolverSpec> read_fluid3(Section& s);
 /// The keys tank and tank_file: documented in either dimension, read in 3-D.
 void read_tank(Section& s, FluidSpec3& f);
+/// The key region_file, a fluid region as a closed surface (STL or .msh; an open one is refused):
+/// documented in either dimension, read in 3-D.
+void read_region_file(Section& s, FluidSpec3& f);
 
 } // namespace fsi::app::emps_plugin

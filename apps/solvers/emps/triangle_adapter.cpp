@@ -2,6 +2,7 @@
 
 #include "emps/triangle_loads.hpp"
 #include "fsi/core/error.hpp"
+#include "fsi/core/node_archive.hpp"
 #include "fsi/core/state_archive.hpp"
 
 #include <algorithm>
@@ -42,19 +43,12 @@ void TriangleAdapter::advance(double t, double dt) {
 
 void TriangleAdapter::write_state(StateArchive& archive) const {
   fluid_.write_state(archive, "fluid/");
-  const auto& n = walls_.nodes();
-  archive.put("walls/x", flatten(n.x));
-  archive.put("walls/v", flatten(n.v));
-  archive.put("walls/a", flatten(n.a));
+  put_nodes(archive, "walls/", walls_.nodes());
 }
 
 void TriangleAdapter::read_state(const StateArchive& archive) {
   fluid_.read_state(archive, "fluid/");
-  auto& n = walls_.nodes();
-  const std::size_t size = 3 * n.size();
-  n.x = unflatten<3>(archive.reals("walls/x", size));
-  n.v = unflatten<3>(archive.reals("walls/v", size));
-  n.a = unflatten<3>(archive.reals("walls/a", size));
+  read_nodes(archive, "walls/", walls_.nodes());
   walls_.update();
 }
 

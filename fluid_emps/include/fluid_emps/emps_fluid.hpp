@@ -36,6 +36,7 @@
 #include <memory>
 #include <string>
 #include <type_traits>
+#include <variant>
 #include <vector>
 
 namespace fsi {
@@ -123,7 +124,19 @@ using WallForces3 = std::array<TriangleForces, max_faces3>;
 struct SpaceWalls {
   SpaceWalls(const FluidOptions3& options, double n0, const erp::TriangleWallSet& walls,
              const Particles3& particles, const particles::BasicCellGrid<3>& grid);
+  SpaceWalls(const SpaceWalls&) = delete; // before_locator points at before
+  SpaceWalls& operator=(const SpaceWalls&) = delete;
+  /// The walls as the step starts (t^n), for the viscous stage at x^n (2-D reuses the last x*
+  /// hits, taken with the walls at t^n): `locator` when the caller's walls have not moved since,
+  /// else `before_locator`.
+  const erp::TriangleLocator& at_step_start() const;
+  /// At the end of a step: keeps the caller's walls (now at t^n of the next step) in `before`.
+  void keep_step_start();
+  /// Sets `before` to `nodes` (restore, a checkpoint) and refits its index.
+  void set_step_start(const erp::TriangleWallNodes& nodes);
   erp::TriangleLocator locator;
+  erp::TriangleWallSet before; ///< a copy of the caller's walls at t^n
+  erp::TriangleLocator before_locator;
   SpaceHits hits;
   SpaceWallTerms terms;
   WallForces3 forces;
@@ -200,6 +213,8 @@ public:
     long layout = 0;
     double gap_dt = 0.0;
     long gap_limited_steps = 0;
+    /// The walls at the step's start (3-D: SpaceWalls::before).
+    std::conditional_t<D == 3, erp::TriangleWallNodes, std::monostate> walls_before{};
   };
   State save() const;
   void restore(const State& state);
@@ -231,7 +246,9 @@ private:
   /// half the skin (with `allow_reorder`, migrating and reordering the owned particles first).
   /// `step` and `t` name the step in progress in messages.
   void refresh_neighbours(bool allow_reorder, long step, double t);
-  void query_walls();
+  /// The wall hits at the particles' positions; `step_start`: with the walls at t^n (3-D's
+  /// viscous stage; the caller has moved its walls to t + dt), else with the caller's walls.
+  void query_walls(bool step_start = false);
   /// Stops the run naming the first particle behind its nearest wall.
   void check_crossed(long step, double t) const;
   void viscosity();
