@@ -64,7 +64,7 @@ void check_open_edges(const Scene& scene, const FluidSpec3& f, const std::vector
 
 /// The line of the fluid's first region (a box, else region_file) for messages.
 int regions_line(const FluidSpec3& f) {
-  return f.regions.empty() ? f.region_line : regions_line(f);
+  return f.regions.empty() ? f.region_line : f.regions.front().line;
 }
 
 /// The volume a closed surface encloses (either orientation), m^3: |sum a . (b x c)| / 6.
