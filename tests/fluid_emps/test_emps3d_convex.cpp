@@ -63,10 +63,8 @@ Scene box_in_tank(bool convex_corners) {
   grid.bin(p.position.coords(), p.size());
   const erp::TriangleLocator locator(walls, r_e);
   emps::SpaceHits hits;
-  locator.query(p.position[0], p.position[1], p.position[2], hits[0]);
-  locator.corner_faces(p.position[0], p.position[1], p.position[2], hits);
   erp::ConvexFaces convex;
-  locator.convex_faces(p.position[0], p.position[1], p.position[2], hits[0], convex);
+  emps::test::query_faces(locator, p, hits, convex);
   const emps::SpaceWallTerms terms(o, s.n0, p, grid, hits, convex);
   for (std::size_t i = 0; i < x.size(); ++i) {
     const Vec3 gap = (lo - x[i]).cwiseMax(x[i] - hi).cwiseMax(0.0);
