@@ -3,6 +3,7 @@
 #include "fsi/core/error.hpp"
 #include "fsi_app/output/file_lock.hpp"
 #include "fsi_app/output/text_file.hpp"
+#include "fsi_app/ranks.hpp"
 
 #include <algorithm>
 #include <array>
@@ -31,15 +32,63 @@ void check(herr_t status, const std::filesystem::path& file, const std::string& 
   if (status < 0) h5_fail(file, what);
 }
 
+/// Which part of a dataset this process writes: all of it (one process); collective, the rows
+/// `rows` places, or (no rows) everything on rank 0 and nothing on the others.
+struct Part {
+  bool collective = false;
+  bool root = true;
+  const FileRows* rows = nullptr;
+};
+
+/// Selects `part`'s rows of `file_space` ([rows x columns]) as runs of consecutive rows; the
+/// memory space of as many local rows.
+hid_t select_part(hid_t file_space, const Part& part, const std::vector<hsize_t>& dims) {
+  std::vector<hsize_t> local = dims;
+  if (part.rows) {
+    local.front() = part.rows->at.size();
+    H5Sselect_none(file_space);
+    const auto& at = part.rows->at;
+    std::vector<hsize_t> start(dims.size(), 0), count = dims;
+    for (std::size_t j = 0; j < at.size();) {
+      std::size_t end = j + 1;
+      while (end < at.size() && at[end] == at[end - 1] + 1) ++end;
+      start.front() = at[j], count.front() = end - j;
+      H5Sselect_hyperslab(file_space, H5S_SELECT_OR, start.data(), nullptr, count.data(), nullptr);
+      j = end;
+    }
+  } else if (!part.root) {
+    H5Sselect_none(file_space);
+  }
+  const hid_t mem = H5Screate_simple(static_cast<int>(local.size()), local.data(), nullptr);
+  if (!part.rows && !part.root) H5Sselect_none(mem);
+  return mem;
+}
+
 void write_array(hid_t parent, const std::string& name, hid_t mem_type, const void* data,
-                 std::vector<hsize_t> dims, const std::filesystem::path& file) {
+                 std::vector<hsize_t> dims, const std::filesystem::path& file,
+                 const Part& part = {}) {
   const hid_t space = H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr);
   const hid_t file_type = mem_type == H5T_NATIVE_DOUBLE ? H5T_IEEE_F64LE : H5T_STD_I64LE;
+  const hid_t dcpl = H5Pcreate(H5P_DATASET_CREATE);
+  if (part.collective) H5Pset_fill_time(dcpl, H5D_FILL_TIME_NEVER); // every row is written
   const hid_t set =
-      H5Dcreate2(parent, name.c_str(), file_type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+      H5Dcreate2(parent, name.c_str(), file_type, space, H5P_DEFAULT, dcpl, H5P_DEFAULT);
+  H5Pclose(dcpl);
   if (set < 0) h5_fail(file, "cannot create dataset " + name);
-  const bool empty = dims.front() == 0;
-  const herr_t status = empty ? 0 : H5Dwrite(set, mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data);
+  herr_t status = 0;
+  if (!part.collective) {
+    if (dims.front() != 0) status = H5Dwrite(set, mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data);
+  } else {
+    const hid_t mem = select_part(space, part, dims);
+    const hid_t dxpl = H5Pcreate(H5P_DATASET_XFER);
+#ifdef H5_HAVE_PARALLEL
+    H5Pset_dxpl_mpio(dxpl, H5FD_MPIO_COLLECTIVE);
+#endif
+    const double none = 0.0; // a rank writing no row still passes a buffer
+    status = H5Dwrite(set, mem_type, mem, space, dxpl, data ? data : &none);
+    H5Pclose(dxpl);
+    H5Sclose(mem);
+  }
   H5Dclose(set);
   H5Sclose(space);
   check(status, file, "cannot write dataset " + name);
@@ -138,6 +187,27 @@ std::uintmax_t size_of(const std::filesystem::path& file) {
 
 } // namespace
 
+bool writes_collectively(const Ranks& ranks) {
+#ifdef H5_HAVE_PARALLEL
+  return ranks.decomposed();
+#else
+  (void)ranks;
+  return false;
+#endif
+}
+
+std::int64_t FieldsFile::file_access() const {
+  const hid_t fapl = H5Pcreate(H5P_FILE_ACCESS);
+#ifdef H5_HAVE_PARALLEL
+  if (ranks_) H5Pset_fapl_mpio(fapl, MPI_COMM_WORLD, MPI_INFO_NULL); // MpiRanks' communicator
+#endif
+  return fapl;
+}
+
+bool FieldsFile::root() const {
+  return !ranks_ || ranks_->rank() == 0;
+}
+
 template <class F> void FieldsFile::opened(F&& body) {
   try {
     guarded(body);
@@ -160,10 +230,13 @@ template <class F> void FieldsFile::guarded(F&& body) {
   }
 }
 
-FieldsFile::FieldsFile(const std::filesystem::path& h5, const std::filesystem::path& xmf)
-    : h5_path_(h5), xmf_path_(xmf) {
+FieldsFile::FieldsFile(const std::filesystem::path& h5, const std::filesystem::path& xmf,
+                       const Ranks* collective)
+    : h5_path_(h5), xmf_path_(xmf), ranks_(collective) {
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  file_ = H5Fcreate(h5.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  const hid_t fapl = file_access();
+  file_ = H5Fcreate(h5.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl);
+  H5Pclose(fapl);
   if (file_ < 0) h5_fail(h5, "cannot create file");
   opened([&] {
     check(H5Gclose(make_group(file_, "meshes", h5)), h5, "cannot create group meshes");
@@ -174,10 +247,12 @@ FieldsFile::FieldsFile(const std::filesystem::path& h5, const std::filesystem::p
 }
 
 FieldsFile::FieldsFile(const std::filesystem::path& h5, const std::filesystem::path& xmf,
-                       int keep_frames)
-    : h5_path_(h5), xmf_path_(xmf) {
+                       int keep_frames, const Ranks* collective)
+    : h5_path_(h5), xmf_path_(xmf), ranks_(collective) {
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  file_ = H5Fopen(h5.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  const hid_t fapl = file_access();
+  file_ = H5Fopen(h5.c_str(), H5F_ACC_RDWR, fapl);
+  H5Pclose(fapl);
   if (file_ < 0) {
     const std::string locked = lock_note(h5, true);
     throw InputError(h5.string() + ": cannot open" +
@@ -228,7 +303,7 @@ FieldsFile::~FieldsFile() {
 }
 
 void FieldsFile::close() noexcept {
-  if (poisoned_ && file_ >= 0) {
+  if (poisoned_ && file_ >= 0 && !ranks_) { // (an MPI-IO file has no descriptor to redirect)
     // A write failed inside HDF5: its cache holds metadata that the file on disk lacks, and
     // writing what still fits (the superblock with the new end of file, say) makes the file
     // unreadable. HDF5's descriptor is pointed at /dev/null, so the close writes nothing into
@@ -269,7 +344,7 @@ void FieldsFile::declare_mesh(const std::string& grid,
     const auto n = static_cast<std::size_t>(nodes);
     try {
       write_array(g, connectivity_name(nodes), H5T_NATIVE_INT64, connectivity.data(),
-                  {connectivity.size() / n, n}, h5_path_);
+                  {connectivity.size() / n, n}, h5_path_, {ranks_ != nullptr, root(), nullptr});
     } catch (...) {
       H5Gclose(g);
       throw;
@@ -285,7 +360,7 @@ void FieldsFile::begin_frame(double time) {
     // before anything of it is written, so a full disk stops between frames.
     const std::uintmax_t need = 2 * frame_bytes_ + (64U << 10);
     const std::uintmax_t room = room_for(h5_path_);
-    if (room < need) {
+    if (ranks_ ? !ranks_->all(room >= need) : room < need) {
       refused_ = true;
       h5_fail(h5_path_,
               "no room for frame " + std::to_string(frames_.size()) + ": " + std::to_string(room) +
@@ -317,6 +392,7 @@ void FieldsFile::ensure_vertices(std::size_t n) {
     const hid_t space = H5Screate_simple(1, &dims, &max);
     const hid_t dcpl = H5Pcreate(H5P_DATASET_CREATE);
     H5Pset_chunk(dcpl, 1, &chunk);
+    if (ranks_) H5Pset_fill_time(dcpl, H5D_FILL_TIME_NEVER); // rank 0 writes every entry
     set =
         H5Dcreate2(file_, "meshes/vertices", H5T_STD_I64LE, space, H5P_DEFAULT, dcpl, H5P_DEFAULT);
     H5Pclose(dcpl);
@@ -334,8 +410,14 @@ void FieldsFile::ensure_vertices(std::size_t n) {
   const hid_t file_space = H5Dget_space(set);
   const hid_t mem_space = H5Screate_simple(1, &count, nullptr);
   herr_t status = H5Sselect_hyperslab(file_space, H5S_SELECT_SET, &start, nullptr, &count, nullptr);
+  const hid_t dxpl = H5Pcreate(H5P_DATASET_XFER);
+  if (!root()) H5Sselect_none(file_space), H5Sselect_none(mem_space); // rank 0 writes them
+#ifdef H5_HAVE_PARALLEL
+  if (ranks_) H5Pset_dxpl_mpio(dxpl, H5FD_MPIO_COLLECTIVE);
+#endif
   if (status >= 0)
-    status = H5Dwrite(set, H5T_NATIVE_INT64, mem_space, file_space, H5P_DEFAULT, index.data());
+    status = H5Dwrite(set, H5T_NATIVE_INT64, mem_space, file_space, dxpl, index.data());
+  H5Pclose(dxpl);
   H5Sclose(mem_space);
   H5Sclose(file_space);
   if (H5Dclose(set) < 0) status = -1;
@@ -344,21 +426,27 @@ void FieldsFile::ensure_vertices(std::size_t n) {
 }
 
 void FieldsFile::write_grid(const std::string& grid, const std::vector<double>& points,
-                            const std::vector<GridField>& fields, int dim) {
+                            const std::vector<GridField>& fields, int dim, const FileRows* rows) {
   guarded([&] {
     const bool mesh = std::any_of(meshes_.begin(), meshes_.end(),
                                   [&](const MeshRecord& m) { return m.grid == grid; });
     const auto d = static_cast<hsize_t>(dim);
-    const hsize_t n = points.size() / d;
+    hsize_t n = rows ? rows->total : points.size() / d;
+    if (ranks_ && !rows) { // rank 0's grid: its size on every rank
+      std::vector<double> size{static_cast<double>(n)};
+      ranks_->broadcast(size);
+      n = static_cast<hsize_t>(size.front());
+    }
     if (!mesh) ensure_vertices(n);
     const hid_t g = make_group(frame_group_, grid, h5_path_);
     GridRecord record{grid, n, {}, dim};
+    const Part part{ranks_ != nullptr, root(), ranks_ ? rows : nullptr};
     try {
-      write_array(g, "position", H5T_NATIVE_DOUBLE, points.data(), {n, d}, h5_path_);
+      write_array(g, "position", H5T_NATIVE_DOUBLE, points.data(), {n, d}, h5_path_, part);
       for (const auto& f : fields) {
         std::vector<hsize_t> dims = {n};
         if (f.components > 1) dims.push_back(static_cast<hsize_t>(f.components));
-        write_array(g, f.name, H5T_NATIVE_DOUBLE, f.data, dims, h5_path_);
+        write_array(g, f.name, H5T_NATIVE_DOUBLE, f.data, dims, h5_path_, part);
         record.fields.emplace_back(f.name, f.components);
       }
     } catch (...) {
@@ -385,6 +473,7 @@ void FieldsFile::end_frame() {
 }
 
 void FieldsFile::write_xdmf() const {
+  if (!root()) return; // rank 0 writes the index
   const std::string h5 = h5_path_.filename().string();
   std::ostringstream x;
   x << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n<Domain>\n"
