@@ -25,7 +25,7 @@ if(FSI_HAVE_PARALLEL_HDF5)
   target_include_directories(fsi_hdf5 SYSTEM INTERFACE ${FSI_HDF5_MPI_INCLUDE_DIR})
   target_link_libraries(fsi_hdf5 INTERFACE ${FSI_HDF5_MPI_LIBRARY} MPI::MPI_CXX)
 else()
-  message(STATUS "HDF5: serial; under mpirun rank 0 writes fields.h5 "
-                 "(scripts/setup installs libhdf5-openmpi-dev for the collective write)")
+  message(STATUS "HDF5: serial (under mpirun rank 0 writes fields.h5; "
+                 "MPI and libhdf5-openmpi-dev give the collective write)")
   target_link_libraries(fsi_hdf5 INTERFACE hdf5::hdf5)
 endif()
