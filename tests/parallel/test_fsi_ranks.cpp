@@ -675,7 +675,7 @@ TEST_CASE("an SPH checkpoint under mpirun restarts on any process count", "[mpi]
 
 TEST_CASE("fields.h5 written collectively at np = 1 is the one-process file", "[mpi]") {
   // Every rank writes its own rows at their ids' places (parallel HDF5, apps/src/output/
-  // fields_file.cpp); at np = 1 the decomposed fluid steps bitwise as one process does, so every
+  // dataset_part.cpp); at np = 1 the decomposed fluid steps bitwise as one process does, so every
   // frame holds the same rows, bit for bit, as a plain `fsi run` (whose rows are in its cell
   // order: compared sorted). The np = 2, 4 files against np = 1 are the cases above.
   struct Case {

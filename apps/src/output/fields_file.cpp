@@ -1,5 +1,7 @@
 #include "fsi_app/output/fields_file.hpp"
 
+#include "dataset_part.hpp"
+
 #include "fsi/core/error.hpp"
 #include "fsi_app/output/file_lock.hpp"
 #include "fsi_app/output/text_file.hpp"
@@ -20,79 +22,14 @@
 
 namespace fsi::app {
 
+using h5::check;
+using h5::h5_fail;
+using h5::Part;
+using h5::write_array;
+
 namespace {
 
 static_assert(sizeof(hid_t) == sizeof(std::int64_t), "hid_t is stored as int64");
-
-[[noreturn]] void h5_fail(const std::filesystem::path& file, const std::string& what) {
-  throw RunError("output: " + file.string() + ": " + what);
-}
-
-void check(herr_t status, const std::filesystem::path& file, const std::string& what) {
-  if (status < 0) h5_fail(file, what);
-}
-
-/// Which part of a dataset this process writes: all of it (one process); collective, the rows
-/// `rows` places, or (no rows) everything on rank 0 and nothing on the others.
-struct Part {
-  bool collective = false;
-  bool root = true;
-  const FileRows* rows = nullptr;
-};
-
-/// Selects `part`'s rows of `file_space` ([rows x columns]) as runs of consecutive rows; the
-/// memory space of as many local rows.
-hid_t select_part(hid_t file_space, const Part& part, const std::vector<hsize_t>& dims) {
-  std::vector<hsize_t> local = dims;
-  if (part.rows) {
-    local.front() = part.rows->at.size();
-    H5Sselect_none(file_space);
-    const auto& at = part.rows->at;
-    std::vector<hsize_t> start(dims.size(), 0), count = dims;
-    for (std::size_t j = 0; j < at.size();) {
-      std::size_t end = j + 1;
-      while (end < at.size() && at[end] == at[end - 1] + 1) ++end;
-      start.front() = at[j], count.front() = end - j;
-      H5Sselect_hyperslab(file_space, H5S_SELECT_OR, start.data(), nullptr, count.data(), nullptr);
-      j = end;
-    }
-  } else if (!part.root) {
-    H5Sselect_none(file_space);
-  }
-  const hid_t mem = H5Screate_simple(static_cast<int>(local.size()), local.data(), nullptr);
-  if (!part.rows && !part.root) H5Sselect_none(mem);
-  return mem;
-}
-
-void write_array(hid_t parent, const std::string& name, hid_t mem_type, const void* data,
-                 std::vector<hsize_t> dims, const std::filesystem::path& file,
-                 const Part& part = {}) {
-  const hid_t space = H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr);
-  const hid_t file_type = mem_type == H5T_NATIVE_DOUBLE ? H5T_IEEE_F64LE : H5T_STD_I64LE;
-  const hid_t dcpl = H5Pcreate(H5P_DATASET_CREATE);
-  if (part.collective) H5Pset_fill_time(dcpl, H5D_FILL_TIME_NEVER); // every row is written
-  const hid_t set =
-      H5Dcreate2(parent, name.c_str(), file_type, space, H5P_DEFAULT, dcpl, H5P_DEFAULT);
-  H5Pclose(dcpl);
-  if (set < 0) h5_fail(file, "cannot create dataset " + name);
-  herr_t status = 0;
-  if (!part.collective) {
-    if (dims.front() != 0) status = H5Dwrite(set, mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data);
-  } else {
-    const hid_t mem = select_part(space, part, dims);
-    const hid_t dxpl = H5Pcreate(H5P_DATASET_XFER);
-#ifdef H5_HAVE_PARALLEL
-    H5Pset_dxpl_mpio(dxpl, H5FD_MPIO_COLLECTIVE);
-#endif
-    const double none = 0.0; // a rank writing no row still passes a buffer
-    status = H5Dwrite(set, mem_type, mem, space, dxpl, data ? data : &none);
-    H5Pclose(dxpl);
-    H5Sclose(mem);
-  }
-  H5Dclose(set);
-  H5Sclose(space);
-  check(status, file, "cannot write dataset " + name);
-}
 
 hid_t make_group(hid_t parent, const std::string& name, const std::filesystem::path& file) {
   const hid_t gcpl = H5Pcreate(H5P_GROUP_CREATE); // children listed in creation order on restart
@@ -526,44 +463,6 @@ void FieldsFile::write_xdmf() const {
   x << "</Grid>\n</Domain>\n</Xdmf>\n";
   // fields.xmf.tmp, renamed; removed when the write fails (not synced: rewritten every frame).
   write_file_atomically(xmf_path_, x.str(), "output: ", false);
-}
-
-Dataset read_dataset(const std::filesystem::path& h5, const std::string& name) {
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  const hid_t file = H5Fopen(h5.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-  if (file < 0) throw InputError(h5.string() + ": cannot open HDF5 file" + lock_note(h5, false));
-  const hid_t set = H5Dopen2(file, name.c_str(), H5P_DEFAULT);
-  if (set < 0) {
-    H5Fclose(file);
-    throw InputError(h5.string() + ": no dataset " + name);
-  }
-  const hid_t space = H5Dget_space(set);
-  const int rank = H5Sget_simple_extent_ndims(space);
-  std::vector<hsize_t> dims(static_cast<std::size_t>(std::max(rank, 0)));
-  H5Sget_simple_extent_dims(space, dims.data(), nullptr);
-  Dataset out;
-  std::size_t count = 1;
-  for (auto d : dims) out.dims.push_back(d), count *= d;
-  out.values.resize(count);
-  if (count > 0) H5Dread(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.values.data());
-  H5Sclose(space);
-  H5Dclose(set);
-  H5Fclose(file);
-  return out;
-}
-
-double read_frame_time(const std::filesystem::path& h5, int frame) {
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  const hid_t file = H5Fopen(h5.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-  if (file < 0) throw InputError(h5.string() + ": cannot open HDF5 file" + lock_note(h5, false));
-  try {
-    const double time = read_frame_time(h5, file, frame);
-    H5Fclose(file);
-    return time;
-  } catch (...) {
-    H5Fclose(file);
-    throw;
-  }
 }
 
 std::vector<GridField> select_fields(const std::vector<std::string>& requested,
