@@ -20,6 +20,7 @@ internal or unclear outcome of a case that is not pending.
 import fcntl
 import json
 import os
+import re
 import shutil
 import signal
 import subprocess
@@ -337,6 +338,22 @@ for name, stl, names in [  # the STL file named, `FILE:LINE: what`
 ]:
     f = write("scenes/e3d_%s.yaml" % name, edit(E3, TANK, "tank_file: " + stl))
     case("scene", "e3d_" + name, ["check", f], "error", names)
+
+# A fluid region as a closed surface (fluid.region_file, 3-D): the file and the scene named.
+open_stl = write("open.stl", STL[:STL.rindex("  facet normal")] + "endsolid\n")  # one facet less
+big_stl = write("big.stl", re.sub(r"vertex (\S+) (\S+) (\S+)", lambda m: "vertex %g %g %g" % tuple(
+    2.0 * float(v) for v in m.groups()), STL))  # the tank doubled: reaches outside it
+REGIONS = "  regions:\n"
+for name, new, names in [
+    ("region_file_missing", "  region_file: no_such.stl\n", ["fluid.region_file", "file not found"]),
+    ("region_file_open", "  region_file: " + open_stl + "\n",
+     ["fluid.region_file", "edges with one facet"]),
+    ("region_file_outside_tank", "  region_file: " + big_stl + "\n",
+     ["fluid.region_file", "outside the tank"]),
+]:
+    scene_case("e3d_" + name, edit(E3, REGIONS, new + REGIONS), names)
+scene_case("region_file_2d", edit(FLUID, "fluid:\n", "fluid:\n  region_file: x.stl\n"),
+           ["fluid.region_file", "3-D scenes"])
 
 # ---------------------------------------------------------------- command line
 out = path("out")
@@ -811,9 +828,12 @@ for scene in sorted(os.listdir(SCENES)):
     if "\nstructures:" not in text:
         continue
     for kind in ("fem", "tlsph"):
+        # T10 sliding faces (a slab's sides) have no TL-SPH counterpart yet: refused, named.
+        sliding = kind == "tlsph" and "\n    sliding:" in text
         case("issue41", "any_structure_%s_%s" % (scene[:-5], kind),
-             ["check", os.path.join(SCENES, scene), "--set", "structures[0].type=" + kind], "ok",
-             timeout=120)
+             ["check", os.path.join(SCENES, scene), "--set", "structures[0].type=" + kind],
+             "error" if sliding else "ok",
+             ["structures[0].sliding", "no sliding faces"] if sliding else (), timeout=120)
 cantilever = os.path.join(SCENES, "cantilever.yaml")
 
 

@@ -28,6 +28,8 @@ public:
   std::size_t global(std::size_t local) const;
   /// A sum over every rank when decomposed.
   double sum(double local) const { return hook_ ? hook_->sum(local) : local; }
+  /// Bytes every rank has sent for ghosts so far (halo builds and updates), summed (collective).
+  double halo_bytes() const { return hook_ ? hook_->sum(hook_->halo_bytes()) : 0.0; }
   /// Every rank's `values` summed entry by entry, the same bits on every rank (Ranks::sum).
   void sum(std::vector<double>& values) const {
     if (ranks_) ranks_->sum(values);

@@ -222,6 +222,9 @@ void tlsph_from_fem(Section& s) {
   if (!fe.loads.empty())
     fe_keys.fail("loads", "a TL-SPH solid takes no constant loads: with loads the entry is of "
                           "type fem only");
+  if (!fe.sliding.empty())
+    fe_keys.fail("sliding", "a TL-SPH solid has no sliding faces: with sliding the entry is of "
+                            "type fem only");
   if (fe.clamped_rigid_motion)
     fe_keys.fail("clamped_rigid_motion", "a 3-D TL-SPH solid's clamps are fixed: with a moving "
                                          "clamp the entry is of type fem only");

@@ -112,11 +112,6 @@ void check_decomposable(const Scene& scene, const Args& a, const Ranks& ranks) {
   if (!scene.fluid || (scene.fluid->type != "emps" && scene.fluid->type != "sph"))
     refuse(scene.fluid ? "fluid.type " + scene.fluid->type + " (EMPS and SPH only)"
                        : "a scene without fluid");
-  if (scene.fluid->type == "sph") {
-    // The decomposed SPH fluid's save/restore would need its halo remade (EMPS's restore).
-    if (!scene.structures.empty() && scene.coupling && scene.coupling->options.scheme == "bgs")
-      refuse("an implicit coupling scheme (bgs) with an SPH fluid");
-  }
 }
 
 int dispatch(const Args& a, std::ostream& out, std::ostream& err, bool terminal,

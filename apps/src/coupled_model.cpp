@@ -34,7 +34,7 @@ public:
     fluid_.advance(t, dt);
     if (!ranks_) return;
     loads_ = fluid_.interface_loads(); // this rank's particles' (eqs. 52-59)
-    sum_loads(*ranks_, loads_, buffer_);
+    sum_loads();
     after_();
   }
   const coupling::BasicInterfaceLoads<D>& interface_loads() const override {
@@ -49,6 +49,18 @@ public:
   const coupling::BasicInterfaceMotion<D>& motion() const { return motion_; }
 
 private:
+  /// Every rank's part of the loads summed (the fluid's ranks each hold their particles'), the
+  /// same on every rank (Ranks::sum), in one message.
+  void sum_loads() {
+    buffer_.clear();
+    for (const VecD<D>& f : loads_.f)
+      for (int k = 0; k < D; ++k) buffer_.push_back(f[k]);
+    ranks_->sum(buffer_);
+    std::size_t i = 0;
+    for (VecD<D>& f : loads_.f)
+      for (int k = 0; k < D; ++k) f[k] = buffer_[i++];
+  }
+
   coupling::BasicFluidSolver<D>& fluid_;
   coupling::BasicInterfaceMotion<D> motion_;
   const Ranks* ranks_ = nullptr;

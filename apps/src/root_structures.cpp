@@ -27,18 +27,6 @@ void unpack_motion(const std::vector<double>& packed, coupling::BasicInterfaceMo
 
 } // namespace
 
-template <int D>
-void sum_loads(const Ranks& ranks, coupling::BasicInterfaceLoads<D>& loads,
-               std::vector<double>& buffer) {
-  buffer.clear();
-  for (const VecD<D>& f : loads.f)
-    for (int k = 0; k < D; ++k) buffer.push_back(f[k]);
-  ranks.sum(buffer);
-  std::size_t i = 0;
-  for (VecD<D>& f : loads.f)
-    for (int k = 0; k < D; ++k) f[k] = buffer[i++];
-}
-
 template <int D> void RootStructures<D>::decompose(const Ranks& ranks) {
   ranks_ = &ranks;
   motion_ = solver_.interface_motion(); // the same on every rank: each built the scene
@@ -79,8 +67,6 @@ template <int D> void RootStructures<D>::restore_state() {
   motion_ = saved_; // rank 0's motion when saved: what its restored solver gives
 }
 
-template void sum_loads(const Ranks&, coupling::InterfaceLoads&, std::vector<double>&);
-template void sum_loads(const Ranks&, coupling::InterfaceLoads3&, std::vector<double>&);
 template class RootStructures<2>;
 template class RootStructures<3>;
 

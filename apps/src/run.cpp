@@ -374,13 +374,11 @@ RunResult run_scene(const Scene& scene, std::vector<std::unique_ptr<Model>>& mod
         for (const auto& m : models) m->flush_logs();
         RunClock failed = c;
         failed.time = attempted;
-        if (ranks.decomposed()) { // a failed step's state is not gathered (issue 47)
-          kept += "no failed_state.h5 under mpirun";
-        } else {
-          write_checkpoint(options.out / "failed_state.h5",
-                           make_archive(scene, models, failed, true));
-          kept += (options.out / "failed_state.h5").string();
-        }
+        // Decomposed: gathered (collective; every rank is here, the failure agreed) in the
+        // one-process format, as a checkpoint is, and written by rank 0.
+        const StateArchive archive = make_archive(scene, models, failed, true);
+        if (root) write_checkpoint(options.out / "failed_state.h5", archive);
+        kept += (options.out / "failed_state.h5").string();
       } catch (const std::exception& f) {
         kept += std::string("not all written: ") + f.what();
       }

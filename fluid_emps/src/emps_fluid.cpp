@@ -140,7 +140,8 @@ template <int D>
 void BasicEmpsFluid<D>::refresh_neighbours(bool allow_reorder, long step, double t) {
   Timer timer(times_.neighbours);
   ParticleSet& p = particles_;
-  decomposition_->update_ghosts(p.fields); // exchange: x, v (and all) of the ghosts
+  // x, v and the step's scratch the viscous term reads (its wall hits): every array.
+  decomposition_->update_ghosts(p.fields, {});
   const bool valid = neighbours_.valid(p.position.coords(), p.size(), 0.5 * options_.skin * r_e_);
   if (decomposition_->all(valid)) return;
   // Ghosts off, the owned particles to their regions' processes (nothing serial).

@@ -19,15 +19,8 @@ namespace fsi::emps {
 // being redone may have rebuilt the halo, which then no longer matches the saved ghosts.
 template <int D> typename BasicEmpsFluid<D>::State BasicEmpsFluid<D>::save() const {
   State s{{}, step_, removed_, layout_, gap_dt_, gap_limited_steps_};
-  particles_.fields.save(s.particles);
+  particles_.fields.save(s.particles, owned());
   if constexpr (D == 3) s.walls_before = walls_.before.nodes();
-  if (decomposed()) {
-    const std::size_t n = owned();
-    s.particles.size = n;
-    for (auto& v : s.particles.reals) v.resize(n);
-    for (auto& v : s.particles.flags) v.resize(n);
-    for (auto& v : s.particles.indices) v.resize(n);
-  }
   return s;
 }
 

@@ -27,7 +27,9 @@ template <int D> void BasicSphFluid<D>::second_half(double dt) {
       x[c][i] += v[c][i] * half;
     }
   });
-  hook().update_ghosts(f.fields); // v for the continuity sums
+  particles::FieldList changed; // v_j for the continuity sums
+  for (int c = 0; c < D; ++c) changed.add(f.v[c]);
+  hook().update_ghosts(f.fields, changed);
   const double inv_rho0c0 = 1.0 / (options_.rho0 * options_.c0);
   const double c0 = options_.c0, four_h = 4.0 * h_;
   const double *p = f.p.data(), *vol = f.vol.data(), *wvol = walls_.vol.data();

@@ -27,7 +27,9 @@ template <int D> void BasicSphFluid<D>::first_half(double dt) {
     f.p[i] = c2 * (f.rho[i] - rho0); // eq. 2
     for (int c = 0; c < D; ++c) x[c][i] += v[c][i] * half;
   });
-  hook().update_ghosts(f.fields); // p (and v after damping) for the pair sums
+  particles::FieldList changed(f.p); // p_j for the pair sums; v_j too after damping
+  for (int c = 0; c < D; ++c) changed.add(f.v[c]);
+  hook().update_ghosts(f.fields, changed);
   const double rho0c0 = rho0 * options_.c0, inv_c0 = 1.0 / options_.c0, inv_m = 1.0 / mass_;
   const bool lim = options_.riemann_limiter;
   const double rho0c0_pairs = options_.pair_dissipation ? rho0c0 : 0.0;

@@ -7,22 +7,30 @@
 #include "fsi/core/state_archive.hpp"
 #include "particles/state_rows.hpp"
 
+#include <algorithm>
 #include <cstdint>
 
 namespace fsi::sph {
 
+// Decomposed (issue 47): the owned particles only; restore() remakes the halo, as the step being
+// redone may have migrated particles and rebuilt it since (EMPS's restore does the same).
 template <int D> void BasicSphFluid<D>::save(State& s) const {
-  fluid_.fields.save(s.fluid);
+  fluid_.fields.save(s.fluid, owned());
   walls_.fields.save(s.walls);
   s.t = t_, s.Dt = Dt_, s.elapsed = elapsed_, s.dt_acoustic = dt_acoustic_;
   s.step = step_, s.builds = builds_, s.sub = sub_, s.subs = subs_, s.removed = removed_;
 }
 
 template <int D> void BasicSphFluid<D>::restore(const State& s) {
+  hook().drop_ghosts(fluid_.fields);
   fluid_.fields.restore(s.fluid);
   walls_.fields.restore(s.walls);
   t_ = s.t, Dt_ = s.Dt, elapsed_ = s.elapsed, dt_acoustic_ = s.dt_acoustic;
   step_ = s.step, builds_ = s.builds, sub_ = s.sub, subs_ = s.subs, removed_ = s.removed;
+  if (decomposition_) { // as decompose(): partitioned at the advection step's build positions
+    hook().migrate(fluid_.fields, fluid_.xb);
+    build_ghosts(fluid_.xb);
+  }
   build_pairs(false); // the restored advection step's pairs, from its build positions (checked)
   parallel_for(fluid_.size(), [&](std::size_t i) {
     fluid_.p[i] = options_.c0 * options_.c0 * (fluid_.rho[i] - options_.rho0);
@@ -43,12 +51,21 @@ void BasicSphFluid<D>::write_state(StateArchive& a, const std::string& prefix) c
     fluid_.fields.write_state(a, prefix + "fluid/");
   }
   walls_.fields.write_state(a, prefix + "walls/");
-  if (decomposition_ && tracked_ < walls_.size())
+  if (decomposition_ && tracked_ < walls_.size()) {
+    // Every component's tracked entries in one sum: [x entries, y entries (, z entries)].
+    const std::size_t n = walls_.size() - tracked_;
+    std::vector<double> sum;
+    for (int c = 0; c < D; ++c)
+      sum.insert(sum.end(), walls_.fv[c].begin() + static_cast<std::ptrdiff_t>(tracked_),
+                 walls_.fv[c].end());
+    hook().sum(sum);
     for (int c = 0; c < D; ++c) {
       std::vector<double> fv = walls_.fv[c];
-      for (std::size_t k = tracked_; k < fv.size(); ++k) fv[k] = hook().sum(fv[k]);
+      std::copy_n(sum.begin() + static_cast<std::ptrdiff_t>(c * n), n,
+                  fv.begin() + static_cast<std::ptrdiff_t>(tracked_));
       a.put(prefix + "walls/fv" + "xyz"[c], std::move(fv));
     }
+  }
   const auto removed = static_cast<std::int64_t>(hook().sum(static_cast<double>(removed_)));
   a.put(prefix + "clock", std::vector<double>{t_, Dt_, elapsed_, dt_acoustic_});
   a.put(prefix + "counters", std::vector<std::int64_t>{step_, builds_, sub_, subs_, removed});

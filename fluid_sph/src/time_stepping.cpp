@@ -82,9 +82,11 @@ template <int D> void BasicSphFluid<D>::per_advection_step() {
   build_pairs();
   ++builds_;
   reinitialise_density();
-  hook().update_ghosts(f.fields); // rho, V for B (eq. 19)
+  hook().update_ghosts(f.fields, particles::FieldList(f.vol)); // V_j for A (eq. 19)
   correction_matrices();
-  hook().update_ghosts(f.fields); // B for the pair sums (eqs. 18, 20, 24)
+  particles::FieldList b;
+  for (const auto* b_s : f.b) b.add(*b_s);
+  hook().update_ghosts(f.fields, b); // B_j for the pair sums (eqs. 18, 20, 24)
   prior_acceleration();
   if (options_.transport_velocity) transport_shift();
   elapsed_ = 0.0;

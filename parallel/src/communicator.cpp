@@ -55,6 +55,15 @@ Communicator::Flagged Communicator::max(double v, bool failed) const {
   return flagged(comm_, v, failed, MPI_MAX);
 }
 
+bool Communicator::sum(std::vector<double>& values, bool failed) const {
+  values.push_back(failed ? 1.0 : 0.0);
+  MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_DOUBLE, MPI_SUM,
+                comm_);
+  const bool any = values.back() != 0.0;
+  values.pop_back();
+  return any;
+}
+
 std::string Communicator::first_failure(const std::string& message, bool failed) const {
   const int first = reduce(comm_, failed ? rank_ : size_, MPI_INT, MPI_MIN);
   if (first == size_) return {}; // nobody failed: not called so

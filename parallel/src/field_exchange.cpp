@@ -30,9 +30,11 @@ void FieldExchange::plan(const Communicator& comm, const std::vector<std::uint32
   received_ = static_cast<std::size_t>(recv_start_[p]);
 }
 
-void FieldExchange::send(const Communicator& comm, const particles::FieldSet& fields) {
+void FieldExchange::send(const Communicator& comm, const particles::FieldSet& fields,
+                         const particles::FieldList& only) {
   const auto p = static_cast<std::size_t>(comm.size());
-  const std::size_t record = fields.bytes_per_particle();
+  only_ = only;
+  const std::size_t record = fields.bytes_per_particle(only);
   send_bytes_.resize(p), send_displ_.resize(p), recv_bytes_.resize(p), recv_displ_.resize(p);
   for (std::size_t r = 0; r < p; ++r) {
     send_displ_[r] = to_int(static_cast<std::size_t>(start_[r]) * record);
@@ -45,12 +47,14 @@ void FieldExchange::send(const Communicator& comm, const particles::FieldSet& fi
   // Rank r's block: field after field, each the values of r's entries in plan order.
   for (std::size_t r = 0; r < p; ++r) {
     std::byte* out = send_buf_.data() + send_displ_[r];
-    fields.for_each_array([&](const auto& values) {
+    fields.for_each_array(only, [&](const auto& values) {
       constexpr std::size_t bytes = sizeof(values[0]);
       for (int k = start_[r]; k < start_[r + 1]; ++k, out += bytes)
         std::memcpy(out, &values[index_[static_cast<std::size_t>(k)]], bytes);
     });
   }
+  bytes_sent_ +=
+      static_cast<double>(send_buf_.size() - static_cast<std::size_t>(send_bytes_[comm.rank()]));
   MPI_Alltoallv(send_buf_.data(), send_bytes_.data(), send_displ_.data(), MPI_BYTE,
                 recv_buf_.data(), recv_bytes_.data(), recv_displ_.data(), MPI_BYTE, comm.comm());
 }
@@ -62,7 +66,7 @@ void FieldExchange::unpack(particles::FieldSet& fields, std::size_t at) const {
     const std::byte* in = recv_buf_.data() + recv_displ_[r];
     const auto first = at + static_cast<std::size_t>(recv_start_[r]);
     const auto last = at + static_cast<std::size_t>(recv_start_[r + 1]);
-    fields.for_each_array([&](auto& values) {
+    fields.for_each_array(only_, [&](auto& values) {
       constexpr std::size_t bytes = sizeof(values[0]);
       for (std::size_t i = first; i < last; ++i, in += bytes) std::memcpy(&values[i], in, bytes);
     });

@@ -27,8 +27,10 @@ void Halo<D>::build(const Communicator& comm, particles::FieldSet& fields,
   exchange_.unpack(fields, owned_);
 }
 
-template <int D> void Halo<D>::update(const Communicator& comm, particles::FieldSet& fields) {
-  exchange_.send(comm, fields);
+template <int D>
+void Halo<D>::update(const Communicator& comm, particles::FieldSet& fields,
+                     const particles::FieldList& only) {
+  exchange_.send(comm, fields, only);
   exchange_.unpack(fields, owned_);
 }
 

@@ -45,8 +45,10 @@ void ParticleDecomposition<D>::build_ghosts(particles::FieldSet& fields,
   ++halo_builds_;
 }
 
-template <int D> void ParticleDecomposition<D>::update_ghosts(particles::FieldSet& fields) {
-  if (active_) halo_.update(comm_, fields);
+template <int D>
+void ParticleDecomposition<D>::update_ghosts(particles::FieldSet& fields,
+                                             const particles::FieldList& changed) {
+  if (active_) halo_.update(comm_, fields, changed);
 }
 
 template <int D> void ParticleDecomposition<D>::drop_ghosts(particles::FieldSet& fields) {

@@ -24,11 +24,12 @@ void compact_one(std::vector<T>& a, const std::vector<std::uint8_t>& keep, std::
   a.resize(kept);
 }
 
-template <class T> void save_all(const T& fields, auto& into) {
+template <class T> void save_all(const T& fields, auto& into, std::size_t n) {
   into.resize(fields.size());
   std::size_t k = 0;
   for (const auto& f : fields)
-    if (f.state) into[k++].assign(f.values.begin(), f.values.end());
+    if (f.state)
+      into[k++].assign(f.values.begin(), f.values.begin() + static_cast<std::ptrdiff_t>(n));
 }
 
 template <class T> void restore_all(T& fields, const auto& from) {
@@ -76,11 +77,11 @@ std::size_t FieldSet::compact(const std::vector<std::uint8_t>& keep) {
   return removed;
 }
 
-void FieldSet::save(Snapshot& into) const {
-  into.size = size_;
-  save_all(reals_, into.reals);
-  save_all(flags_, into.flags);
-  save_all(indices_, into.indices);
+void FieldSet::save(Snapshot& into, std::size_t count) const {
+  into.size = std::min(count, size_);
+  save_all(reals_, into.reals, into.size);
+  save_all(flags_, into.flags, into.size);
+  save_all(indices_, into.indices, into.size);
 }
 
 void FieldSet::restore(const Snapshot& from) {
@@ -116,9 +117,10 @@ void FieldSet::read_state(const StateArchive& a, const std::string& prefix) {
     if (f.state) f.values = a.ints<std::uint32_t>(prefix + f.name, n);
 }
 
-std::size_t FieldSet::bytes_per_particle() const {
-  return reals_.size() * sizeof(double) + flags_.size() * sizeof(std::uint8_t) +
-         indices_.size() * sizeof(std::uint32_t);
+std::size_t FieldSet::bytes_per_particle(const FieldList& only) const {
+  std::size_t bytes = 0;
+  for_each_array(only, [&](const auto& values) { bytes += sizeof(values[0]); });
+  return bytes;
 }
 
 bool FieldSet::has(const std::string& name) const {

@@ -148,6 +148,15 @@ TEST_CASE("apps: what does not translate between the structure types is refused 
   CHECK_THAT(error_of(cantilever, {"structures[0].type=tlsph",
                                    "structures[0].loads=[{boundary: right, force: [0, -1]}]"}),
              Contains("structures[0].loads: a TL-SPH solid takes no constant loads"));
+  // 3-D: TL-SPH has no sliding faces and fixed clamps (the slab's sides would be dropped).
+  const std::string cantilever_3d = FSI_SOURCE_DIR "/data/scenes/cantilever_3d.yaml";
+  CHECK_THAT(error_of(cantilever_3d, {"structures[0].type=tlsph", "structures[0].sliding=[back]"}),
+             Contains("structures[0].sliding: a TL-SPH solid has no sliding faces"));
+  CHECK_THAT(error_of(cantilever_3d,
+                      {"structures[0].type=tlsph",
+                       "structures[0].clamped_rigid_motion={kind: sinusoid, axis: [0, 1, 0], "
+                       "pivot: [0, 0, 0], amplitude: 0.1, period: 1}"}),
+             Contains("structures[0].clamped_rigid_motion: a 3-D TL-SPH solid's clamps are fixed"));
   // A clamped tag the rectangle does not have.
   CHECK_THAT(error_of(cantilever, {"structures[0].type=tlsph", "structures[0].clamped=[side]"}),
              Contains("structures[0].clamped: no side of the mesh is tagged 'side'"));

@@ -1,5 +1,6 @@
-// FieldSet vector fields: the component names the 2-D solvers use, and a 3-D cloud sorted by the
-// cells of BasicCellGrid<3> and BasicPeriodicGrid<3> through FieldSet::permute.
+// FieldSet vector fields: the component names the 2-D solvers use, a FieldList of some arrays and
+// a save of the first rows, and a 3-D cloud sorted by the cells of BasicCellGrid<3> and
+// BasicPeriodicGrid<3> through FieldSet::permute.
 #include "particles/periodic_grid.hpp"
 #include "particles/vector_field.hpp"
 #include "random_cloud.hpp"
@@ -27,6 +28,38 @@ TEST_CASE("particles: vector fields keep the 2-D solvers' field names", "[partic
   f3.save(snap);
   CHECK(snap.reals.size() == 3);
   CHECK(snap.reals[2][4] == 1.5);
+}
+
+TEST_CASE("particles: a FieldList names some arrays; save copies the first rows", "[particles]") {
+  FieldSet f;
+  const auto v = add_vector<2>(f, "v");
+  auto& p = f.add_real("p");
+  auto& surface = f.add_flag("surface");
+  auto& id = f.add_index("id");
+  f.resize(4);
+  for (std::size_t i = 0; i < 4; ++i)
+    v[0][i] = 1.0 + static_cast<double>(i), p[i] = 10.0 * static_cast<double>(i),
+    surface[i] = static_cast<std::uint8_t>(i % 2), id[i] = static_cast<std::uint32_t>(7 + i);
+  // Every array by default (8 + 8 + 8 + 1 + 4 bytes); a list: its arrays only, in names() order.
+  CHECK(f.bytes_per_particle() == 29);
+  FieldList some(id, p);
+  some.add(v[1]);
+  CHECK(f.bytes_per_particle(some) == 20);
+  std::vector<std::size_t> sizes;
+  f.for_each_array(some, [&](const auto& values) { sizes.push_back(sizeof(values[0])); });
+  CHECK(sizes == std::vector<std::size_t>{8, 8, 4}); // vy, p, id
+  // The first 3 rows (a decomposed set's owned particles), restored exactly.
+  FieldSet::Snapshot snap;
+  f.save(snap, 3);
+  CHECK(snap.size == 3);
+  CHECK(snap.reals[2] == std::vector<double>{0.0, 10.0, 20.0});
+  CHECK(snap.indices[0] == std::vector<std::uint32_t>{7, 8, 9});
+  p[0] = -1.0;
+  f.restore(snap);
+  CHECK(f.size() == 3);
+  CHECK(p == std::vector<double>{0.0, 10.0, 20.0});
+  CHECK(v[0] == std::vector<double>{1.0, 2.0, 3.0});
+  CHECK(surface == std::vector<std::uint8_t>{0, 1, 0});
 }
 
 namespace {

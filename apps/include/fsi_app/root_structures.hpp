@@ -13,11 +13,6 @@
 
 namespace fsi::app {
 
-/// Every rank's loads summed, the same on every rank (Ranks::sum); `buffer` is scratch.
-template <int D>
-void sum_loads(const Ranks& ranks, coupling::BasicInterfaceLoads<D>& loads,
-               std::vector<double>& buffer);
-
 template <int D> class RootStructures final : public coupling::BasicStructureSolver<D> {
 public:
   explicit RootStructures(coupling::BasicStructureSolver<D>& structures) : solver_(structures) {}

@@ -16,9 +16,11 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <span>
 #include <sstream>
 #include <tuple>
+#include <utility>
 
 namespace fsi::app::emps_plugin {
 
@@ -64,7 +66,7 @@ void check_open_edges(const Scene& scene, const FluidSpec3& f, const std::vector
 
 /// The line of the fluid's first region (a box, else region_file) for messages.
 int regions_line(const FluidSpec3& f) {
-  return f.regions.empty() ? f.region_line : regions_line(f);
+  return f.regions.empty() ? f.region_line : f.regions.front().line;
 }
 
 /// The volume a closed surface encloses (either orientation), m^3: |sum a . (b x c)| / 6.
@@ -134,13 +136,21 @@ void check3(const Scene& scene, Section& s, std::vector<Section>& probes) {
   const FluidSpec3& f = scene.fluid->as<FluidSpec3>();
   const emps::FluidOptions3 o = fluid_options3(scene);
   check_box_regions(scene, s, probes, f.regions, f.tank, o.domain_min, o.domain_max);
-  if (f.region_surface)
-    for (const Vec3& p : f.region_surface->points) {
-      if (!inside_box(p, o.domain_min, o.domain_max))
-        s.fail("domain", "the region_file surface reaches outside the domain");
-      if (f.tank && !inside_box(p, f.tank->min, f.tank->max))
-        s.fail("region_file", "the surface reaches outside the tank");
-    }
+  if (!f.region_surface) return;
+  std::optional<std::pair<Vec3, Vec3>> tank; // the tank's box, or the box around tank_file's
+  if (f.tank) tank = {f.tank->min, f.tank->max};
+  if (f.tank_surface) {
+    const auto& t = f.tank_surface->points;
+    tank = {t.front(), t.front()};
+    for (const Vec3& q : t)
+      tank->first = tank->first.cwiseMin(q), tank->second = tank->second.cwiseMax(q);
+  }
+  for (const Vec3& p : f.region_surface->points) {
+    if (!inside_box(p, o.domain_min, o.domain_max))
+      s.fail("domain", "the region_file surface reaches outside the domain");
+    if (tank && !inside_box(p, tank->first, tank->second))
+      s.fail("region_file", "the surface reaches outside the tank");
+  }
 }
 
 // Bytes per fluid particle in 3-D, as emps_plugin.cpp counts 2-D: the registered particle

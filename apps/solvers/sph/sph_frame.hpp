@@ -81,8 +81,10 @@ JsonObject fluid_report(const DecomposedParticles<D>& ranks, const sph::BasicSph
       .add("mean_neighbours", fluid.mean_neighbours())
       .add("acoustic_steps", static_cast<long long>(fluid.steps()))
       .add("advection_steps", static_cast<long long>(fluid.advection_steps()));
-  if (ranks.decomposed()) // every rank's ghosts at the end (the halo of the last pair build)
+  if (ranks.decomposed()) { // every rank's ghosts at the end (the halo of the last pair build)
     f.add("ghosts", static_cast<long long>(ranks.global(fluid.particles().size() - fluid.owned())));
+    f.add("halo_bytes", ranks.halo_bytes()); // sent over the run, every rank's
+  }
   return f;
 }
 

@@ -37,6 +37,9 @@ public:
   Flagged sum(double v, bool failed) const;
   Flagged min(double v, bool failed) const;
   Flagged max(double v, bool failed) const;
+  /// `values` summed entry by entry in place, the flag in the same message; returns whether
+  /// any rank passed `failed`.
+  bool sum(std::vector<double>& values, bool failed) const;
   /// After a flagged reduction reported a failure (collective, on that path only): the message
   /// of the lowest failing rank, followed by " (rank r of P)".
   std::string first_failure(const std::string& message, bool failed) const;

@@ -21,15 +21,19 @@ public:
   void plan(const Communicator& comm, const std::vector<std::uint32_t>& index,
             const std::vector<int>& start);
 
-  /// Packs the planned entries of every array of `fields` and sends them (collective); the
-  /// received values wait in the receive buffer until unpack().
-  void send(const Communicator& comm, const particles::FieldSet& fields);
-  /// Writes the received values to entries [at, at + received()) of every array (the caller
-  /// sized `fields`; its arrays must be registered as on the sender).
+  /// Packs the planned entries of the arrays of `fields` that `only` names (default: every
+  /// array) and sends them (collective); the received values wait in the receive buffer until
+  /// unpack().
+  void send(const Communicator& comm, const particles::FieldSet& fields,
+            const particles::FieldList& only = {});
+  /// Writes the received values to entries [at, at + received()) of the arrays the last send()
+  /// named (the caller sized `fields`; its arrays must be registered as on the sender).
   void unpack(particles::FieldSet& fields, std::size_t at) const;
 
   std::size_t received() const { return received_; }
   std::size_t sent() const { return index_.size(); }
+  /// Bytes this rank has sent to other ranks over every send() so far.
+  double bytes_sent() const { return bytes_sent_; }
 
 private:
   std::vector<std::uint32_t> index_;
@@ -39,6 +43,8 @@ private:
   std::vector<int> recv_bytes_, recv_displ_;
   std::vector<std::byte> send_buf_, recv_buf_;
   std::size_t received_ = 0;
+  particles::FieldList only_; // the arrays of the last send()
+  double bytes_sent_ = 0.0;
 };
 
 } // namespace fsi::parallel

@@ -25,8 +25,10 @@ public:
   /// entries [owned(), size()) are ghosts, ordered by owner rank, then by the owner's order.
   void build(const Communicator& comm, particles::FieldSet& fields,
              const particles::VectorField<D>& x, const std::vector<Box<D>>& boxes, double r_halo);
-  /// Copies the owners' current values of every array onto the ghosts (collective).
-  void update(const Communicator& comm, particles::FieldSet& fields);
+  /// Copies the owners' current values of the arrays `only` names (default: every array) onto
+  /// the ghosts (collective).
+  void update(const Communicator& comm, particles::FieldSet& fields,
+              const particles::FieldList& only = {});
   /// Removes the ghosts (before a migration or a repartition).
   void drop(particles::FieldSet& fields) const { fields.resize(owned_); }
 
@@ -34,6 +36,8 @@ public:
   std::size_t ghosts() const { return exchange_.received(); }
   /// How many copies of owned particles this rank sends per update.
   std::size_t sent() const { return exchange_.sent(); }
+  /// Bytes this rank has sent over every build and update so far.
+  double bytes_sent() const { return exchange_.bytes_sent(); }
 
 private:
   FieldExchange exchange_;

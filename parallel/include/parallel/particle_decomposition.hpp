@@ -35,11 +35,15 @@ public:
   bool migrate(particles::FieldSet& fields, const particles::VectorField<D>& x) override;
   void build_ghosts(particles::FieldSet& fields, const particles::VectorField<D>& x,
                     double reach) override;
-  void update_ghosts(particles::FieldSet& fields) override;
+  void update_ghosts(particles::FieldSet& fields, const particles::FieldList& changed) override;
   void drop_ghosts(particles::FieldSet& fields) override;
   std::size_t ghosts() const override { return active_ ? halo_.ghosts() : 0; }
+  double halo_bytes() const override { return halo_.bytes_sent(); }
 
   double sum(double v) const override { return agreed(comm_.sum(v, failing())); }
+  void sum(std::vector<double>& values) const override {
+    agreed({0.0, comm_.sum(values, failing())});
+  }
   double max(double v) const override { return agreed(comm_.max(v, failing())); }
   double min(double v) const override { return agreed(comm_.min(v, failing())); }
   bool all(bool v) const override { return agreed(comm_.min(v ? 1.0 : 0.0, failing())) != 0.0; }

@@ -34,15 +34,21 @@ public:
   /// Appends, after the owned particles, copies of every other process's particles that may
   /// come within `reach` of an owned particle (the set holds no ghosts on entry).
   virtual void build_ghosts(FieldSet& fields, const VectorField<D>& x, double reach) = 0;
-  /// Copies the owners' current values of every array onto the ghosts, same order.
-  virtual void update_ghosts(FieldSet& fields) = 0;
+  /// Copies the owners' current values of the arrays `changed` names onto the ghosts, same
+  /// order: the caller names the arrays that changed since the ghosts were last sent and that
+  /// a pair sum reads (an empty list: every array).
+  virtual void update_ghosts(FieldSet& fields, const FieldList& changed) = 0;
   /// Removes the ghosts (before owned particles are removed or reordered).
   virtual void drop_ghosts(FieldSet& fields) = 0;
   /// How many of the set's last entries are ghosts.
   virtual std::size_t ghosts() const = 0;
+  /// Bytes this process has sent to others for ghosts (builds and updates) so far.
+  virtual double halo_bytes() const = 0;
 
   /// Global reductions over every process (the same value on each).
   virtual double sum(double v) const = 0;
+  /// Every process's `values` summed entry by entry, in one message (sizes agree).
+  virtual void sum(std::vector<double>& values) const = 0;
   virtual double max(double v) const = 0;
   virtual double min(double v) const = 0;
   /// True on every process iff `v` is true on every process.
@@ -68,10 +74,12 @@ template <int D> class LocalParticles final : public Decomposition<D> {
 public:
   bool migrate(FieldSet&, const VectorField<D>&) override { return false; }
   void build_ghosts(FieldSet&, const VectorField<D>&, double) override {}
-  void update_ghosts(FieldSet&) override {}
+  void update_ghosts(FieldSet&, const FieldList&) override {}
   void drop_ghosts(FieldSet&) override {}
   std::size_t ghosts() const override { return 0; }
+  double halo_bytes() const override { return 0.0; }
   double sum(double v) const override { return v; }
+  void sum(std::vector<double>&) const override {}
   double max(double v) const override { return v; }
   double min(double v) const override { return v; }
   bool all(bool v) const override { return v; }

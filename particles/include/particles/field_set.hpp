@@ -3,6 +3,7 @@
 // resizing, reordering by cell, removal, save/restore for iterative coupling, checkpoints and the
 // memory estimate then iterate over the registry, so no field list is written by hand twice.
 // Arrays live in a deque: the references add_*() returns stay valid for the set's lifetime.
+#include <algorithm>
 #include <cstdint>
 #include <deque>
 #include <string>
@@ -13,6 +14,27 @@ class StateArchive;
 }
 
 namespace fsi::particles {
+
+/// Some arrays of a FieldSet, named by the references its add_*() returned (or a VectorField's
+/// components): what changed since the last halo update, so only they are resent. Default: every
+/// array.
+class FieldList {
+public:
+  FieldList() = default;
+  template <class... Array>
+  explicit FieldList(const Array&... arrays) : arrays_{static_cast<const void*>(&arrays)...} {}
+  /// Also `array` (a std::vector the set registered).
+  template <class Array> FieldList& add(const Array& array) {
+    arrays_.push_back(&array);
+    return *this;
+  }
+  bool has(const void* array) const {
+    return arrays_.empty() || std::find(arrays_.begin(), arrays_.end(), array) != arrays_.end();
+  }
+
+private:
+  std::vector<const void*> arrays_;
+};
 
 class FieldSet {
 public:
@@ -41,8 +63,9 @@ public:
     std::vector<std::vector<std::uint8_t>> flags;
     std::vector<std::vector<std::uint32_t>> indices;
   };
-  /// Reuses the snapshot's buffers: no allocation once they are large enough.
-  void save(Snapshot& into) const;
+  /// The first `count` entries (all: size(); a decomposed set's owned ones). Reuses the
+  /// snapshot's buffers: no allocation once they are large enough.
+  void save(Snapshot& into, std::size_t count = std::size_t(-1)) const;
   void restore(const Snapshot& from);
 
   /// Every state array under prefix + name (doubles exact, integers as int64), of the first
@@ -51,8 +74,8 @@ public:
                    std::size_t count = std::size_t(-1)) const;
   void read_state(const StateArchive& archive, const std::string& prefix);
 
-  /// Bytes per entry over every registered array.
-  std::size_t bytes_per_particle() const;
+  /// Bytes per entry over the registered arrays `only` names (default: every array).
+  std::size_t bytes_per_particle(const FieldList& only = {}) const;
   /// Names of the registered arrays (reals, then flags, then indices, each in registration order).
   std::vector<std::string> names() const;
   bool has(const std::string& name) const;
@@ -69,6 +92,17 @@ public:
     for (const auto& a : reals_) f(a.values);
     for (const auto& a : flags_) f(a.values);
     for (const auto& a : indices_) f(a.values);
+  }
+  /// The same over the arrays `only` names, in the order of names().
+  template <class F> void for_each_array(const FieldList& only, F&& f) {
+    for_each_array([&](auto& values) {
+      if (only.has(&values)) f(values);
+    });
+  }
+  template <class F> void for_each_array(const FieldList& only, F&& f) const {
+    for_each_array([&](const auto& values) {
+      if (only.has(&values)) f(values);
+    });
   }
 
 private:
