@@ -283,8 +283,8 @@ for name, old, new, names in [
      ["material.plane", "2-D only"]),
     ("box_side_unknown", "clamped: [left]", "clamped: [x_min]", ["clamped", "x_min"]),
     ("emps_2d_key_in_3d", "structures:", "fluid: {type: emps, density: 1000, l0: 0.02, "
-     "sound_speed: 20, convex_corners: false}\nstructures:",
-     ["fluid.convex_corners", "not available in 3-D yet"]),
+     "sound_speed: 20, wall_pressure: neighbours}\nstructures:",
+     ["fluid.wall_pressure", "not available in 3-D yet"]),
     ("fluid_beside_structure_in_3d", "structures:",
      "fluid: {type: sph, density: 1000, l0: 0.02, sound_speed: 20, regions: [{min: [0, 0, 0], "
      "max: [0.2, 0.2, 0.2]}]}\nstructures:",

@@ -74,7 +74,8 @@ BasicEmpsFluid<D>::BasicEmpsFluid(const Options& options, const std::vector<Vec>
 SpaceWalls::SpaceWalls(const FluidOptions3& options, double n0, const erp::TriangleWallSet& walls,
                        const Particles3& particles, const particles::BasicCellGrid<3>& grid)
     : locator(walls, options.r_e()), before(walls), before_locator(before, options.r_e()),
-      terms(options, n0, particles, grid, hits), corner_faces(options.wall.corner_faces) {
+      terms(options, n0, particles, grid, hits, convex), corner_faces(options.wall.corner_faces),
+      convex_corners(options.wall.convex_corners) {
   // Not in 3-D yet: the two 2-D-only wall options are refused, not ignored.
   if (options.wall.contact.model == WallContact::viscous)
     throw InputError("fluid.wall_contact: 'viscous' is not available in 3-D yet");
@@ -187,6 +188,7 @@ template <int D> void BasicEmpsFluid<D>::query_walls([[maybe_unused]] bool step_
         std::fill(hits[k].triangle.begin(), hits[k].triangle.end(), -1);
       }
     }
+    if (walls_.convex_corners) locator.convex_faces(x, y, z, hits[0], walls_.convex);
   }
 }
 

@@ -53,8 +53,9 @@ void visit_options(WallOptions& o, OptionVisitor& v) {
          "at concave wall corners also apply the nearest other face (its z, mirror terms and "
          "repulsion, the doubly counted quadrant once); false: the nearest wall only, eq. 18");
   v.flag("convex_corners", o.convex_corners,
-         "at convex wall corners count the solid's own virtual lattice in pnd and in the wall "
-         "pressure term (eqs. 20 and 25 assume a half-plane there; false: as in the paper)");
+         "at convex wall corners (3-D: convex edges and corners) count the solid's own virtual "
+         "lattice in pnd and in the wall pressure term (eqs. 20 and 25 assume a half-plane "
+         "there; false: as in the paper)");
   visit_options(o.pnd, v);
   visit_options(o.mirror, v);
   visit_options(o.contact, v);

@@ -6,9 +6,10 @@
 
 namespace fsi::erp {
 
-TriangleRange add_box_tank(TriangleWallSet& walls, const Vec3& lo, const Vec3& hi, bool open_top,
-                           int group) {
-  if (!(hi.array() > lo.array()).all()) throw InputError("box tank: empty box");
+namespace {
+/// The faces of [lo, hi] but the top with open_top, normals into the box (a tank) or out of it.
+TriangleRange add_box(TriangleWallSet& walls, const Vec3& lo, const Vec3& hi, bool open_top,
+                      bool into_box, int group) {
   std::vector<Vec3> corner(8); // corner b: x from bit 0, y from bit 1, z from bit 2
   for (int b = 0; b < 8; ++b)
     corner[static_cast<std::size_t>(b)] =
@@ -25,10 +26,22 @@ TriangleRange add_box_tank(TriangleWallSet& walls, const Vec3& lo, const Vec3& h
                  &b = corner[static_cast<std::size_t>(t[1])],
                  &c = corner[static_cast<std::size_t>(t[2])];
       const bool inward = (b - a).cross(c - a).dot(centre - a) > 0.0;
-      triangles.push_back(inward ? t : std::array<int, 3>{t[0], t[2], t[1]});
+      triangles.push_back(inward == into_box ? t : std::array<int, 3>{t[0], t[2], t[1]});
     }
   }
   return walls.add_triangles(corner, triangles, group);
+}
+} // namespace
+
+TriangleRange add_box_tank(TriangleWallSet& walls, const Vec3& lo, const Vec3& hi, bool open_top,
+                           int group) {
+  if (!(hi.array() > lo.array()).all()) throw InputError("box tank: empty box");
+  return add_box(walls, lo, hi, open_top, true, group);
+}
+
+TriangleRange add_box_obstacle(TriangleWallSet& walls, const Vec3& lo, const Vec3& hi, int group) {
+  if (!(hi.array() > lo.array()).all()) throw InputError("box obstacle: empty box");
+  return add_box(walls, lo, hi, false, false, group);
 }
 
 } // namespace fsi::erp

@@ -32,39 +32,25 @@ void TriangleLocator::corner_faces(std::span<const double> x, std::span<const do
 void TriangleLocator::corner_face(const Vec3& p, std::span<const Vec3> normals, TriangleHits& face,
                                   std::size_t i) const {
   face.triangle[i] = -1;
-  const Vec3& origin = grid_.origin();
-  const double h = grid_.cell_size();
-  const auto& dims = grid_.dims();
-  const Vec3 f = ((p - origin) / h).array().floor();
-  if (!((f.array() >= -1.0).all() && f[0] <= dims[0] && f[1] <= dims[1] && f[2] <= dims[2])) return;
   const double min_r = on_wall_tolerance * r_e_;
   double best = r_e_;
   int best_id = -1;
   Vec3 best_bary = Vec3::Zero();
-  const std::array<int, 3> c{static_cast<int>(f[0]), static_cast<int>(f[1]),
-                             static_cast<int>(f[2])};
-  for (int k = std::max(c[2] - 1, 0); k <= std::min(c[2] + 1, dims[2] - 1); ++k)
-    for (int j = std::max(c[1] - 1, 0); j <= std::min(c[1] + 1, dims[1] - 1); ++j)
-      for (int ci = std::max(c[0] - 1, 0); ci <= std::min(c[0] + 1, dims[0] - 1); ++ci) {
-        const std::size_t cell = grid_.cell(ci, j, k);
-        for (int q = grid_.begin(cell); q < grid_.begin(cell + 1); ++q) {
-          const TriangleGeometry& g = cell_triangle_[static_cast<std::size_t>(q)];
-          const Vec3& nt = walls_->face_normal(g.id);
-          const double d = (p - g.a).dot(nt);
-          if (d <= min_r || d > best || (d == best && g.id > best_id)) continue;
-          const bool turned = std::all_of(normals.begin(), normals.end(), [&](const Vec3& m) {
-            return m.dot(nt) < corner_face_max_cos;
-          });
-          if (!turned) continue;
-          // Barycentric coordinates of the foot p - d n_t (edges included, to round-off).
-          const Vec3 foot = p - d * nt, ab = g.b - g.a, ac = g.c - g.a, af = foot - g.a;
-          const double area2 = ab.cross(ac).dot(nt);
-          const double v = af.cross(ac).dot(nt) / area2, w = ab.cross(af).dot(nt) / area2;
-          const double tol = -1e-12;
-          if (v < tol || w < tol || 1.0 - v - w < tol) continue;
-          best = d, best_id = g.id, best_bary = Vec3(1.0 - v - w, v, w);
-        }
-      }
+  for_each_near(p, [&](const TriangleGeometry& g) {
+    const Vec3& nt = walls_->face_normal(g.id);
+    const double d = (p - g.a).dot(nt);
+    if (d <= min_r || d > best || (d == best && g.id > best_id)) return;
+    const bool turned = std::all_of(normals.begin(), normals.end(),
+                                    [&](const Vec3& m) { return m.dot(nt) < corner_face_max_cos; });
+    if (!turned) return;
+    // Barycentric coordinates of the foot p - d n_t (edges included, to round-off).
+    const Vec3 foot = p - d * nt, ab = g.b - g.a, ac = g.c - g.a, af = foot - g.a;
+    const double area2 = ab.cross(ac).dot(nt);
+    const double v = af.cross(ac).dot(nt) / area2, w = ab.cross(af).dot(nt) / area2;
+    const double tol = -1e-12;
+    if (v < tol || w < tol || 1.0 - v - w < tol) return;
+    best = d, best_id = g.id, best_bary = Vec3(1.0 - v - w, v, w);
+  });
   if (best_id < 0) return;
   const auto& abc = walls_->triangles().node[static_cast<std::size_t>(best_id)];
   const auto& nodes = walls_->nodes();

@@ -258,7 +258,6 @@ TEST_CASE("apps: what a 3-D EMPS scene does not have yet, and bad tanks, are ref
   }
   // (the scene, overrides, what the one-line message says after "FILE:LINE: ")
   const std::vector<std::tuple<std::string, std::vector<std::string>, std::string>> bad = {
-      {kScene, {"fluid.convex_corners=true"}, "fluid.convex_corners: not available in 3-D yet"},
       {kScene,
        {"fluid.wall_contact=viscous"},
        "fluid.wall_contact: 'viscous' is not available in 3-D yet"},

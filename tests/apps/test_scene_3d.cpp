@@ -58,8 +58,6 @@ TEST_CASE("apps: bad 3-D keys name file, line and key", "[apps][scene][3d]") {
   const std::vector<std::pair<std::string, std::string>> cases = {
       {"dimension=4", "dimension: must be in [2, 3], got 4"},
       {"gravity=[0, -9.81]", "gravity: expected [x, y, z]: the scene is 3-D (dimension: 3)"},
-      {"fluid={type: emps, density: 1000, l0: 0.1, sound_speed: 10, convex_corners: false}",
-       "fluid.convex_corners: not available in 3-D yet"},
       {"structures[0].material.plane=strain",
        "structures[0].material.plane: a 3-D solid has the full 3-D law; plane is 2-D only"},
       {"structures[0].mesh.kind=rectangle",

@@ -39,9 +39,9 @@ std::array<double, 4> gradient_residual(int n, const std::function<double(const 
   grid.bin(p.position.coords(), p.size());
   const erp::TriangleLocator locator(walls, r_e);
   emps::SpaceHits hits;
-  locator.query(p.position[0], p.position[1], p.position[2], hits[0]);
-  locator.corner_faces(p.position[0], p.position[1], p.position[2], hits);
-  const emps::SpaceWallTerms terms(o, n0, p, grid, hits);
+  erp::ConvexFaces convex; // a tank has no convex edge
+  emps::test::query_faces(locator, p, hits, convex);
+  const emps::SpaceWallTerms terms(o, n0, p, grid, hits, convex);
   const particles::MpsWeight w(r_e);
   std::array<double, 4> worst{};
   for (std::size_t i = 0; i < x.size(); ++i) {

@@ -36,6 +36,15 @@ inline int walls_near(const Vec3& x, double L, double r_e) {
   return n;
 }
 
+/// The faces acting on every particle of p at rest (3-D): the nearest triangle, the concave
+/// corners' faces and the convex ones, as the fluid's step queries them.
+inline void query_faces(const erp::TriangleLocator& locator, const Particles3& p, SpaceHits& hits,
+                        erp::ConvexFaces& convex) {
+  locator.query(p.position[0], p.position[1], p.position[2], hits[0]);
+  locator.corner_faces(p.position[0], p.position[1], p.position[2], hits);
+  locator.convex_faces(p.position[0], p.position[1], p.position[2], hits[0], convex);
+}
+
 template <int D> VecD<D> momentum(const BasicParticles<D>& p) {
   VecD<D> m = VecD<D>::Zero();
   for (std::size_t i = 0; i < p.size(); ++i)

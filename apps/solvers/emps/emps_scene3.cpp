@@ -11,7 +11,6 @@ namespace {
 
 // The 2-D keys and options that have no 3-D form yet (docs/fluid_emps.md, "3-D").
 void refuse_2d_only(Section& s, const emps::FluidOptions3& o) {
-  if (s.has("convex_corners")) s.fail("convex_corners", "not available in 3-D yet");
   if (o.wall.contact.model == emps::WallContact::viscous)
     s.fail("wall_contact", "'viscous' is not available in 3-D yet");
   if (o.wall.mirror.pressure == emps::WallPressure::neighbours)

@@ -138,9 +138,10 @@ struct SpaceWalls {
   erp::TriangleWallSet before; ///< a copy of the caller's walls at t^n
   erp::TriangleLocator before_locator;
   SpaceHits hits;
+  erp::ConvexFaces convex; ///< the convex edges' and corners' planes (with convex_corners)
   SpaceWallTerms terms;
   WallForces3 forces;
-  bool corner_faces;
+  bool corner_faces, convex_corners;
 };
 
 template <int D> using EmpsWalls = std::conditional_t<D == 2, PlaneWalls, SpaceWalls>;

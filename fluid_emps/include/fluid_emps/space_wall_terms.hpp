@@ -4,11 +4,12 @@
 // face k of the walls that act on it (face 0 the nearest triangle of eq. 18, faces 1 and 2 the
 // other planes of a concave edge or corner, TriangleLocator::corner_faces). One file per term:
 // space_wall_pnd.cpp, space_mirror_pressure.cpp, space_corner_mirror_pressure.cpp,
-// space_mirror_viscous.cpp, space_wall_contact.cpp, space_wall_gap.cpp. Not in 3-D yet: the viscous
-// mirror's images behind two and three walls, the convex corners' wedge, WallContact::viscous and
-// WallPressure::neighbours (the fluid refuses the last two).
+// space_mirror_viscous.cpp, space_wall_contact.cpp, space_wall_gap.cpp, space_convex_part.cpp (the
+// convex edges' and corners' wedge). Not in 3-D yet: the viscous mirror's images behind two and
+// three walls, WallContact::viscous and WallPressure::neighbours (the fluid refuses the last two).
 #include "fluid_emps/options.hpp"
 #include "fluid_emps/particles.hpp"
+#include "geometry_erp/convex_wedge3.hpp"
 #include "geometry_erp/triangle_locator.hpp"
 #include "geometry_erp/wall_weight.hpp"
 #include "particles/cell_grid.hpp"
@@ -35,11 +36,21 @@ struct MirrorViscous3 {
   Vec3 approach = Vec3::Zero();  ///< the closing pairs across the wall (approach viscosity)
 };
 
-/// The wall terms over the fluid's particles, cell grid and hits, which must outlive it.
+/// The wall terms over the fluid's particles, cell grid, hits and convex faces (filled with
+/// WallOptions::convex_corners), which must outlive it.
 class SpaceWallTerms {
 public:
   SpaceWallTerms(const FluidOptions3& options, double n0, const Particles3& particles,
-                 const particles::BasicCellGrid<3>& grid, const SpaceHits& hits);
+                 const particles::BasicCellGrid<3>& grid, const SpaceHits& hits,
+                 const erp::ConvexFaces& convex);
+
+  /// A convex edge's or corner's part of particle i's wall terms (space_convex_part.cpp): the
+  /// lattice of the solid's wedge that replaces face 0's half-space, in proportion `share`.
+  struct ConvexPart {
+    double share = 0.0;
+    erp::LatticeSum3 lattice;
+  };
+  ConvexPart convex_part(std::size_t i) const;
 
   /// n*_i from the fluid part of pnd: z (eq. 20) summed over the faces, the lattice behind two or
   /// three walls counted once (space_wall_pnd.cpp).
@@ -64,6 +75,12 @@ private:
   /// The turn between two faces as a share of a right angle (1 at 90 degrees), as in 2-D's
   /// concave_overlap: the weight of the lattice behind both.
   static double turn_share(const Vec3& n1, const Vec3& n2);
+  /// The faces acting on i (hits_[on[k]], k < the count returned).
+  std::size_t acting_faces(std::size_t i, std::array<std::size_t, max_faces3>& on) const;
+  /// z of eq. 20 over the acting faces on[from ..]: each face's z(r), the lattice behind two and
+  /// three of them counted once (space_wall_pnd.cpp).
+  double faces_weight(std::size_t i, const std::array<std::size_t, max_faces3>& on,
+                      std::size_t from, std::size_t faces) const;
   bool behind(std::uint32_t j, const Vec3& x_wall, const Vec3& n_wall) const;
   /// f(j) for every binned particle in the cells that the ball of radius r_e around m touches
   /// (at most 2 x 2 x 2 of the grid's cells of side >= r_e, not the 27 of for_each_near).
@@ -96,6 +113,7 @@ private:
   const Particles3& p_;
   const particles::BasicCellGrid<3>& grid_;
   const SpaceHits& hits_;
+  const erp::ConvexFaces& convex_;
 };
 
 } // namespace fsi::emps

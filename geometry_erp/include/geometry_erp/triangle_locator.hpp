@@ -26,6 +26,14 @@
 // it (so the pieces of one plane and the gentle turns of a curved wall never count). Beside a
 // convex edge the foot falls outside the other face's triangles, so only concave ones count.
 //
+// Convex edges and corners (convex_faces): beside a box obstacle's edge the nearest face's
+// half-space is not the solid. Each hit takes, as up to five convex faces, in order of distance,
+// the nearest other triangles within r_e whose normal turns by more than 30 degrees from the
+// nearest triangle's and from each one taken before (the opposite face of a box thinner than r_e
+// included), lying behind the nearest triangle's plane while that triangle lies behind theirs
+// (both to on_wall_tolerance r_e): the other faces of a convex edge, corner or small box. A
+// concave edge's other face is in front of the plane, a coplanar piece does not turn.
+//
 // These are new types rather than WallHits<D>: the 2-D record carries one segment coordinate t
 // and the corner faces; a triangle needs barycentric coordinates and a feature.
 #include "fsi/core/types.hpp"
@@ -33,6 +41,7 @@
 #include "geometry_erp/triangle_wall_set.hpp"
 #include "particles/box_grid.hpp"
 
+#include <algorithm>
 #include <array>
 #include <span>
 #include <vector>
@@ -51,6 +60,17 @@ struct TriangleHits {
   /// Grows every array to n (no allocation once warmed up to the largest n).
   void resize(std::size_t n);
   std::size_t size() const { return triangle.size(); }
+};
+
+/// The planes of the convex edges and corners beside each particle (TriangleLocator::convex_faces):
+/// plane 0 the nearest triangle's, planes 1 .. count its convex faces'; unit normal n (into the
+/// fluid) and the particle's signed distance s from the plane (> 0 in front).
+struct ConvexFaces {
+  static constexpr std::size_t max_planes = 6;
+  std::vector<unsigned char> count; ///< convex faces: 0, 1 beside an edge, 2 a corner, up to 5
+  std::array<std::vector<Vec3>, max_planes> n;
+  std::array<std::vector<double>, max_planes> s;
+  void resize(std::size_t n_points);
 };
 
 /// The triangle with its node positions as of TriangleLocator::update().
@@ -78,6 +98,9 @@ public:
   /// 0, a_wall interpolated like v_wall.
   void corner_faces(std::span<const double> x, std::span<const double> y, std::span<const double> z,
                     std::span<TriangleHits> faces) const;
+  /// The convex faces (see above) of each point, `nearest` being its nearest-triangle hits.
+  void convex_faces(std::span<const double> x, std::span<const double> y, std::span<const double> z,
+                    const TriangleHits& nearest, ConvexFaces& convex) const;
   double r_e() const { return r_e_; }
   double cell_size() const { return grid_.cell_size(); }
   const TriangleWallSet& walls() const { return *walls_; }
@@ -88,11 +111,31 @@ private:
   void corner_face(const Vec3& p, std::span<const Vec3> normals, TriangleHits& face,
                    std::size_t i) const;
 
+  /// f(g) for the triangles binned in the 3 x 3 x 3 cells around p (every triangle within r_e);
+  /// a triangle spanning several cells comes once per cell.
+  template <class F> void for_each_near(const Vec3& p, F&& f) const;
+
   const TriangleWallSet* walls_;
   double r_e_;
   std::vector<particles::Box3d> boxes_;         // the triangles' bounding boxes
   particles::BoxGrid grid_;                     // the triangles of each cell
   std::vector<TriangleGeometry> cell_triangle_; // grid_.entries() with their geometry
 };
+
+template <class F> void TriangleLocator::for_each_near(const Vec3& p, F&& f) const {
+  const Vec3& origin = grid_.origin();
+  const auto& dims = grid_.dims();
+  const Vec3 c = ((p - origin) / grid_.cell_size()).array().floor();
+  if (!((c.array() >= -1.0).all() && c[0] <= dims[0] && c[1] <= dims[1] && c[2] <= dims[2])) return;
+  const std::array<int, 3> ci{static_cast<int>(c[0]), static_cast<int>(c[1]),
+                              static_cast<int>(c[2])};
+  for (int k = std::max(ci[2] - 1, 0); k <= std::min(ci[2] + 1, dims[2] - 1); ++k)
+    for (int j = std::max(ci[1] - 1, 0); j <= std::min(ci[1] + 1, dims[1] - 1); ++j)
+      for (int i = std::max(ci[0] - 1, 0); i <= std::min(ci[0] + 1, dims[0] - 1); ++i) {
+        const std::size_t cell = grid_.cell(i, j, k);
+        for (int q = grid_.begin(cell); q < grid_.begin(cell + 1); ++q)
+          f(cell_triangle_[static_cast<std::size_t>(q)]);
+      }
+}
 
 } // namespace fsi::erp

@@ -1,0 +1,150 @@
+// The solid's wedge beside a 3-D box obstacle's convex edges and corners (#43): on a lattice at
+// rest around a closed box of triangles standing free in a tank, pnd (eq. 20's z) against the
+// particle-wall reference (the lattice filling the box counted directly) and the wall pressure
+// term under a uniform pressure (eqs. 25-26) against zero, with and without convex_corners.
+#include "fluid_emps/space_wall_terms.hpp"
+#include "geometry_erp/box_walls.hpp"
+#include "test_support.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+using namespace fsi;
+
+namespace {
+
+/// Per particle within r_e of the box (and beyond r_e of the tank): the number of its convex
+/// faces (0 a face, 1 an edge, 2 a corner), pnd minus the reference, eq. 10's sum at uniform
+/// pressure P (fluid plus wall terms; zero for the full lattice), face 0's mirror term and n_wall,
+/// and the half-space's term there, -(3/n0) 2 P wall_gradient_sum(r) n_wall, where its nearest
+/// point lies inside a face (not on an edge or vertex; else -inf).
+struct Sample {
+  int convex;
+  double pnd_error;
+  Vec3 gradient, mirror, n_face;
+  double half_space;
+};
+
+struct Scene {
+  double l0 = 0.01, P = 1000.0 * 9.81 * 0.18, n0 = 0.0;
+  std::vector<Sample> samples;
+};
+
+/// An 18 l0 cube tank holding a 4 l0 box at [7 l0, 11 l0]^3 (narrower than 2 r_e: every particle
+/// within r_e of it has convex faces, opposite ones included), the lattice l0/2 + k l0 outside
+/// the box at rest under a uniform pressure P.
+Scene box_in_tank(bool convex_corners) {
+  Scene s;
+  const double l0 = s.l0, L = 18 * l0;
+  const Vec3 lo = Vec3::Constant(7 * l0), hi = Vec3::Constant(11 * l0);
+  emps::FluidOptions3 o = emps::test::water<3>(l0, -0.05, 0.25);
+  o.wall.convex_corners = convex_corners;
+  const double r_e = o.r_e();
+  const particles::MpsWeight w(r_e);
+  s.n0 = erp::lattice_n0<3>(l0, r_e, w);
+  erp::TriangleWallSet walls;
+  erp::add_box_tank(walls, Vec3::Zero(), Vec3::Constant(L), false, 0);
+  erp::add_box_obstacle(walls, lo, hi, 1);
+  const auto inside = [&](const Vec3& x) {
+    return (x.array() > lo.array()).all() && (x.array() < hi.array()).all();
+  };
+  std::vector<Vec3> x, solid; // the fluid lattice and the reference's wall particles
+  for (const Vec3& q : emps::test::block(18, 18, 18, l0)) (inside(q) ? solid : x).push_back(q);
+  emps::Particles3 p;
+  p.resize(x.size());
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    for (int a = 0; a < 3; ++a) p.position[a][i] = x[i][a];
+    p.p[i] = s.P;
+  }
+  particles::BasicCellGrid<3> grid(o.domain_min, o.domain_max, 1.1 * r_e);
+  grid.bin(p.position.coords(), p.size());
+  const erp::TriangleLocator locator(walls, r_e);
+  emps::SpaceHits hits;
+  erp::ConvexFaces convex;
+  emps::test::query_faces(locator, p, hits, convex);
+  const emps::SpaceWallTerms terms(o, s.n0, p, grid, hits, convex);
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const Vec3 gap = (lo - x[i]).cwiseMax(x[i] - hi).cwiseMax(0.0);
+    if (gap.norm() >= r_e || emps::test::walls_near(x[i], L, r_e) > 0) continue;
+    double fluid_pnd = 0.0, solid_pnd = 0.0;
+    Vec3 fluid = Vec3::Zero();
+    for (std::size_t j = 0; j < x.size(); ++j) {
+      const Vec3 d = x[j] - x[i];
+      const double r2 = d.squaredNorm();
+      if (j == i || r2 >= r_e * r_e) continue;
+      fluid_pnd += w(std::sqrt(r2));
+      fluid += 2.0 * s.P * w.inside(std::sqrt(r2)) / r2 * d;
+    }
+    for (const Vec3& q : solid) solid_pnd += w((q - x[i]).norm());
+    const Vec3 mirror = terms.mirror_pressure(i, 0);
+    const double half_space =
+        hits[0].feature[i] == TriangleFeature::face
+            ? -3.0 / s.n0 * 2.0 * s.P * erp::wall_gradient_sum<3>(hits[0].r[i], l0, r_e, w)
+            : -std::numeric_limits<double>::infinity();
+    s.samples.push_back({convex.count[i], terms.pnd(i, fluid_pnd) - (fluid_pnd + solid_pnd),
+                         3.0 / s.n0 * fluid + mirror, mirror, hits[0].n_wall[i], half_space});
+  }
+  return s;
+}
+
+} // namespace
+
+TEST_CASE("emps 3-D walls: beside a box obstacle's convex edges and corners pnd at rest equals "
+          "the lattice filling the box counted directly, and the wall pressure term balances a "
+          "uniform pressure, only with convex_corners",
+          "[emps][walls3d][convex]") {
+  const Scene with = box_in_tank(true), without = box_in_tank(false);
+  REQUIRE(with.samples.size() == without.samples.size());
+  std::array<double, 3> pnd_with{}, pnd_without{}, grad_with{}, grad_without{};
+  std::array<int, 3> count{};
+  for (std::size_t k = 0; k < with.samples.size(); ++k) {
+    const Sample &a = with.samples[k], &b = without.samples[k];
+    const auto c = static_cast<std::size_t>(std::min(a.convex, 2));
+    ++count[c];
+    pnd_with[c] = std::max(pnd_with[c], std::abs(a.pnd_error) / with.n0);
+    pnd_without[c] = std::max(pnd_without[c], std::abs(b.pnd_error) / with.n0);
+    grad_with[c] = std::max(grad_with[c], a.gradient.norm() * with.l0 / with.P);
+    grad_without[c] = std::max(grad_without[c], b.gradient.norm() * with.l0 / with.P);
+  }
+  INFO("particles with 0, 1, 2 or more convex faces: " << count[0] << ", " << count[1] << ", "
+                                                       << count[2]);
+  INFO("worst |pnd - reference| / n0 with convex_corners: "
+       << pnd_with[0] << ", " << pnd_with[1] << ", " << pnd_with[2]
+       << "; without: " << pnd_without[0] << ", " << pnd_without[1] << ", " << pnd_without[2]);
+  INFO("worst |<grad p>_i| l0 / P with convex_corners: "
+       << grad_with[0] << ", " << grad_with[1] << ", " << grad_with[2]
+       << "; without: " << grad_without[0] << ", " << grad_without[1] << ", " << grad_without[2]);
+  CHECK(count[1] > 0);
+  CHECK(count[2] > 0);
+  for (std::size_t c = 0; c < 3; ++c) {
+    CHECK(pnd_with[c] < 1e-12);
+    CHECK(grad_with[c] < 1e-12);
+  }
+  // Without: the lattice beyond the edges' and corners' other faces counted as solid.
+  CHECK(std::max(pnd_without[1], pnd_without[2]) > 0.15);
+  CHECK(std::max(grad_without[1], grad_without[2]) > 0.2);
+}
+
+TEST_CASE("emps 3-D walls: the convex wedge takes solid away from pnd and weakens face 0's push "
+          "without turning it",
+          "[emps][walls3d][convex]") {
+  const Scene with = box_in_tank(true), without = box_in_tank(false);
+  int corrected = 0, pushed = 0;
+  for (std::size_t k = 0; k < with.samples.size(); ++k) {
+    const Sample &a = with.samples[k], &b = without.samples[k];
+    // pnd: the wedge is a part of the half-space, never more.
+    CHECK(a.pnd_error <= b.pnd_error + 1e-12 * with.n0);
+    if (a.convex == 0) continue;
+    corrected += a.pnd_error < b.pnd_error - 1e-6 * with.n0;
+    // The wall term under p > 0 pushes along face 0's normal (zero where the wedge's lattice is
+    // out of reach); beside a face less than the whole half-space's would.
+    CHECK(a.mirror.dot(a.n_face) <= 0.0);
+    pushed += a.mirror.dot(a.n_face) < 0.0;
+    CHECK(a.mirror.dot(a.n_face) >= a.half_space - 1e-12 * with.P / with.l0);
+  }
+  CHECK(corrected > 0);
+  CHECK(pushed > 0);
+}
