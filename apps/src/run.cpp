@@ -334,6 +334,9 @@ RunResult run_scene(const Scene& scene, std::vector<std::unique_ptr<Model>>& mod
         progress.update(c.time, c.step);
         if (options.on_step) options.on_step(c.time, c.step);
         if (checkpoint_due()) checkpoint();
+      } catch (const AgreedError&) { // fields.h5 failed on some rank: every rank is here
+        state_broken = false;
+        throw;
       } catch (const std::exception& e) {
         if (!ranks.decomposed()) throw;
         failure = e.what();

@@ -776,3 +776,39 @@ TEST_CASE("fields.h5 written collectively at np = 1 is the one-process file", "[
       (two / "fields.h5").string();
   CHECK(std::system(check.c_str()) == 0);
 }
+
+TEST_CASE("fields.h5 failing on one rank stops every rank with its message", "[mpi]") {
+  // Rank 1 alone may write 358,400 bytes (RLIMIT_FSIZE: sh's `ulimit -f 700`, 512-byte blocks;
+  // SIGXFSZ ignored; MPI over TCP, whose shared-memory files the limit would break): frame 0
+  // (fields.h5 207,032 bytes) fits, and rank 1's block of frame 1's free_surface, bytes 365,080
+  // to 377,080, does not (EFBIG); the room check before frame 1 passes (it knows a frame's size
+  // from frame 2 on). The failure is agreed after the dataset (apps' agreed): every rank stops
+  // there, exit 3, rank 1's message once; fields.xmf names frame 0, the one-process frame 0.
+  const fs::path out = scratch() / "fsi_write_failure_np2";
+  fs::remove_all(out);
+  const fs::path script = scratch() / "fsi_write_failure.sh",
+                 log = scratch() / "fsi_write_failure.txt";
+  std::ofstream(script)
+      << "if [ \"$OMPI_COMM_WORLD_RANK\" = 1 ]; then trap '' XFSZ; ulimit -f 700; "
+         "fi\nexec "
+      << FSI_EXE << " run " << dam_break << " --out " << out.string() << " --threads 1\n";
+  const std::string command = "timeout -k 10 240 " + std::string(FSI_MPIEXEC) +
+                              " --oversubscribe --allow-run-as-root --mca btl self,tcp -np 2 sh " +
+                              script.string() + " > " + log.string() + " 2>&1";
+  const int raw = std::system(command.c_str());
+  const std::string output = text_of(log);
+  INFO(output);
+  CHECK((WIFEXITED(raw) ? WEXITSTATUS(raw) : -1) == 3); // not 124 (a hang), not an abort's
+  CHECK(occurrences(output, "fields.h5: cannot write dataset free_surface (rank 1 of 2)") == 1);
+  CHECK(occurrences(output, "(rank 1 of 2)") == 1);
+  CHECK(occurrences(output, "MPI_ABORT") == 0);
+  const std::string json = text_of(out / "run.json");
+  CHECK(occurrences(json, "\"status\": \"failed\"") == 1);
+  CHECK(occurrences(json, "(rank 1 of 2)") == 1);
+  // The index names frame 0 alone, and frame 0 is the plain run's.
+  const std::string xmf = text_of(out / "fields.xmf");
+  CHECK(occurrences(xmf, "<Time ") == 1);
+  const std::vector<std::string> names{"position", "velocity", "pressure", "pnd", "free_surface"};
+  const fs::path serial = run(dam_break, 0, "--set time.end=2e-4", "_first");
+  CHECK(sorted_rows(out, 0, names) == sorted_rows(serial, 0, names));
+}

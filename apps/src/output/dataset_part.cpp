@@ -14,22 +14,15 @@ void check(herr_t status, const std::filesystem::path& file, const std::string& 
 
 namespace {
 
-/// Selects `part`'s rows of `file_space` ([rows x columns]) as runs of consecutive rows; the
-/// memory space of as many local rows.
+/// Selects `part`'s rows of `file_space` ([rows x columns]): one block (FileRows), everything on
+/// rank 0 or nothing; the memory space of as many local rows.
 hid_t select_part(hid_t file_space, const Part& part, const std::vector<hsize_t>& dims) {
   std::vector<hsize_t> local = dims;
   if (part.rows) {
-    local.front() = part.rows->at.size();
-    H5Sselect_none(file_space);
-    const auto& at = part.rows->at;
-    std::vector<hsize_t> start(dims.size(), 0), count = dims;
-    for (std::size_t j = 0; j < at.size();) {
-      std::size_t end = j + 1;
-      while (end < at.size() && at[end] == at[end - 1] + 1) ++end;
-      start.front() = at[j], count.front() = end - j;
-      H5Sselect_hyperslab(file_space, H5S_SELECT_OR, start.data(), nullptr, count.data(), nullptr);
-      j = end;
-    }
+    local.front() = part.rows->count;
+    std::vector<hsize_t> start(dims.size(), 0);
+    start.front() = part.rows->first;
+    H5Sselect_hyperslab(file_space, H5S_SELECT_SET, start.data(), nullptr, local.data(), nullptr);
   } else if (!part.root) {
     H5Sselect_none(file_space);
   }
@@ -55,13 +48,10 @@ void write_array(hid_t parent, const std::string& name, hid_t mem_type, const vo
     if (dims.front() != 0) status = H5Dwrite(set, mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data);
   } else {
     const hid_t mem = select_part(space, part, dims);
-    const hid_t dxpl = H5Pcreate(H5P_DATASET_XFER);
-#ifdef H5_HAVE_PARALLEL
-    H5Pset_dxpl_mpio(dxpl, H5FD_MPIO_COLLECTIVE);
-#endif
+    // Independent transfer (H5P_DEFAULT): one block a rank, faster than MPI-IO's collective
+    // buffering on this data (docs/architecture.md); the dataset's creation stays collective.
     const double none = 0.0; // a rank writing no row still passes a buffer
-    status = H5Dwrite(set, mem_type, mem, space, dxpl, data ? data : &none);
-    H5Pclose(dxpl);
+    status = H5Dwrite(set, mem_type, mem, space, H5P_DEFAULT, data ? data : &none);
     H5Sclose(mem);
   }
   H5Dclose(set);

@@ -159,12 +159,19 @@ template <class F> void FieldsFile::guarded(F&& body) {
     h5_fail(h5_path_, "not written after an earlier error (every frame of " +
                           xmf_path_.filename().string() + " is complete)");
   try {
-    body();
+    phase(body);
   } catch (...) {
     broken_ = true;
     poisoned_ = !refused_; // a refused frame wrote nothing
     throw;
   }
+}
+
+template <class F> void FieldsFile::phase(F&& body) {
+  if (ranks_)
+    agreed(*ranks_, body);
+  else
+    body();
 }
 
 FieldsFile::FieldsFile(const std::filesystem::path& h5, const std::filesystem::path& xmf,
@@ -347,14 +354,9 @@ void FieldsFile::ensure_vertices(std::size_t n) {
   const hid_t file_space = H5Dget_space(set);
   const hid_t mem_space = H5Screate_simple(1, &count, nullptr);
   herr_t status = H5Sselect_hyperslab(file_space, H5S_SELECT_SET, &start, nullptr, &count, nullptr);
-  const hid_t dxpl = H5Pcreate(H5P_DATASET_XFER);
   if (!root()) H5Sselect_none(file_space), H5Sselect_none(mem_space); // rank 0 writes them
-#ifdef H5_HAVE_PARALLEL
-  if (ranks_) H5Pset_dxpl_mpio(dxpl, H5FD_MPIO_COLLECTIVE);
-#endif
   if (status >= 0)
-    status = H5Dwrite(set, H5T_NATIVE_INT64, mem_space, file_space, dxpl, index.data());
-  H5Pclose(dxpl);
+    status = H5Dwrite(set, H5T_NATIVE_INT64, mem_space, file_space, H5P_DEFAULT, index.data());
   H5Sclose(mem_space);
   H5Sclose(file_space);
   if (H5Dclose(set) < 0) status = -1;
@@ -374,16 +376,18 @@ void FieldsFile::write_grid(const std::string& grid, const std::vector<double>& 
       ranks_->broadcast(size);
       n = static_cast<hsize_t>(size.front());
     }
-    if (!mesh) ensure_vertices(n);
+    if (!mesh) phase([&] { ensure_vertices(n); });
     const hid_t g = make_group(frame_group_, grid, h5_path_);
     GridRecord record{grid, n, {}, dim};
     const Part part{ranks_ != nullptr, root(), ranks_ ? rows : nullptr};
     try {
-      write_array(g, "position", H5T_NATIVE_DOUBLE, points.data(), {n, d}, h5_path_, part);
+      phase([&] {
+        write_array(g, "position", H5T_NATIVE_DOUBLE, points.data(), {n, d}, h5_path_, part);
+      });
       for (const auto& f : fields) {
         std::vector<hsize_t> dims = {n};
         if (f.components > 1) dims.push_back(static_cast<hsize_t>(f.components));
-        write_array(g, f.name, H5T_NATIVE_DOUBLE, f.data, dims, h5_path_, part);
+        phase([&] { write_array(g, f.name, H5T_NATIVE_DOUBLE, f.data, dims, h5_path_, part); });
         record.fields.emplace_back(f.name, f.components);
       }
     } catch (...) {

@@ -10,9 +10,10 @@
 //
 // Collective (under mpirun, built with parallel HDF5: writes_collectively): every rank opens the
 // one file through MPI-IO and makes every call in the same order; a particle grid's rows come
-// from every rank (FileRows: each rank's rows at their places in a one-process file), any other
-// grid (a mesh, a structure) from rank 0's data; rank 0 alone writes the XDMF. A write that
-// fails on some ranks only is not agreed (the others may wait in the collective call).
+// from every rank (FileRows: each rank a block of the rows of a one-process file), any other
+// grid (a mesh, a structure) from rank 0's data; rank 0 alone writes the XDMF. The data
+// transfers are independent; success is agreed after each dataset and each call (agreed): a
+// failure on some ranks throws AgreedError on every rank and breaks the file on every rank.
 //
 // A restart reopens the pair, keeps the first frames (those before its checkpoint), deletes the
 // others and rewrites the XDMF; groups track creation order so the index comes out the same.
@@ -38,11 +39,12 @@ namespace fsi::app {
 
 class Ranks;
 
-/// This process's rows of a grid written collectively: local row j goes to file row at[j]
-/// (ascending), of `total` rows over every process.
+/// This process's rows of a grid written collectively: one block, its `count` rows the file's
+/// rows first .. first + count - 1, of `total` rows over every process.
 struct FileRows {
   std::size_t total = 0;
-  std::vector<std::size_t> at;
+  std::size_t first = 0;
+  std::size_t count = 0;
 };
 
 /// Whether a run over `ranks` writes fields.h5 collectively: decomposed (under mpirun) and built
@@ -109,8 +111,10 @@ private:
   void declare_mesh(const std::string& grid, const std::vector<std::int64_t>& connectivity,
                     int nodes);
   void write_xdmf() const;
-  /// Runs `body`; after any exception the file is broken and every later call throws.
+  /// Runs `body` (a phase); after any exception the file is broken and every later call throws.
   template <class F> void guarded(F&& body);
+  /// Runs `body`, one collective phase; collective, its success agreed over the ranks (agreed).
+  template <class F> void phase(F&& body);
   /// The same in a constructor: on an exception the file is closed before it propagates.
   template <class F> void opened(F&& body);
   void close() noexcept;
