@@ -4,7 +4,8 @@
 // the message printed once, and a run that fails on some ranks only: exit 3 on every rank, the
 // failing rank's message once, the files kept; checkpoints restarted on another rank count; coupled
 // scenes (data/walhorn_ranks.yaml, an implicit scheme, a coupled checkpoint; a 3-D EMPS fluid on a
-// T10 plate; SPH fluids on structures, 2-D and 3-D) against one process; SPH checkpoints.
+// T10 plate; SPH fluids on structures, 2-D and 3-D) against one process; SPH checkpoints;
+// fields.h5 written collectively (the one-process file), and failing on one rank (agreed).
 // A plain program (not under mpiexec) that starts mpirun itself.
 #include <catch2/catch.hpp>
 #include <hdf5.h>

@@ -1,6 +1,6 @@
 #pragma once
 // One dataset of fields.h5 written by FieldsFile: by one process, or collectively with parallel
-// HDF5, each rank its part (a particle grid's rows at their places, FileRows; any other dataset
+// HDF5, each rank its part (a particle grid's block of rows, FileRows; any other dataset
 // rank 0's). Failures throw RunError `output: FILE: what`.
 #include "fsi_app/output/fields_file.hpp"
 
