@@ -50,8 +50,9 @@ foreach(pair ${FSI_PACKAGE_TARGETS})
   endif()
 endforeach()
 set_target_properties(fsi PROPERTIES EXPORT_NAME fsi)
+set_target_properties(fsi_hdf5 PROPERTIES EXPORT_NAME hdf5) # fsi::hdf5, the one fsi::app links
 
-install(TARGETS ${_fsi_installed} fsi EXPORT fsiTargets
+install(TARGETS ${_fsi_installed} fsi fsi_hdf5 EXPORT fsiTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
         RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})

@@ -1,9 +1,12 @@
 #pragma once
 // What a particle fluid's model needs to run decomposed over ranks (issue 47), once for every
 // particle fluid (EMPS and SPH, 2-D and 3-D): the exchange hook it hands its fluid, the ranks,
-// global counts, and a frame's rows gathered to rank 0 in global id order, so a one-process
-// file and an N-process one compare entry by entry. Not decomposed (a plain run), it holds
-// nothing and every count is the local one.
+// global counts, and a frame's rows in global id order, so a one-process file and an N-process
+// one compare entry by entry: gathered to rank 0, or, when fields.h5 is written collectively
+// (writes_collectively), every rank a block of the file's rows, sent there by place with one
+// all-to-all (FileRows). Not decomposed (a plain run), it holds nothing and every count is the
+// local one.
+#include "fsi_app/output/fields_file.hpp"
 #include "fsi_app/ranks.hpp"
 #include "fsi_app/scene.hpp"
 
@@ -48,24 +51,43 @@ public:
   }
 
   /// Collective: rows of k values (row[0] the particle's id) of this rank's first `owned`
-  /// particles, filled by pack(i, row), to rank 0 sorted by id; no allocation once the largest
-  /// frame has been gathered.
+  /// particles, filled by pack(i, row), sorted by id: to rank 0 or, written collectively, every
+  /// rank the block of file rows rows() names; no allocation once the largest frame was held.
   template <class Pack> void gather(std::size_t owned, std::size_t k, Pack pack) {
     k_ = k;
     packed_.resize(k * owned);
     for (std::size_t i = 0; i < owned; ++i) pack(i, &packed_[k * i]);
     gather_packed();
   }
-  /// The last gather's particle count (0 on ranks other than 0) and value c of the j-th in id
-  /// order (column-major: column(c)[j]).
+  /// The block of fields.h5's rows the last gather left here when each rank writes its own,
+  /// else null.
+  const FileRows* rows() const { return own_rows_ ? &rows_ : nullptr; }
+  /// Over the frame's rows on every rank: collective when each rank holds its own (rows()),
+  /// else (every row here, or one process) the value itself.
+  double frame_sum(double v) const { return own_rows_ ? hook_->sum(v) : v; }
+  double frame_max(double v) const { return own_rows_ ? hook_->max(v) : v; }
+  double frame_min(double v) const { return own_rows_ ? hook_->min(v) : v; }
+  /// The last gather's particle count (rank 0's: every rank's, 0 on the others; rows(): its
+  /// block's) and value c of the j-th in id order (column-major: column(c)[j]).
   std::size_t gathered() const { return k_ ? sorted_.size() / k_ : 0; }
   const double* column(std::size_t c) const { return sorted_.data() + c * gathered(); }
 
 private:
   void gather_packed();
+  /// The places of this rank's rows (sorted_, in id order) in a one-process file (places_).
+  void place_rows();
+  /// Sends every row to the rank writing its place (rows_: a block each, by place) and leaves
+  /// that rank's block in sorted_, in place order.
+  void to_blocks();
 
   std::unique_ptr<particles::Decomposition<D>> hook_;
   const Ranks* ranks_ = nullptr;
+  bool own_rows_ = false; // writes_collectively: each rank keeps its rows
+  FileRows rows_;
+  std::vector<double> present_;     // place_rows: 1 per id held by some rank
+  std::vector<std::size_t> places_; // place_rows: sorted_'s rows' places
+  std::vector<double> send_;        // to_blocks: rows with their places, by destination
+  std::vector<int> counts_;         // to_blocks: values sent to each rank
   std::size_t k_ = 0;
   std::vector<double> packed_, all_, sorted_; // this rank's rows; every rank's; columns (rank 0)
   std::vector<std::size_t> order_;            // all_'s rows in id order

@@ -44,16 +44,23 @@ std::string json_strings(const std::vector<std::string>& items) {
 /// from the first `resume` frames.
 class Recorder {
 public:
+  /// `seconds`: the wall time of the frames (models' gathers, fields.h5, probes) is added to it.
   Recorder(const Scene& scene, const std::vector<std::unique_ptr<Model>>& models,
-           const std::filesystem::path& out, std::optional<int> resume, const Ranks& ranks)
-      : scene_(scene), models_(models), ranks_(ranks) {
-    if (ranks.rank() != 0) { // rank 0 writes the files
+           const std::filesystem::path& out, std::optional<int> resume, const Ranks& ranks,
+           double& seconds)
+      : scene_(scene), models_(models), ranks_(ranks), seconds_(seconds) {
+    // Rank 0 writes the files; fields.h5 with every rank when written collectively.
+    const auto h5 = out / "fields.h5", xmf = out / "fields.xmf", csv = out / "probes.csv";
+    const Ranks* collective = writes_collectively(ranks) ? &ranks : nullptr;
+    if (ranks.rank() == 0 || collective)
+      fields_ = resume ? std::make_unique<FieldsFile>(h5, xmf, *resume, collective)
+                       : std::make_unique<FieldsFile>(h5, xmf, collective);
+    if (ranks.rank() != 0) {
+      if (fields_ && !resume)
+        for (const auto& m : models_) m->declare(*fields_);
       frames_ = resume.value_or(0);
       return;
     }
-    const auto h5 = out / "fields.h5", xmf = out / "fields.xmf", csv = out / "probes.csv";
-    fields_ = resume ? std::make_unique<FieldsFile>(h5, xmf, *resume)
-                     : std::make_unique<FieldsFile>(h5, xmf);
     probes_ = resume ? std::make_unique<ProbesCsv>(csv, probe_names(scene),
                                                    static_cast<std::size_t>(*resume))
                      : std::make_unique<ProbesCsv>(csv, probe_names(scene));
@@ -64,22 +71,30 @@ public:
   }
 
   void frame(double time) {
-    for (const auto& m : models_) m->gather_frame();
-    if (ranks_.rank() != 0) {
-      ++frames_;
-      return;
-    }
-    fields_->begin_frame(time);
-    for (const auto& m : models_) m->write_frame(*fields_, scene_.output.fields);
-    fields_->end_frame();
-    std::vector<double> values;
-    for (const auto& p : scene_.output.probes) values.push_back(probe(p));
-    probes_->row(time, values);
+    const auto start = std::chrono::steady_clock::now();
+    frame_at(time);
+    seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
 
   int frames() const { return fields_ ? fields_->frames() : frames_; }
 
 private:
+  void frame_at(double time) {
+    for (const auto& m : models_) m->gather_frame();
+    if (fields_) {
+      fields_->begin_frame(time);
+      for (const auto& m : models_) m->write_frame(*fields_, scene_.output.fields);
+      fields_->end_frame();
+    }
+    if (ranks_.rank() != 0) {
+      ++frames_;
+      return;
+    }
+    std::vector<double> values;
+    for (const auto& p : scene_.output.probes) values.push_back(probe(p));
+    probes_->row(time, values);
+  }
+
   static std::vector<std::string> probe_names(const Scene& scene) {
     std::vector<std::string> names;
     for (const auto& p : scene.output.probes) names.push_back(p.name);
@@ -95,7 +110,8 @@ private:
   const Scene& scene_;
   const std::vector<std::unique_ptr<Model>>& models_;
   const Ranks& ranks_;
-  int frames_ = 0; // counted on the ranks without the files
+  double& seconds_;
+  int frames_ = 0; // counted on the ranks other than 0 (which may hold fields_ too)
   std::unique_ptr<FieldsFile> fields_;
   std::unique_ptr<ProbesCsv> probes_;
 };
@@ -184,6 +200,7 @@ RunResult run_scene(const Scene& scene, std::vector<std::unique_ptr<Model>>& mod
     return left <= dt ? left : left < 2.0 * dt ? 0.5 * left : dt;
   };
   auto last_checkpoint = std::chrono::steady_clock::now();
+  double frame_seconds = 0.0; // this rank's wall time writing frames (Recorder)
   auto run_json = [&](const std::string& run_status, const std::string& run_message,
                       bool with_models) {
     JsonObject run;
@@ -206,7 +223,8 @@ RunResult run_scene(const Scene& scene, std::vector<std::unique_ptr<Model>>& mod
         .add("simulated_time", c.time)
         .add("dt_min", c.dt_min)
         .add("dt_max", c.dt_max)
-        .add("frames", c.frames);
+        .add("frames", c.frames)
+        .add("frame_seconds", frame_seconds);
     if (with_models)
       for (const auto& m : models) m->report(run);
     return run.str() + '\n';
@@ -268,7 +286,7 @@ RunResult run_scene(const Scene& scene, std::vector<std::unique_ptr<Model>>& mod
   };
   update_last_words();
   try {
-    recorder.emplace(scene, models, options.out, resume, ranks);
+    recorder.emplace(scene, models, options.out, resume, ranks, frame_seconds);
     if (!resume) {
       recorder->frame(0.0);
       c.frames = recorder->frames();
@@ -316,6 +334,9 @@ RunResult run_scene(const Scene& scene, std::vector<std::unique_ptr<Model>>& mod
         progress.update(c.time, c.step);
         if (options.on_step) options.on_step(c.time, c.step);
         if (checkpoint_due()) checkpoint();
+      } catch (const AgreedError&) { // fields.h5 failed on some rank: every rank is here
+        state_broken = false;
+        throw;
       } catch (const std::exception& e) {
         if (!ranks.decomposed()) throw;
         failure = e.what();

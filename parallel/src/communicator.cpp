@@ -88,4 +88,18 @@ void Communicator::gather(const std::vector<double>& local, std::vector<double>&
               MPI_DOUBLE, 0, comm_);
 }
 
+void Communicator::exchange(const std::vector<double>& send, const std::vector<int>& counts,
+                            std::vector<double>& received) const {
+  const auto n = static_cast<std::size_t>(size_);
+  std::vector<int> from(n), send_at(n, 0), from_at(n, 0);
+  MPI_Alltoall(counts.data(), 1, MPI_INT, from.data(), 1, MPI_INT, comm_);
+  for (std::size_t r = 1; r < n; ++r) {
+    send_at[r] = send_at[r - 1] + counts[r - 1];
+    from_at[r] = from_at[r - 1] + from[r - 1];
+  }
+  received.resize(static_cast<std::size_t>(from_at[n - 1] + from[n - 1]));
+  MPI_Alltoallv(send.data(), counts.data(), send_at.data(), MPI_DOUBLE, received.data(),
+                from.data(), from_at.data(), MPI_DOUBLE, comm_);
+}
+
 } // namespace fsi::parallel

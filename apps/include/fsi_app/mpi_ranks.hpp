@@ -20,6 +20,10 @@ public:
   void gather(const std::vector<double>& local, std::vector<double>& all) const override {
     comm_.gather(local, all);
   }
+  void exchange(const std::vector<double>& send, const std::vector<int>& counts,
+                std::vector<double>& received) const override {
+    comm_.exchange(send, counts, received);
+  }
   /// MPI_Reduce to rank 0 and MPI_Bcast, not MPI_Allreduce: the same bits on every rank.
   void sum(std::vector<double>& values) const override;
   void broadcast(std::vector<double>& values) const override;

@@ -45,6 +45,10 @@ public:
   /// Every rank's `local`, concatenated in rank order, into `all` on rank 0 (emptied on the
   /// others); no allocation once `all` has held the largest frame.
   virtual void gather(const std::vector<double>& local, std::vector<double>& all) const = 0;
+  /// All to all: `send`'s consecutive parts of counts[r] values go to rank r; `received` holds
+  /// what every rank sent here, in rank order (a frame's rows to the ranks writing their places).
+  virtual void exchange(const std::vector<double>& send, const std::vector<int>& counts,
+                        std::vector<double>& received) const = 0;
   /// Every rank's `values` summed entry by entry, the same bits on every rank (sizes agree): a
   /// structure's interface loads from every rank's particles.
   virtual void sum(std::vector<double>& values) const = 0;
@@ -59,6 +63,29 @@ private:
       new_decomposition(std::integral_constant<int, 3>) const = 0;
 };
 
+/// A failure already agreed over the ranks: every rank throws it, with the lowest failing rank's
+/// message, so the driver stops without agreeing again (Ranks::agree).
+struct AgreedError : RunError {
+  using RunError::RunError;
+};
+
+/// Runs `body` on every rank (one collective phase: the same collective calls on every rank
+/// whether or not it fails) and agrees on its success (one reduction): a RunError on some ranks
+/// throws AgreedError on every rank. One process: `body` itself.
+template <class F> void agreed(const Ranks& ranks, F&& body) {
+  if (!ranks.decomposed()) return body();
+  std::string failure;
+  try {
+    body();
+  } catch (const AgreedError&) {
+    throw; // an inner phase's: on every rank already
+  } catch (const RunError& e) {
+    failure = e.what();
+  }
+  const std::string first = ranks.agree(0, failure).failure;
+  if (!first.empty()) throw AgreedError(first);
+}
+
 /// One process, not decomposed: the serial run.
 class OneProcess final : public Ranks {
 public:
@@ -69,6 +96,10 @@ public:
   Agreed agree(int signal, const std::string& failure) const override { return {signal, failure}; }
   void gather(const std::vector<double>& local, std::vector<double>& all) const override {
     all.assign(local.begin(), local.end());
+  }
+  void exchange(const std::vector<double>& send, const std::vector<int>&,
+                std::vector<double>& received) const override {
+    received.assign(send.begin(), send.end());
   }
   void sum(std::vector<double>&) const override {}
   void broadcast(std::vector<double>&) const override {}

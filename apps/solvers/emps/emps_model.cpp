@@ -23,7 +23,7 @@ emps::FluidOptions fluid_options(const Scene& scene) {
 
 EmpsModel::EmpsModel(const Scene& scene, const std::vector<InterfaceMesh>& interfaces,
                      const std::vector<Polygon>& solid)
-    : walls_(std::make_unique<erp::WallSet>()) {
+    : walls_(std::make_unique<erp::WallSet>()), probes_(scene.output.probes) {
   int group = 0;
   for (const auto& w : scene.walls) {
     wall_names_.push_back("wall '" + w.name + "'");
@@ -65,6 +65,8 @@ void EmpsModel::gather_frame() {
   gathered_.gather(ranks_, fluid_->particles(), fluid_->owned());
   kinetic_energy_ = fluid_->kinetic_energy(); // collective
   gathered_force_ = wall_force();             // collective
+  if (ranks_.rows())
+    ranks_.evaluate_probes(probes_, [&](const ProbeSpec& p) { return evaluate(p); });
 }
 
 emps::WallForceParts EmpsModel::wall_force() const {
@@ -92,10 +94,15 @@ void EmpsModel::write_frame(FieldsFile& file, const std::vector<std::string>& fi
                   select_fields(fields, {{"velocity", 2, v_.data()},
                                          {"pressure", 1, p.p},
                                          {"pnd", 1, p.pnd},
-                                         {"free_surface", 1, flag_.data()}}));
+                                         {"free_surface", 1, flag_.data()}}),
+                  2, ranks_.rows());
 }
 
 std::optional<double> EmpsModel::probe(const ProbeSpec& probe) const {
+  return ranks_.rows() ? ranks_.probe_value(probe) : evaluate(probe);
+}
+
+std::optional<double> EmpsModel::evaluate(const ProbeSpec& probe) const {
   const FrameParticles<2> p = frame();
   if (probe.quantity ==
       "surge_front") { // largest x of the bulk: isolated spray (pnd < n0/2) skipped
@@ -103,7 +110,7 @@ std::optional<double> EmpsModel::probe(const ProbeSpec& probe) const {
     const double bulk = 0.5 * fluid_->n0();
     for (std::size_t i = 0; i < p.n; ++i)
       if (p.pnd[i] >= bulk) front = std::max(front, p.x[0][i]);
-    return front;
+    return ranks_.frame_max(front);
   }
   if (probe.quantity == "pressure") { // MPS-weighted mean over particles within r_e (eq. 8)
     const particles::MpsWeight w_e(fluid_->options().r_e());
@@ -115,6 +122,7 @@ std::optional<double> EmpsModel::probe(const ProbeSpec& probe) const {
       sum += w * p.p[i];
       weights += w;
     }
+    sum = ranks_.frame_sum(sum), weights = ranks_.frame_sum(weights);
     return weights > 0.0 ? sum / weights : 0.0;
   }
   if (probe.quantity == "mean_pressure") { // plain mean over the particles in the box
@@ -124,7 +132,9 @@ std::optional<double> EmpsModel::probe(const ProbeSpec& probe) const {
       if (p.x[0][i] >= probe.box_min->x() && p.x[0][i] <= probe.box_max->x() &&
           p.x[1][i] >= probe.box_min->y() && p.x[1][i] <= probe.box_max->y())
         sum += p.p[i], ++count;
-    return count > 0 ? sum / static_cast<double>(count) : 0.0;
+    sum = ranks_.frame_sum(sum);
+    const double inside = ranks_.frame_sum(static_cast<double>(count));
+    return inside > 0.0 ? sum / inside : 0.0;
   }
   if (probe.quantity == "kinetic_energy") // J per m of depth
     return ranks_.decomposed() ? kinetic_energy_ : fluid_->kinetic_energy();
@@ -132,7 +142,8 @@ std::optional<double> EmpsModel::probe(const ProbeSpec& probe) const {
     double speeds = 0.0;
     for (std::size_t i = 0; i < p.n; ++i)
       speeds += std::sqrt(p.v[0][i] * p.v[0][i] + p.v[1][i] * p.v[1][i]);
-    return p.n ? speeds / static_cast<double>(p.n) : 0.0;
+    const double all = ranks_.frame_sum(static_cast<double>(p.n));
+    return all > 0.0 ? ranks_.frame_sum(speeds) / all : 0.0;
   }
   if (probe.quantity == "wall_force_x" || probe.quantity == "wall_force_y") {
     const emps::WallForceParts f = ranks_.decomposed() ? gathered_force_ : wall_force();

@@ -47,9 +47,10 @@ public:
   /// The fluid steps over `ranks` (parallel::ParticleDecomposition under mpirun); every rank
   /// built it from the whole scene.
   bool decompose(const Ranks& ranks) override;
-  /// Decomposed: every rank's owned particles to rank 0, in id order (one-process files and
-  /// N-process files compare directly), the kinetic energy and the wall force (global sums) for
-  /// the probes.
+  /// Decomposed: every rank's owned particles in id order (to rank 0, or each rank's own when
+  /// fields.h5 is written collectively, the probes then evaluated over every rank; one-process
+  /// files and N-process files compare directly), the kinetic energy and the wall force (global
+  /// sums) for the probes.
   void gather_frame() override;
 
   emps::EmpsFluid& fluid() { return *fluid_; }
@@ -61,6 +62,8 @@ public:
 private:
   /// The particles a frame and the probes read: the fluid's own, or (decomposed) the gathered.
   FrameParticles<2> frame() const { return gathered_.view(ranks_, fluid_->particles()); }
+  /// The probe over frame(); collective when each rank holds its own rows (ranks_.rows()).
+  std::optional<double> evaluate(const ProbeSpec& probe) const;
   /// The force on the interfaces' segments (every wall's without one); decomposed: collective,
   /// every rank's particles summed.
   emps::WallForceParts wall_force() const;
@@ -73,6 +76,7 @@ private:
   std::unique_ptr<emps::EmpsFluid> fluid_;
   std::unique_ptr<FluidAdapter> adapter_;
   std::size_t initial_count_ = 0;
+  std::vector<ProbeSpec> probes_; // the scene's, evaluated by gather_frame on every rank's rows
   std::vector<std::string> wall_names_; ///< by wall group: the scene's walls, then the interfaces
   mutable std::vector<double> xy_, v_, flag_; // output buffers
   GatheredParticles<2> gathered_;             // on rank 0, in id order

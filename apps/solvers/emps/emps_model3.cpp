@@ -223,7 +223,8 @@ void validate3(const Scene& scene, const std::vector<InterfaceMesh3>& interfaces
     }
 }
 
-EmpsModel3::EmpsModel3(const Scene& scene, const std::vector<InterfaceMesh3>& interfaces) {
+EmpsModel3::EmpsModel3(const Scene& scene, const std::vector<InterfaceMesh3>& interfaces)
+    : probes_(scene.output.probes) {
   const FluidSpec3& f = scene.fluid->as<FluidSpec3>();
   validate3(scene, interfaces);
   const std::vector<Vec3> positions = fill_regions3(f);
@@ -262,6 +263,8 @@ void EmpsModel3::gather_frame() {
   if (!ranks_.decomposed()) return;
   gathered_.gather(ranks_, fluid_->particles(), fluid_->owned());
   kinetic_energy_ = fluid_->kinetic_energy(); // collective
+  if (ranks_.rows())
+    ranks_.evaluate_probes(probes_, [&](const ProbeSpec& p) { return evaluate(p); });
 }
 
 void EmpsModel3::write_frame(FieldsFile& file, const std::vector<std::string>& fields) const {
@@ -279,10 +282,14 @@ void EmpsModel3::write_frame(FieldsFile& file, const std::vector<std::string>& f
                                          {"pressure", 1, p.p},
                                          {"pnd", 1, p.pnd},
                                          {"free_surface", 1, flag_.data()}}),
-                  3);
+                  3, ranks_.rows());
 }
 
 std::optional<double> EmpsModel3::probe(const ProbeSpec& probe) const {
+  return ranks_.rows() ? ranks_.probe_value(probe) : evaluate(probe);
+}
+
+std::optional<double> EmpsModel3::evaluate(const ProbeSpec& probe) const {
   const FrameParticles<3> p = frame();
   const std::size_t n = p.n;
   const auto x = [&](std::size_t i) { return Vec3(p.x[0][i], p.x[1][i], p.x[2][i]); };
@@ -290,7 +297,7 @@ std::optional<double> EmpsModel3::probe(const ProbeSpec& probe) const {
     double front = -std::numeric_limits<double>::infinity();
     for (std::size_t i = 0; i < n; ++i)
       if (p.pnd[i] >= 0.5 * fluid_->n0()) front = std::max(front, p.x[0][i]);
-    return front;
+    return ranks_.frame_max(front);
   }
   if (probe.quantity == "pressure") { // MPS-weighted mean over particles within r_e (eq. 8)
     const particles::MpsWeight w_e(fluid_->options().r_e());
@@ -301,6 +308,7 @@ std::optional<double> EmpsModel3::probe(const ProbeSpec& probe) const {
       const double w = w_e.inside(r);
       sum += w * p.p[i], weights += w;
     }
+    sum = ranks_.frame_sum(sum), weights = ranks_.frame_sum(weights);
     return weights > 0.0 ? sum / weights : 0.0;
   }
   if (probe.quantity == "mean_pressure") { // plain mean over the particles in the box
@@ -308,9 +316,11 @@ std::optional<double> EmpsModel3::probe(const ProbeSpec& probe) const {
     std::size_t count = 0;
     for (std::size_t i = 0; i < n; ++i)
       if (inside_box(x(i), *probe.box3_min, *probe.box3_max)) sum += p.p[i], ++count;
-    return count > 0 ? sum / static_cast<double>(count) : 0.0;
+    sum = ranks_.frame_sum(sum);
+    const double inside = ranks_.frame_sum(static_cast<double>(count));
+    return inside > 0.0 ? sum / inside : 0.0;
   }
-  if (probe.quantity == "particles") return static_cast<double>(n);
+  if (probe.quantity == "particles") return ranks_.frame_sum(static_cast<double>(n));
   if (probe.quantity == "wall_gap") {
     locator_->update(); // the interfaces' triangles move
     locator_->query(std::span<const double>(p.x[0], n), std::span<const double>(p.x[1], n),
@@ -318,7 +328,7 @@ std::optional<double> EmpsModel3::probe(const ProbeSpec& probe) const {
     double gap = std::numeric_limits<double>::infinity();
     for (std::size_t i = 0; i < n; ++i)
       if (hits_.triangle[i] >= 0) gap = std::min(gap, hits_.crossed[i] ? -hits_.r[i] : hits_.r[i]);
-    return gap;
+    return ranks_.frame_min(gap);
   }
   if (probe.quantity == "kinetic_energy") // J
     return ranks_.decomposed() ? kinetic_energy_ : fluid_->kinetic_energy();
@@ -326,7 +336,8 @@ std::optional<double> EmpsModel3::probe(const ProbeSpec& probe) const {
     double speeds = 0.0;
     for (std::size_t i = 0; i < n; ++i)
       speeds += std::sqrt(p.v[0][i] * p.v[0][i] + p.v[1][i] * p.v[1][i] + p.v[2][i] * p.v[2][i]);
-    return n ? speeds / static_cast<double>(n) : 0.0;
+    const double all = ranks_.frame_sum(static_cast<double>(n));
+    return all > 0.0 ? ranks_.frame_sum(speeds) / all : 0.0;
   }
   return std::nullopt;
 }

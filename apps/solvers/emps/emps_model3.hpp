@@ -58,8 +58,9 @@ public:
   /// built it from the whole scene and holds every wall triangle (the ghosts' wall hits are
   /// computed locally). Without structures (the adapter's state is this rank's).
   bool decompose(const Ranks& ranks) override;
-  /// Decomposed: every rank's owned particles to rank 0 in id order, and the kinetic energy
-  /// (a global sum) for the probes.
+  /// Decomposed: every rank's owned particles in id order (to rank 0, or each rank's own when
+  /// fields.h5 is written collectively, the probes then evaluated over every rank), and the
+  /// kinetic energy (a global sum) for the probes.
   void gather_frame() override;
 
   const emps::EmpsFluid3& fluid() const { return *fluid_; }
@@ -70,6 +71,8 @@ public:
 private:
   /// The particles a frame and the probes read: the fluid's own, or (decomposed) the gathered.
   FrameParticles<3> frame() const { return gathered_.view(ranks_, fluid_->particles()); }
+  /// The probe over frame(); collective when each rank holds its own rows (ranks_.rows()).
+  std::optional<double> evaluate(const ProbeSpec& probe) const;
 
   std::unique_ptr<erp::TriangleWallSet> walls_; // before the fluid that keeps a reference
   std::vector<erp::InterfaceTriangles> interfaces_;
@@ -80,6 +83,7 @@ private:
   std::unique_ptr<erp::TriangleLocator> locator_; ///< the wall_gap probe's nearest triangles
   mutable erp::TriangleHits hits_;
   std::size_t initial_count_ = 0;
+  std::vector<ProbeSpec> probes_; // the scene's, evaluated by gather_frame on every rank's rows
   mutable std::vector<double> xyz_, v_, flag_; // output buffers
   GatheredParticles<3> gathered_;              // on rank 0, in id order
   double kinetic_energy_ = 0.0;                // decomposed: at the last gather, J

@@ -129,7 +129,8 @@ void SphModel::write_frame(FieldsFile& file, const std::vector<std::string>& fie
                   select_fields(fields, {{"velocity", 2, v_.data()},
                                          {"pressure", 1, p.p},
                                          {"density", 1, p.rho},
-                                         {"wkgc_indicator", 1, p.det_a}}));
+                                         {"wkgc_indicator", 1, p.det_a}}),
+                  2, ranks_.rows());
 }
 
 Vec2 SphModel::wall_force() const {

@@ -200,7 +200,7 @@ void SphModel3::write_frame(FieldsFile& file, const std::vector<std::string>& fi
                                          {"pressure", 1, p.p},
                                          {"density", 1, p.rho},
                                          {"wkgc_indicator", 1, p.det_a}}),
-                  3);
+                  3, ranks_.rows());
 }
 
 std::optional<double> SphModel3::evaluate(const ProbeSpec& probe) const {

@@ -1,8 +1,11 @@
 #include "fsi_app/output/fields_file.hpp"
 
+#include "dataset_part.hpp"
+
 #include "fsi/core/error.hpp"
 #include "fsi_app/output/file_lock.hpp"
 #include "fsi_app/output/text_file.hpp"
+#include "fsi_app/ranks.hpp"
 
 #include <algorithm>
 #include <array>
@@ -19,31 +22,14 @@
 
 namespace fsi::app {
 
+using h5::check;
+using h5::h5_fail;
+using h5::Part;
+using h5::write_array;
+
 namespace {
 
 static_assert(sizeof(hid_t) == sizeof(std::int64_t), "hid_t is stored as int64");
-
-[[noreturn]] void h5_fail(const std::filesystem::path& file, const std::string& what) {
-  throw RunError("output: " + file.string() + ": " + what);
-}
-
-void check(herr_t status, const std::filesystem::path& file, const std::string& what) {
-  if (status < 0) h5_fail(file, what);
-}
-
-void write_array(hid_t parent, const std::string& name, hid_t mem_type, const void* data,
-                 std::vector<hsize_t> dims, const std::filesystem::path& file) {
-  const hid_t space = H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr);
-  const hid_t file_type = mem_type == H5T_NATIVE_DOUBLE ? H5T_IEEE_F64LE : H5T_STD_I64LE;
-  const hid_t set =
-      H5Dcreate2(parent, name.c_str(), file_type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-  if (set < 0) h5_fail(file, "cannot create dataset " + name);
-  const bool empty = dims.front() == 0;
-  const herr_t status = empty ? 0 : H5Dwrite(set, mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data);
-  H5Dclose(set);
-  H5Sclose(space);
-  check(status, file, "cannot write dataset " + name);
-}
 
 hid_t make_group(hid_t parent, const std::string& name, const std::filesystem::path& file) {
   const hid_t gcpl = H5Pcreate(H5P_GROUP_CREATE); // children listed in creation order on restart
@@ -138,6 +124,27 @@ std::uintmax_t size_of(const std::filesystem::path& file) {
 
 } // namespace
 
+bool writes_collectively(const Ranks& ranks) {
+#ifdef H5_HAVE_PARALLEL
+  return ranks.decomposed();
+#else
+  (void)ranks;
+  return false;
+#endif
+}
+
+std::int64_t FieldsFile::file_access() const {
+  const hid_t fapl = H5Pcreate(H5P_FILE_ACCESS);
+#ifdef H5_HAVE_PARALLEL
+  if (ranks_) H5Pset_fapl_mpio(fapl, MPI_COMM_WORLD, MPI_INFO_NULL); // MpiRanks' communicator
+#endif
+  return fapl;
+}
+
+bool FieldsFile::root() const {
+  return !ranks_ || ranks_->rank() == 0;
+}
+
 template <class F> void FieldsFile::opened(F&& body) {
   try {
     guarded(body);
@@ -152,7 +159,7 @@ template <class F> void FieldsFile::guarded(F&& body) {
     h5_fail(h5_path_, "not written after an earlier error (every frame of " +
                           xmf_path_.filename().string() + " is complete)");
   try {
-    body();
+    phase(body);
   } catch (...) {
     broken_ = true;
     poisoned_ = !refused_; // a refused frame wrote nothing
@@ -160,10 +167,20 @@ template <class F> void FieldsFile::guarded(F&& body) {
   }
 }
 
-FieldsFile::FieldsFile(const std::filesystem::path& h5, const std::filesystem::path& xmf)
-    : h5_path_(h5), xmf_path_(xmf) {
+template <class F> void FieldsFile::phase(F&& body) {
+  if (ranks_)
+    agreed(*ranks_, body);
+  else
+    body();
+}
+
+FieldsFile::FieldsFile(const std::filesystem::path& h5, const std::filesystem::path& xmf,
+                       const Ranks* collective)
+    : h5_path_(h5), xmf_path_(xmf), ranks_(collective) {
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  file_ = H5Fcreate(h5.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  const hid_t fapl = file_access();
+  file_ = H5Fcreate(h5.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl);
+  H5Pclose(fapl);
   if (file_ < 0) h5_fail(h5, "cannot create file");
   opened([&] {
     check(H5Gclose(make_group(file_, "meshes", h5)), h5, "cannot create group meshes");
@@ -174,10 +191,12 @@ FieldsFile::FieldsFile(const std::filesystem::path& h5, const std::filesystem::p
 }
 
 FieldsFile::FieldsFile(const std::filesystem::path& h5, const std::filesystem::path& xmf,
-                       int keep_frames)
-    : h5_path_(h5), xmf_path_(xmf) {
+                       int keep_frames, const Ranks* collective)
+    : h5_path_(h5), xmf_path_(xmf), ranks_(collective) {
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  file_ = H5Fopen(h5.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  const hid_t fapl = file_access();
+  file_ = H5Fopen(h5.c_str(), H5F_ACC_RDWR, fapl);
+  H5Pclose(fapl);
   if (file_ < 0) {
     const std::string locked = lock_note(h5, true);
     throw InputError(h5.string() + ": cannot open" +
@@ -228,7 +247,7 @@ FieldsFile::~FieldsFile() {
 }
 
 void FieldsFile::close() noexcept {
-  if (poisoned_ && file_ >= 0) {
+  if (poisoned_ && file_ >= 0 && !ranks_) { // (an MPI-IO file has no descriptor to redirect)
     // A write failed inside HDF5: its cache holds metadata that the file on disk lacks, and
     // writing what still fits (the superblock with the new end of file, say) makes the file
     // unreadable. HDF5's descriptor is pointed at /dev/null, so the close writes nothing into
@@ -269,7 +288,7 @@ void FieldsFile::declare_mesh(const std::string& grid,
     const auto n = static_cast<std::size_t>(nodes);
     try {
       write_array(g, connectivity_name(nodes), H5T_NATIVE_INT64, connectivity.data(),
-                  {connectivity.size() / n, n}, h5_path_);
+                  {connectivity.size() / n, n}, h5_path_, {ranks_ != nullptr, root(), nullptr});
     } catch (...) {
       H5Gclose(g);
       throw;
@@ -285,7 +304,7 @@ void FieldsFile::begin_frame(double time) {
     // before anything of it is written, so a full disk stops between frames.
     const std::uintmax_t need = 2 * frame_bytes_ + (64U << 10);
     const std::uintmax_t room = room_for(h5_path_);
-    if (room < need) {
+    if (ranks_ ? !ranks_->all(room >= need) : room < need) {
       refused_ = true;
       h5_fail(h5_path_,
               "no room for frame " + std::to_string(frames_.size()) + ": " + std::to_string(room) +
@@ -317,6 +336,7 @@ void FieldsFile::ensure_vertices(std::size_t n) {
     const hid_t space = H5Screate_simple(1, &dims, &max);
     const hid_t dcpl = H5Pcreate(H5P_DATASET_CREATE);
     H5Pset_chunk(dcpl, 1, &chunk);
+    if (ranks_) H5Pset_fill_time(dcpl, H5D_FILL_TIME_NEVER); // rank 0 writes every entry
     set =
         H5Dcreate2(file_, "meshes/vertices", H5T_STD_I64LE, space, H5P_DEFAULT, dcpl, H5P_DEFAULT);
     H5Pclose(dcpl);
@@ -334,6 +354,7 @@ void FieldsFile::ensure_vertices(std::size_t n) {
   const hid_t file_space = H5Dget_space(set);
   const hid_t mem_space = H5Screate_simple(1, &count, nullptr);
   herr_t status = H5Sselect_hyperslab(file_space, H5S_SELECT_SET, &start, nullptr, &count, nullptr);
+  if (!root()) H5Sselect_none(file_space), H5Sselect_none(mem_space); // rank 0 writes them
   if (status >= 0)
     status = H5Dwrite(set, H5T_NATIVE_INT64, mem_space, file_space, H5P_DEFAULT, index.data());
   H5Sclose(mem_space);
@@ -344,21 +365,29 @@ void FieldsFile::ensure_vertices(std::size_t n) {
 }
 
 void FieldsFile::write_grid(const std::string& grid, const std::vector<double>& points,
-                            const std::vector<GridField>& fields, int dim) {
+                            const std::vector<GridField>& fields, int dim, const FileRows* rows) {
   guarded([&] {
     const bool mesh = std::any_of(meshes_.begin(), meshes_.end(),
                                   [&](const MeshRecord& m) { return m.grid == grid; });
     const auto d = static_cast<hsize_t>(dim);
-    const hsize_t n = points.size() / d;
-    if (!mesh) ensure_vertices(n);
+    hsize_t n = rows ? rows->total : points.size() / d;
+    if (ranks_ && !rows) { // rank 0's grid: its size on every rank
+      std::vector<double> size{static_cast<double>(n)};
+      ranks_->broadcast(size);
+      n = static_cast<hsize_t>(size.front());
+    }
+    if (!mesh) phase([&] { ensure_vertices(n); });
     const hid_t g = make_group(frame_group_, grid, h5_path_);
     GridRecord record{grid, n, {}, dim};
+    const Part part{ranks_ != nullptr, root(), ranks_ ? rows : nullptr};
     try {
-      write_array(g, "position", H5T_NATIVE_DOUBLE, points.data(), {n, d}, h5_path_);
+      phase([&] {
+        write_array(g, "position", H5T_NATIVE_DOUBLE, points.data(), {n, d}, h5_path_, part);
+      });
       for (const auto& f : fields) {
         std::vector<hsize_t> dims = {n};
         if (f.components > 1) dims.push_back(static_cast<hsize_t>(f.components));
-        write_array(g, f.name, H5T_NATIVE_DOUBLE, f.data, dims, h5_path_);
+        phase([&] { write_array(g, f.name, H5T_NATIVE_DOUBLE, f.data, dims, h5_path_, part); });
         record.fields.emplace_back(f.name, f.components);
       }
     } catch (...) {
@@ -385,6 +414,7 @@ void FieldsFile::end_frame() {
 }
 
 void FieldsFile::write_xdmf() const {
+  if (!root()) return; // rank 0 writes the index
   const std::string h5 = h5_path_.filename().string();
   std::ostringstream x;
   x << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n<Domain>\n"
@@ -437,44 +467,6 @@ void FieldsFile::write_xdmf() const {
   x << "</Grid>\n</Domain>\n</Xdmf>\n";
   // fields.xmf.tmp, renamed; removed when the write fails (not synced: rewritten every frame).
   write_file_atomically(xmf_path_, x.str(), "output: ", false);
-}
-
-Dataset read_dataset(const std::filesystem::path& h5, const std::string& name) {
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  const hid_t file = H5Fopen(h5.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-  if (file < 0) throw InputError(h5.string() + ": cannot open HDF5 file" + lock_note(h5, false));
-  const hid_t set = H5Dopen2(file, name.c_str(), H5P_DEFAULT);
-  if (set < 0) {
-    H5Fclose(file);
-    throw InputError(h5.string() + ": no dataset " + name);
-  }
-  const hid_t space = H5Dget_space(set);
-  const int rank = H5Sget_simple_extent_ndims(space);
-  std::vector<hsize_t> dims(static_cast<std::size_t>(std::max(rank, 0)));
-  H5Sget_simple_extent_dims(space, dims.data(), nullptr);
-  Dataset out;
-  std::size_t count = 1;
-  for (auto d : dims) out.dims.push_back(d), count *= d;
-  out.values.resize(count);
-  if (count > 0) H5Dread(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.values.data());
-  H5Sclose(space);
-  H5Dclose(set);
-  H5Fclose(file);
-  return out;
-}
-
-double read_frame_time(const std::filesystem::path& h5, int frame) {
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  const hid_t file = H5Fopen(h5.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-  if (file < 0) throw InputError(h5.string() + ": cannot open HDF5 file" + lock_note(h5, false));
-  try {
-    const double time = read_frame_time(h5, file, frame);
-    H5Fclose(file);
-    return time;
-  } catch (...) {
-    H5Fclose(file);
-    throw;
-  }
 }
 
 std::vector<GridField> select_fields(const std::vector<std::string>& requested,

@@ -46,6 +46,10 @@ public:
   /// Every rank's `local`, concatenated in rank order, into `all` on rank 0 (emptied on the
   /// others): frames and checkpoints gathered for the files rank 0 writes.
   void gather(const std::vector<double>& local, std::vector<double>& all) const;
+  /// All to all (MPI_Alltoallv): `send`'s consecutive parts of counts[r] values go to rank r;
+  /// `received` holds what every rank sent here, in rank order.
+  void exchange(const std::vector<double>& send, const std::vector<int>& counts,
+                std::vector<double>& received) const;
 
 private:
   MPI_Comm comm_;

@@ -8,6 +8,13 @@
 // (The room check is a rule of thumb; the broken-file path is what keeps the frames safe.)
 // Every failure throws RunError `output: FILE: what`.
 //
+// Collective (under mpirun, built with parallel HDF5: writes_collectively): every rank opens the
+// one file through MPI-IO and makes every call in the same order; a particle grid's rows come
+// from every rank (FileRows: each rank a block of the rows of a one-process file), any other
+// grid (a mesh, a structure) from rank 0's data; rank 0 alone writes the XDMF. The data
+// transfers are independent; success is agreed after each dataset and each call (agreed): a
+// failure on some ranks throws AgreedError on every rank and breaks the file on every rank.
+//
 // A restart reopens the pair, keeps the first frames (those before its checkpoint), deletes the
 // others and rewrites the XDMF; groups track creation order so the index comes out the same.
 //
@@ -30,6 +37,20 @@
 
 namespace fsi::app {
 
+class Ranks;
+
+/// This process's rows of a grid written collectively: one block, its `count` rows the file's
+/// rows first .. first + count - 1, of `total` rows over every process.
+struct FileRows {
+  std::size_t total = 0;
+  std::size_t first = 0;
+  std::size_t count = 0;
+};
+
+/// Whether a run over `ranks` writes fields.h5 collectively: decomposed (under mpirun) and built
+/// with parallel HDF5 (H5_HAVE_PARALLEL); otherwise rank 0 writes it alone.
+bool writes_collectively(const Ranks& ranks);
+
 struct GridField {
   std::string name;
   int components = 1;           ///< 1 (scalar), 2 or 3 (vector)
@@ -42,11 +63,14 @@ std::vector<GridField> select_fields(const std::vector<std::string>& requested,
 
 class FieldsFile {
 public:
-  /// Creates (truncates) `h5` and writes `xmf` beside it.
-  FieldsFile(const std::filesystem::path& h5, const std::filesystem::path& xmf);
+  /// Creates (truncates) `h5` and writes `xmf` beside it; with `collective`, on every one of
+  /// its ranks (writes_collectively).
+  FieldsFile(const std::filesystem::path& h5, const std::filesystem::path& xmf,
+             const Ranks* collective = nullptr);
   /// Reopens the pair of an earlier run and keeps its first `keep_frames` frames (a restart).
   /// Throws InputError when the file is missing or has fewer frames.
-  FieldsFile(const std::filesystem::path& h5, const std::filesystem::path& xmf, int keep_frames);
+  FieldsFile(const std::filesystem::path& h5, const std::filesystem::path& xmf, int keep_frames,
+             const Ranks* collective = nullptr);
   ~FieldsFile();
   FieldsFile(const FieldsFile&) = delete;
   FieldsFile& operator=(const FieldsFile&) = delete;
@@ -59,9 +83,10 @@ public:
 
   void begin_frame(double time);
   /// Writes one grid of the current frame: points (dim = 2 or 3 coordinates interleaved) and
-  /// its fields.
+  /// its fields. Collective: `rows` places this rank's points; without, rank 0's are written.
   void write_grid(const std::string& grid, const std::vector<double>& points,
-                  const std::vector<GridField>& fields, int dim = 2);
+                  const std::vector<GridField>& fields, int dim = 2,
+                  const FileRows* rows = nullptr);
   /// Flushes the HDF5 file and rewrites the XDMF index.
   void end_frame();
 
@@ -86,14 +111,20 @@ private:
   void declare_mesh(const std::string& grid, const std::vector<std::int64_t>& connectivity,
                     int nodes);
   void write_xdmf() const;
-  /// Runs `body`; after any exception the file is broken and every later call throws.
+  /// Runs `body` (a phase); after any exception the file is broken and every later call throws.
   template <class F> void guarded(F&& body);
+  /// Runs `body`, one collective phase; collective, its success agreed over the ranks (agreed).
+  template <class F> void phase(F&& body);
   /// The same in a constructor: on an exception the file is closed before it propagates.
   template <class F> void opened(F&& body);
   void close() noexcept;
   void ensure_vertices(std::size_t n);
+  /// Opens the file's access: MPI-IO on every rank when collective.
+  std::int64_t file_access() const;
+  bool root() const;
 
   std::filesystem::path h5_path_, xmf_path_;
+  const Ranks* ranks_ = nullptr; ///< collective over these ranks, or one process
   std::int64_t file_ = -1;
   std::int64_t frame_group_ = -1;
   std::vector<FrameRecord> frames_;
