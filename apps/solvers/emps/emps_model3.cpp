@@ -233,7 +233,10 @@ EmpsModel3::EmpsModel3(const Scene& scene, const std::vector<InterfaceMesh3>& in
   if (tank_motion_) tank_motion_->move(*walls_, 0.0);
   locator_ = std::make_unique<erp::TriangleLocator>(*walls_, f.options.r_e());
   try {
-    fluid_ = std::make_unique<emps::EmpsFluid3>(fluid_options3(scene), positions, *walls_);
+    // The walls move with fluid.tank_motion or the structures' interfaces, else never.
+    const bool walls_move = tank_motion_.has_value() || !interfaces_.empty();
+    fluid_ =
+        std::make_unique<emps::EmpsFluid3>(fluid_options3(scene), positions, *walls_, walls_move);
   } catch (const InputError& e) {
     fail_at(scene, scene.fluid->line, "fluid", e.what());
   }
