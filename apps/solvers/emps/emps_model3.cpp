@@ -138,13 +138,11 @@ void check3(const Scene& scene, Section& s, std::vector<Section>& probes) {
   check_box_regions(scene, s, probes, f.regions, f.tank, o.domain_min, o.domain_max);
   if (!f.region_surface) return;
   std::optional<std::pair<Vec3, Vec3>> tank; // the tank's box, or the box around tank_file's
-  if (f.tank) tank = {f.tank->min, f.tank->max};
-  if (f.tank_surface) {
-    const auto& t = f.tank_surface->points;
-    tank = {t.front(), t.front()};
-    for (const Vec3& q : t)
-      tank->first = tank->first.cwiseMin(q), tank->second = tank->second.cwiseMax(q);
-  }
+  if (f.tank || f.tank_surface)
+    tank = box_domain(std::nullopt, f.tank,
+                      f.tank_surface ? std::span<const Vec3>(f.tank_surface->points)
+                                     : std::span<const Vec3>(),
+                      {}, 0.0);
   for (const Vec3& p : f.region_surface->points) {
     if (!inside_box(p, o.domain_min, o.domain_max))
       s.fail("domain", "the region_file surface reaches outside the domain");
