@@ -3,7 +3,6 @@
 #include "emps/emps_report.hpp"
 #include "emps/tank_cover.hpp"
 
-#include "fluid_sph/sph_fluid.hpp"
 #include "fsi/core/error.hpp"
 #include "fsi/core/format.hpp"
 #include "fsi_app/wall_motion.hpp"
