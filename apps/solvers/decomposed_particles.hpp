@@ -19,8 +19,12 @@ namespace fsi::app {
 template <int D> class DecomposedParticles {
 public:
   /// A new hook over `ranks` for a fluid of `particles` particles (every rank built the whole
-  /// fluid); the caller hands it to the fluid. InputError if some rank would get none.
+  /// fluid); the caller hands it to the fluid. InputError if some rank would get none, or the
+  /// message of refuse().
   particles::Decomposition<D>& decompose(const Ranks& ranks, std::size_t particles);
+  /// decompose() throws InputError(message) (`FILE:LINE: key: what`): a fluid that cannot run
+  /// decomposed; an empty message: none.
+  void refuse(std::string message) { refusal_ = std::move(message); }
   bool decomposed() const { return ranks_ != nullptr; }
   /// A count over every rank when decomposed (exact: a sum of integers below 2^53).
   std::size_t global(std::size_t local) const;
@@ -66,6 +70,7 @@ private:
 
   std::unique_ptr<particles::Decomposition<D>> hook_;
   const Ranks* ranks_ = nullptr;
+  std::string refusal_;
   std::size_t k_ = 0;
   std::vector<double> packed_, all_, sorted_; // this rank's rows; every rank's; columns (rank 0)
   std::vector<std::size_t> order_;            // all_'s rows in id order
