@@ -1,5 +1,7 @@
 #include "decomposed_particles.hpp"
 
+#include "fsi/core/error.hpp"
+
 #include <algorithm>
 
 namespace fsi::app {
@@ -7,6 +9,7 @@ namespace fsi::app {
 template <int D>
 particles::Decomposition<D>& DecomposedParticles<D>::decompose(const Ranks& ranks,
                                                                std::size_t particles) {
+  if (!refusal_.empty()) throw InputError(refusal_);
   hook_ = ranks.particle_decomposition<D>(particles);
   ranks_ = &ranks;
   own_rows_ = writes_collectively(ranks);

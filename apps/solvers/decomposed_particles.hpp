@@ -22,8 +22,12 @@ namespace fsi::app {
 template <int D> class DecomposedParticles {
 public:
   /// A new hook over `ranks` for a fluid of `particles` particles (every rank built the whole
-  /// fluid); the caller hands it to the fluid. InputError if some rank would get none.
+  /// fluid); the caller hands it to the fluid. InputError if some rank would get none, or the
+  /// message of refuse().
   particles::Decomposition<D>& decompose(const Ranks& ranks, std::size_t particles);
+  /// decompose() throws InputError(message) (`FILE:LINE: key: what`): a fluid that cannot run
+  /// decomposed; an empty message: none.
+  void refuse(std::string message) { refusal_ = std::move(message); }
   bool decomposed() const { return ranks_ != nullptr; }
   /// A count over every rank when decomposed (exact: a sum of integers below 2^53).
   std::size_t global(std::size_t local) const;
@@ -88,6 +92,7 @@ private:
   std::vector<std::size_t> places_; // place_rows: sorted_'s rows' places
   std::vector<double> send_;        // to_blocks: rows with their places, by destination
   std::vector<int> counts_;         // to_blocks: values sent to each rank
+  std::string refusal_;
   std::size_t k_ = 0;
   std::vector<double> packed_, all_, sorted_; // this rank's rows; every rank's; columns (rank 0)
   std::vector<std::size_t> order_;            // all_'s rows in id order

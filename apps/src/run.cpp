@@ -160,8 +160,10 @@ RunResult run_scene(const Scene& scene, std::vector<std::unique_ptr<Model>>& mod
     for (auto& m : models) try {
         if (!m->decompose(ranks)) throw InputError("a part of it cannot run under mpirun");
       } catch (const InputError& e) {
+        const std::string what = e.what();
+        if (what.rfind(scene.path.string() + ":", 0) == 0) throw; // FILE:LINE: key: what
         const auto& named = options.restart.empty() ? scene.path : options.restart;
-        throw InputError(named.string() + ": " + e.what());
+        throw InputError(named.string() + ": " + what);
       }
   const auto start = std::chrono::system_clock::now();
   const auto wall_start = std::chrono::steady_clock::now();

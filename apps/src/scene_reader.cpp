@@ -188,8 +188,12 @@ std::string Section::location(const std::string& key) const {
 }
 
 void Section::fail(const std::string& key, const std::string& what) const {
+  throw InputError(message(key, what));
+}
+
+std::string Section::message(const std::string& key, const std::string& what) const {
   const std::string name = key_path(key);
-  throw InputError(location(key) + ": " + (name.empty() ? "scene" : name) + ": " + what);
+  return location(key) + ": " + (name.empty() ? "scene" : name) + ": " + what;
 }
 
 namespace {

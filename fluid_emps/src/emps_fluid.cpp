@@ -72,10 +72,11 @@ BasicEmpsFluid<D>::BasicEmpsFluid(const Options& options, const std::vector<Vec>
 }
 
 SpaceWalls::SpaceWalls(const FluidOptions3& options, double n0, const erp::TriangleWallSet& walls,
-                       const Particles3& particles, const particles::BasicCellGrid<3>& grid)
+                       bool moving, const Particles3& particles,
+                       const particles::BasicCellGrid<3>& grid)
     : locator(walls, options.r_e()), before(walls), before_locator(before, options.r_e()),
       terms(options, n0, particles, grid, hits, convex), corner_faces(options.wall.corner_faces),
-      convex_corners(options.wall.convex_corners) {
+      convex_corners(options.wall.convex_corners), moving(moving) {
   // Not in 3-D yet: the two 2-D-only wall options are refused, not ignored.
   if (options.wall.contact.model == WallContact::viscous)
     throw InputError("fluid.wall_contact: 'viscous' is not available in 3-D yet");
@@ -83,18 +84,8 @@ SpaceWalls::SpaceWalls(const FluidOptions3& options, double n0, const erp::Trian
     throw InputError("fluid.wall_pressure: 'neighbours' is not available in 3-D yet");
 }
 
-namespace {
-bool same_nodes(const erp::TriangleWallNodes& a, const erp::TriangleWallNodes& b) {
-  return a.x == b.x && a.v == b.v && a.a == b.a;
-}
-} // namespace
-
-const erp::TriangleLocator& SpaceWalls::at_step_start() const {
-  return same_nodes(locator.walls().nodes(), before.nodes()) ? locator : before_locator;
-}
-
 void SpaceWalls::set_step_start(const erp::TriangleWallNodes& nodes) {
-  if (same_nodes(nodes, before.nodes())) return; // static walls: nothing to refit
+  if (!moving) return;
   before.nodes() = nodes;
   before.update();
   before_locator.update();
@@ -102,8 +93,9 @@ void SpaceWalls::set_step_start(const erp::TriangleWallNodes& nodes) {
 
 template <int D>
 BasicEmpsFluid<D>::BasicEmpsFluid(const Options& options, const std::vector<Vec>& positions,
-                                  const erp::TriangleWallSet& walls) requires(D == 3)
-    : options_(validated(options)), walls_(options_, n0_, walls, particles_, grid_) {
+                                  const erp::TriangleWallSet& walls,
+                                  bool walls_move) requires(D == 3)
+    : options_(validated(options)), walls_(options_, n0_, walls, walls_move, particles_, grid_) {
   start(positions);
 }
 
@@ -217,7 +209,7 @@ template <int D> void BasicEmpsFluid<D>::advance(double t, double dt) {
     Timer timer(times_.walls);
     if constexpr (D == 2)
       walls_.locator->update();
-    else
+    else if (walls_.moving)
       walls_.locator.update();
   }
   const Vec g = options_.gravity;
@@ -364,7 +356,7 @@ template <int D> double BasicEmpsFluid<D>::stable_dt(double courant) const {
 
 template BasicEmpsFluid<2>::BasicEmpsFluid(const Options&, const std::vector<Vec>&, erp::WallSet&);
 template BasicEmpsFluid<3>::BasicEmpsFluid(const Options&, const std::vector<Vec>&,
-                                           const erp::TriangleWallSet&);
+                                           const erp::TriangleWallSet&, bool);
 template void BasicEmpsFluid<2>::advance(double, double);
 template void BasicEmpsFluid<3>::advance(double, double);
 template void BasicEmpsFluid<2>::decompose(particles::Decomposition<2>&);

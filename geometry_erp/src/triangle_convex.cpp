@@ -23,24 +23,50 @@ namespace {
 bool behind_plane(const TriangleGeometry& g, const Vec3& x, const Vec3& n, double tol) {
   return (g.a - x).dot(n) <= tol && (g.b - x).dot(n) <= tol && (g.c - x).dot(n) <= tol;
 }
+
+/// g (normal n) is a convex face of g0 (normal n0): it turns by more than 30 degrees, lies behind
+/// g0's plane and g0 behind its own.
+bool convex_pair(const TriangleGeometry& g0, const Vec3& n0, const TriangleGeometry& g,
+                 const Vec3& n, double tol) {
+  return n0.dot(n) < corner_face_max_cos && behind_plane(g, g0.a, n0, tol) &&
+         behind_plane(g0, g.a, n, tol);
+}
 } // namespace
+
+bool TriangleLocator::find_convex_edge() const {
+  // convex_faces pairs the nearest triangle with triangles within r_e of the same point: boxes
+  // within 2 r_e of each other, listed by the cells overlapping the grown box.
+  const double tol = on_wall_tolerance * r_e_;
+  const Vec3 reach = Vec3::Constant(2.0 * r_e_);
+  std::vector<int> near;
+  for (std::size_t t = 0; t < boxes_.size(); ++t) {
+    grid_.overlapping(boxes_[t].lo - reach, boxes_[t].hi + reach, near);
+    const TriangleGeometry g0 = geometry(t);
+    const Vec3& n0 = walls_->face_normal(g0.id);
+    for (const int q : near)
+      if (q != g0.id &&
+          convex_pair(g0, n0, geometry(static_cast<std::size_t>(q)), walls_->face_normal(q), tol))
+        return true;
+  }
+  return false;
+}
 
 void TriangleLocator::convex_faces(std::span<const double> x, std::span<const double> y,
                                    std::span<const double> z, const TriangleHits& nearest,
                                    ConvexFaces& convex) const {
   const std::size_t n = x.size();
   convex.resize(n);
+  if (!has_convex_edges_) { // no pair of triangles to take: no convex face anywhere
+    std::fill(convex.count.begin(), convex.count.end(), 0);
+    return;
+  }
   const double tol = on_wall_tolerance * r_e_;
   parallel_for_balanced(n, [&](std::size_t i) {
     convex.count[i] = 0;
     const int t0 = nearest.triangle[i];
     if (t0 < 0) return;
     const Vec3 p(x[i], y[i], z[i]);
-    const auto& abc = walls_->triangles().node[static_cast<std::size_t>(t0)];
-    const auto& nodes = walls_->nodes().x;
-    const TriangleGeometry g0{nodes[static_cast<std::size_t>(abc[0])],
-                              nodes[static_cast<std::size_t>(abc[1])],
-                              nodes[static_cast<std::size_t>(abc[2])], t0};
+    const TriangleGeometry g0 = geometry(static_cast<std::size_t>(t0));
     std::array<Vec3, ConvexFaces::max_planes> normals;
     normals[0] = walls_->face_normal(t0);
     convex.n[0][i] = normals[0];
@@ -53,10 +79,9 @@ void TriangleLocator::convex_faces(std::span<const double> x, std::span<const do
       for_each_near(p, [&](const TriangleGeometry& g) {
         const Vec3& nt = walls_->face_normal(g.id);
         const bool turned =
-            std::all_of(normals.begin(), normals.begin() + count,
+            std::all_of(normals.begin() + 1, normals.begin() + count,
                         [&](const Vec3& m) { return m.dot(nt) < corner_face_max_cos; });
-        if (!turned || !behind_plane(g, g0.a, normals[0], tol) || !behind_plane(g0, g.a, nt, tol))
-          return;
+        if (!turned || !convex_pair(g0, normals[0], g, nt, tol)) return;
         const double d2 = (p - triangle_point(closest_on_triangle(p, g.a, g.b, g.c), g.a, g.b, g.c))
                               .squaredNorm();
         if (d2 < best || (d2 == best && best_id >= 0 && g.id < best_id))

@@ -27,14 +27,15 @@ TriangleLocator::TriangleLocator(const TriangleWallSet& walls, double r_e)
   update();
 }
 
+TriangleGeometry TriangleLocator::geometry(std::size_t t) const {
+  const auto& abc = walls_->triangles().node[t];
+  const auto& x = walls_->nodes().x;
+  return TriangleGeometry{x[static_cast<std::size_t>(abc[0])], x[static_cast<std::size_t>(abc[1])],
+                          x[static_cast<std::size_t>(abc[2])], static_cast<int>(t)};
+}
+
 void TriangleLocator::update() {
   const auto& tri = walls_->triangles().node;
-  const auto& x = walls_->nodes().x;
-  const auto geometry = [&](std::size_t t) {
-    return TriangleGeometry{x[static_cast<std::size_t>(tri[t][0])],
-                            x[static_cast<std::size_t>(tri[t][1])],
-                            x[static_cast<std::size_t>(tri[t][2])], static_cast<int>(t)};
-  };
   // A triangle with a non-finite node is binned nowhere (the run's finite-value guard stops it).
   boxes_.resize(tri.size());
   for (std::size_t t = 0; t < tri.size(); ++t) {
@@ -50,6 +51,7 @@ void TriangleLocator::update() {
   cell_triangle_.resize(entry.size());
   for (std::size_t k = 0; k < entry.size(); ++k)
     cell_triangle_[k] = geometry(static_cast<std::size_t>(entry[k]));
+  has_convex_edges_ = find_convex_edge();
 }
 
 void TriangleLocator::locate(const QueryPoints3& points, TriangleHits& hits) const {

@@ -370,5 +370,17 @@ TEST_CASE("apps: a 3-D EMPS fluid region given as a closed surface (fluid.region
                       Catch::Contains("fluid.domain: the region_file surface reaches outside the "
                                       "domain"));
   }
+  SECTION("a surface outside the tank, a box or tank_file's bounding box, is refused") {
+    // Moved to z = 0.19 the octahedron reaches z = 0.27, past both tanks' z = 0.2.
+    const std::string out = octahedron_stl("test_emps_plugin_3d_out.stl", {0.1, 0.3, 0.19}, R);
+    const std::string domain = "fluid.domain={min: [-0.1, -0.1, -0.1], max: [0.4, 0.6, 0.4]}";
+    for (const std::string& scene : {kScene, kStlScene}) {
+      INFO(scene);
+      CHECK_NOTHROW(load_scene(scene, {"fluid.region_file=" + stl, domain}));
+      CHECK_THROWS_WITH(load_scene(scene, {"fluid.region_file=" + out, domain}),
+                        Catch::Contains("fluid.region_file: the surface reaches outside the tank"));
+    }
+    std::filesystem::remove(out);
+  }
   std::filesystem::remove(stl);
 }

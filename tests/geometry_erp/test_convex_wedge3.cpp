@@ -126,3 +126,30 @@ TEST_CASE("convex_faces: none beside a face or in a tank's concave corner, one b
   CHECK(convex.n[1][1].isApprox(Vec3::UnitY()));
   CHECK(std::abs(convex.s[1][1] + 0.005) < 1e-15);
 }
+
+TEST_CASE("has_convex_edges: none in a box tank, some with a box obstacle, found again on update",
+          "[convex3d]") {
+  const double r_e = 0.031;
+  TriangleWallSet tank;
+  add_box_tank(tank, Vec3::Zero(), Vec3::Constant(0.2), false, 0);
+  add_box_tank(tank, Vec3::Constant(0.3), Vec3::Constant(0.4), true, 0); // open top: no lid
+  CHECK_FALSE(TriangleLocator(tank, r_e).has_convex_edges());
+  TriangleWallSet box;
+  add_box_obstacle(box, Vec3::Constant(0.04), Vec3::Constant(0.12), 1);
+  TriangleLocator locator(box, r_e);
+  CHECK(locator.has_convex_edges());
+  // Mirrored through x = 0 the box's triangles turn their normals inwards: a closed tank.
+  for (Vec3& x : box.nodes().x) x[0] = -x[0];
+  box.update();
+  locator.update();
+  CHECK_FALSE(locator.has_convex_edges());
+  // Without convex edges no point gets a convex face.
+  const std::vector<double> px = {-0.045, -0.115}, py = {0.045, 0.08}, pz = {0.045, 0.08};
+  TriangleHits hits;
+  locator.query(px, py, pz, hits);
+  ConvexFaces convex;
+  locator.convex_faces(px, py, pz, hits, convex);
+  CHECK(hits.triangle[0] >= 0);
+  CHECK(convex.count[0] == 0);
+  CHECK(convex.count[1] == 0);
+}

@@ -264,8 +264,19 @@ TEST_CASE("bad input under mpirun: exit 2, the message once", "[mpi]") {
                  "/data/scenes/poiseuille_channel_sph.yaml --out " + out.string());
   INFO(periodic.output);
   CHECK(periodic.status == 2);
+  // FILE:LINE: key: what, the line of the key that makes it periodic (inflow, line 35).
+  CHECK(occurrences(periodic.output, "poiseuille_channel_sph.yaml:35: fluid.inflow: not yet "
+                                     "supported under mpirun") == 1);
   CHECK(occurrences(periodic.output, "a periodic fluid cannot be decomposed") == 1);
   CHECK(!fs::exists(out / "fields.h5")); // refused before any computation
+  // The 3-D slab periodic along z: the same at periodic_z's line.
+  const Outcome slab = fsi(2, "run " + std::string(FSI_SOURCE_DIR) +
+                                  "/data/scenes/dam_break_slab_sph_3d.yaml --out " + out.string());
+  INFO(slab.output);
+  CHECK(slab.status == 2);
+  CHECK(occurrences(slab.output, "dam_break_slab_sph_3d.yaml:26: fluid.periodic_z: not yet "
+                                 "supported under mpirun") == 1);
+  CHECK(!fs::exists(out / "fields.h5"));
 }
 
 namespace {

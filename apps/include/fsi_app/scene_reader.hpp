@@ -109,6 +109,8 @@ public:
   void finish() const;
   /// Throws the one-line error for `key` of this block (or the block itself if key is empty).
   [[noreturn]] void fail(const std::string& key, const std::string& what) const;
+  /// That one-line error, `FILE:LINE: key: what`, for a refusal found later (e.g. under mpirun).
+  std::string message(const std::string& key, const std::string& what) const;
 
   const std::string& path() const { return path_; }
   int line() const { return key_line_; }

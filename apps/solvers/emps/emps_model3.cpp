@@ -3,7 +3,6 @@
 #include "emps/emps_report.hpp"
 #include "emps/tank_cover.hpp"
 
-#include "fluid_sph/sph_fluid.hpp"
 #include "fsi/core/error.hpp"
 #include "fsi/core/format.hpp"
 #include "fsi_app/wall_motion.hpp"
@@ -138,13 +137,11 @@ void check3(const Scene& scene, Section& s, std::vector<Section>& probes) {
   check_box_regions(scene, s, probes, f.regions, f.tank, o.domain_min, o.domain_max);
   if (!f.region_surface) return;
   std::optional<std::pair<Vec3, Vec3>> tank; // the tank's box, or the box around tank_file's
-  if (f.tank) tank = {f.tank->min, f.tank->max};
-  if (f.tank_surface) {
-    const auto& t = f.tank_surface->points;
-    tank = {t.front(), t.front()};
-    for (const Vec3& q : t)
-      tank->first = tank->first.cwiseMin(q), tank->second = tank->second.cwiseMax(q);
-  }
+  if (f.tank || f.tank_surface)
+    tank = box_domain(std::nullopt, f.tank,
+                      f.tank_surface ? std::span<const Vec3>(f.tank_surface->points)
+                                     : std::span<const Vec3>(),
+                      {}, 0.0);
   for (const Vec3& p : f.region_surface->points) {
     if (!inside_box(p, o.domain_min, o.domain_max))
       s.fail("domain", "the region_file surface reaches outside the domain");
@@ -234,7 +231,10 @@ EmpsModel3::EmpsModel3(const Scene& scene, const std::vector<InterfaceMesh3>& in
   if (tank_motion_) tank_motion_->move(*walls_, 0.0);
   locator_ = std::make_unique<erp::TriangleLocator>(*walls_, f.options.r_e());
   try {
-    fluid_ = std::make_unique<emps::EmpsFluid3>(fluid_options3(scene), positions, *walls_);
+    // The walls move with fluid.tank_motion or the structures' interfaces, else never.
+    const bool walls_move = tank_motion_.has_value() || !interfaces_.empty();
+    fluid_ =
+        std::make_unique<emps::EmpsFluid3>(fluid_options3(scene), positions, *walls_, walls_move);
   } catch (const InputError& e) {
     fail_at(scene, scene.fluid->line, "fluid", e.what());
   }

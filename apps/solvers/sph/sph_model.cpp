@@ -51,6 +51,7 @@ SphModel::SphModel(const Scene& scene, const std::vector<InterfaceMesh>& interfa
                    const std::vector<Polygon>& solid)
     : probes_(scene.output.probes) {
   const SphSpec& f = scene.fluid->as<SphSpec>();
+  ranks_.refuse(f.periodic);
   std::vector<sph::WallPolyline> walls;
   for (std::size_t w = 0; w < scene.walls.size(); ++w) {
     walls.push_back({scene.walls[w].polyline, scene.walls[w].closed, static_cast<int>(w)});

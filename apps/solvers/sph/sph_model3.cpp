@@ -143,6 +143,7 @@ void validate3(const Scene& scene, const std::vector<InterfaceMesh3>& interfaces
 SphModel3::SphModel3(const Scene& scene, const std::vector<InterfaceMesh3>& interfaces)
     : boundaries_(boundaries_of(scene, interfaces)), probes_(scene.output.probes) {
   const SphSpec3& f = scene.fluid->as<SphSpec3>();
+  ranks_.refuse(f.periodic);
   const std::vector<Vec3> positions = checked_fluid(scene, boundaries_);
   initial_count_ = positions.size();
   // The interfaces' points (group 1 + j) after the tank's dummies (group 0); the guard's exact

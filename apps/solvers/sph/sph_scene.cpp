@@ -62,6 +62,7 @@ std::shared_ptr<const SolverSpec> read_sph(Section& s) {
     inflow.y_min = in->real("y_min", Range::any(), "lower channel wall, m");
     inflow.y_max = in->real("y_max", Range::any(), "upper channel wall, m");
     in->finish();
+    f.periodic = periodic_refusal(s, "inflow");
   }
   f.area = read_particle_area(s, f.options.dp);
   if (!doc) {

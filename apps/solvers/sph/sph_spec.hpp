@@ -19,7 +19,8 @@ struct SphSpec final : SolverSpec {
   int interface_layers = 4;            ///< rows of boundary points behind a structure's interface
   double interface_spacing = 1.0;      ///< their lattice spacing, in l0
   bool interface_acceleration = false; ///< the interface's mean acceleration in eq. 16
-  ParticleArea area; ///< without a domain: walls and regions with a margin of 8 l0
+  ParticleArea area;    ///< without a domain: walls and regions with a margin of 8 l0
+  std::string periodic; ///< with inflow: `FILE:LINE: fluid.inflow: what`, refusing mpirun
 };
 
 /// An axis-aligned box [min, max], m, and the line of its block.
@@ -32,6 +33,7 @@ struct SphSpec3 final : SolverSpec {
   std::vector<Box3> regions;  ///< boxes filled at spacing l0 (l0/2 from their faces)
   std::optional<Box3> domain; ///< particles leaving it are removed; absent: tank and regions
   bool periodic_z = false;    ///< the fluid and the tank wrap along z over the tank's depth
+  std::string periodic;       ///< with periodic_z: `FILE:LINE: fluid.periodic_z: what` (mpirun)
 };
 
 /// Reads the keys of the fluid block (type excepted) into an SphSpec (in a 3-D scene, an
@@ -46,5 +48,7 @@ std::shared_ptr<const SolverSpec> read_sph3(Section& s);
 std::optional<Box3> read_tank(Section& s);
 /// The key `periodic_z` (3-D): the fluid and the tank wrap along z (documented in 2-D too).
 bool read_periodic_z(Section& s);
+/// The refusal of a periodic fluid under mpirun, naming `key` (the cause of the wrap).
+std::string periodic_refusal(const Section& s, const std::string& key);
 
 } // namespace fsi::app::sph_plugin

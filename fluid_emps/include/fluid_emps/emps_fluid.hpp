@@ -118,21 +118,19 @@ struct TriangleForces {
 };
 using WallForces3 = std::array<TriangleForces, max_faces3>;
 
-/// The 3-D fluid's walls: triangles (static or moved by the caller), their index, the hits of up to
-/// three faces (the nearest triangle, the other planes of a concave edge or corner) and the wall
-/// terms.
+/// The 3-D fluid's walls: triangles (static or moved by the caller, as `moving` says from the
+/// start), their index, the hits of up to three faces (the nearest triangle, the other planes of
+/// a concave edge or corner) and the wall terms.
 struct SpaceWalls {
   SpaceWalls(const FluidOptions3& options, double n0, const erp::TriangleWallSet& walls,
-             const Particles3& particles, const particles::BasicCellGrid<3>& grid);
+             bool moving, const Particles3& particles, const particles::BasicCellGrid<3>& grid);
   SpaceWalls(const SpaceWalls&) = delete; // before_locator points at before
   SpaceWalls& operator=(const SpaceWalls&) = delete;
   /// The walls as the step starts (t^n), for the viscous stage at x^n (2-D reuses the last x*
-  /// hits, taken with the walls at t^n): `locator` when the caller's walls have not moved since,
-  /// else `before_locator`.
-  const erp::TriangleLocator& at_step_start() const;
-  /// At the end of a step: keeps the caller's walls (now at t^n of the next step) in `before`.
-  void keep_step_start();
-  /// Sets `before` to `nodes` (restore, a checkpoint) and refits its index.
+  /// hits, taken with the walls at t^n): `before_locator` when the walls move, else `locator`.
+  const erp::TriangleLocator& at_step_start() const { return moving ? before_locator : locator; }
+  /// Moving walls: sets `before` to `nodes` (the next step's t^n, restore, a checkpoint) and
+  /// refits its index; static walls: nothing (`before` is the walls).
   void set_step_start(const erp::TriangleWallNodes& nodes);
   erp::TriangleLocator locator;
   erp::TriangleWallSet before; ///< a copy of the caller's walls at t^n
@@ -142,6 +140,7 @@ struct SpaceWalls {
   SpaceWallTerms terms;
   WallForces3 forces;
   bool corner_faces, convex_corners;
+  bool moving; ///< the caller moves the walls' nodes (refit every step), else never
 };
 
 template <int D> using EmpsWalls = std::conditional_t<D == 2, PlaneWalls, SpaceWalls>;
@@ -157,9 +156,10 @@ public:
                  erp::WallSet& walls) requires(D == 2);
   /// With triangle walls (3-D), which must outlive the fluid; a caller that moves their nodes
   /// calls walls.update() before advance() (which refits the triangle index), as the coupled
-  /// interfaces do (apps: TriangleAdapter). An empty set: no walls.
+  /// interfaces do (apps: TriangleAdapter). An empty set: no walls. `walls_move` false: the
+  /// caller never moves them (the fluid neither refits their index nor keeps them at t^n).
   BasicEmpsFluid(const Options& options, const std::vector<Vec>& positions,
-                 const erp::TriangleWallSet& walls) requires(D == 3);
+                 const erp::TriangleWallSet& walls, bool walls_move = true) requires(D == 3);
   /// Initial velocities, one per particle in the current order (before the first advance()).
   void set_velocities(const std::vector<Vec>& v);
   ~BasicEmpsFluid() = default;

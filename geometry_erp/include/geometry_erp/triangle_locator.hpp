@@ -32,7 +32,9 @@
 // nearest triangle's and from each one taken before (the opposite face of a box thinner than r_e
 // included), lying behind the nearest triangle's plane while that triangle lies behind theirs
 // (both to on_wall_tolerance r_e): the other faces of a convex edge, corner or small box. A
-// concave edge's other face is in front of the plane, a coplanar piece does not turn.
+// concave edge's other face is in front of the plane, a coplanar piece does not turn. Whether any
+// pair of triangles can be such faces is found once per update() (has_convex_edges): a tank
+// without convex edges skips the per-point search.
 //
 // These are new types rather than WallHits<D>: the 2-D record carries one segment coordinate t
 // and the corner faces; a triangle needs barycentric coordinates and a feature.
@@ -85,7 +87,7 @@ struct TriangleGeometry {
 class TriangleLocator {
 public:
   TriangleLocator(const TriangleWallSet& walls, double r_e);
-  /// Rebuilds the grid for the current node positions.
+  /// Rebuilds the grid for the current node positions, and has_convex_edges().
   void update();
   void query(std::span<const Vec3> x, TriangleHits& hits) const { locate(QueryPoints3(x), hits); }
   /// Same with the coordinates as separate arrays of one size.
@@ -101,12 +103,19 @@ public:
   /// The convex faces (see above) of each point, `nearest` being its nearest-triangle hits.
   void convex_faces(std::span<const double> x, std::span<const double> y, std::span<const double> z,
                     const TriangleHits& nearest, ConvexFaces& convex) const;
+  /// Some pair of triangles within 2 r_e of each other makes a convex edge or corner (as
+  /// convex_faces takes them); without one convex_faces finds none at any point.
+  bool has_convex_edges() const { return has_convex_edges_; }
   double r_e() const { return r_e_; }
   double cell_size() const { return grid_.cell_size(); }
   const TriangleWallSet& walls() const { return *walls_; }
 
 private:
   void locate(const QueryPoints3& points, TriangleHits& hits) const;
+  /// Triangle t with its node positions now.
+  TriangleGeometry geometry(std::size_t t) const;
+  /// Whether some pair of triangles makes a convex edge or corner (the search of update()).
+  bool find_convex_edge() const;
   /// The nearest corner face of point p that turns from each of `normals` by more than 30 degrees.
   void corner_face(const Vec3& p, std::span<const Vec3> normals, TriangleHits& face,
                    std::size_t i) const;
@@ -120,6 +129,7 @@ private:
   std::vector<particles::Box3d> boxes_;         // the triangles' bounding boxes
   particles::BoxGrid grid_;                     // the triangles of each cell
   std::vector<TriangleGeometry> cell_triangle_; // grid_.entries() with their geometry
+  bool has_convex_edges_ = true;
 };
 
 template <class F> void TriangleLocator::for_each_near(const Vec3& p, F&& f) const {
