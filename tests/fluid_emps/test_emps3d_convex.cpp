@@ -17,10 +17,10 @@ using namespace fsi;
 namespace {
 
 /// Per particle within r_e of the box (and beyond r_e of the tank): the number of its convex
-/// faces (0 a face, 1 an edge, 2 a corner), pnd minus the reference, eq. 10's sum at uniform
-/// pressure P (fluid plus wall terms; zero for the full lattice), face 0's mirror term and n_wall,
-/// and the half-space's term there, -(3/n0) 2 P wall_gradient_sum(r) n_wall, where its nearest
-/// point lies inside a face (not on an edge or vertex; else -inf).
+/// faces (0 a face, 1 an edge, 2 a corner; its one convex piece's), pnd minus the reference, eq.
+/// 10's sum at uniform pressure P (fluid plus wall terms; zero for the full lattice), the wall term
+/// and face 0's n_wall, and the half-space's term there, -(3/n0) 2 P wall_gradient_sum(r) n_wall,
+/// where its nearest point lies inside a face (not on an edge or vertex; else -inf).
 struct Sample {
   int convex;
   double pnd_error;
@@ -79,12 +79,15 @@ Scene box_in_tank(bool convex_corners) {
       fluid += 2.0 * s.P * w.inside(std::sqrt(r2)) / r2 * d;
     }
     for (const Vec3& q : solid) solid_pnd += w((q - x[i]).norm());
-    const Vec3 mirror = terms.mirror_pressure(i, 0);
+    Vec3 mirror = Vec3::Zero(); // the wall term (one face, no contact at rest)
+    std::array<Vec3, emps::max_faces3> per_face;
+    terms.add_pressure(i, 0.0005, mirror, per_face);
     const double half_space =
         hits[0].feature[i] == TriangleFeature::face
             ? -3.0 / s.n0 * 2.0 * s.P * erp::wall_gradient_sum<3>(hits[0].r[i], l0, r_e, w)
             : -std::numeric_limits<double>::infinity();
-    s.samples.push_back({convex.count[i], terms.pnd(i, fluid_pnd) - (fluid_pnd + solid_pnd),
+    const int faces = convex.pieces[i] == 0 ? 0 : convex.end[0][i] - 1;
+    s.samples.push_back({faces, terms.pnd(i, fluid_pnd) - (fluid_pnd + solid_pnd),
                          3.0 / s.n0 * fluid + mirror, mirror, hits[0].n_wall[i], half_space});
   }
   return s;

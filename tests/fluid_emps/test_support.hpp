@@ -42,7 +42,7 @@ inline void query_faces(const erp::TriangleLocator& locator, const Particles3& p
                         erp::ConvexFaces& convex) {
   locator.query(p.position[0], p.position[1], p.position[2], hits[0]);
   locator.corner_faces(p.position[0], p.position[1], p.position[2], hits);
-  locator.convex_faces(p.position[0], p.position[1], p.position[2], hits[0], convex);
+  locator.convex_faces(p.position[0], p.position[1], p.position[2], hits, convex);
 }
 
 template <int D> VecD<D> momentum(const BasicParticles<D>& p) {
