@@ -53,31 +53,18 @@ Scene box_in_tank(bool convex_corners) {
   };
   std::vector<Vec3> x, solid; // the fluid lattice and the reference's wall particles
   for (const Vec3& q : emps::test::block(18, 18, 18, l0)) (inside(q) ? solid : x).push_back(q);
-  emps::Particles3 p;
-  p.resize(x.size());
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    for (int a = 0; a < 3; ++a) p.position[a][i] = x[i][a];
-    p.p[i] = s.P;
-  }
-  particles::BasicCellGrid<3> grid(o.domain_min, o.domain_max, 1.1 * r_e);
-  grid.bin(p.position.coords(), p.size());
   const erp::TriangleLocator locator(walls, r_e);
-  emps::SpaceHits hits;
-  erp::ConvexFaces convex;
-  emps::test::query_faces(locator, p, hits, convex);
-  const emps::SpaceWallTerms terms(o, s.n0, p, grid, hits, convex);
+  const emps::test::AtRest rest(o, x, s.P, locator);
+  const emps::SpaceWallTerms terms = rest.terms(o, s.n0);
+  const emps::SpaceHits& hits = rest.hits;
+  const erp::ConvexFaces& convex = rest.convex;
   for (std::size_t i = 0; i < x.size(); ++i) {
     const Vec3 gap = (lo - x[i]).cwiseMax(x[i] - hi).cwiseMax(0.0);
     if (gap.norm() >= r_e || emps::test::walls_near(x[i], L, r_e) > 0) continue;
-    double fluid_pnd = 0.0, solid_pnd = 0.0;
-    Vec3 fluid = Vec3::Zero();
-    for (std::size_t j = 0; j < x.size(); ++j) {
-      const Vec3 d = x[j] - x[i];
-      const double r2 = d.squaredNorm();
-      if (j == i || r2 >= r_e * r_e) continue;
-      fluid_pnd += w(std::sqrt(r2));
-      fluid += 2.0 * s.P * w.inside(std::sqrt(r2)) / r2 * d;
-    }
+    const emps::test::DirectSums direct = emps::test::direct_sums(x, i, r_e, w, s.P);
+    const double fluid_pnd = direct.pnd;
+    const Vec3 fluid = direct.gradient;
+    double solid_pnd = 0.0;
     for (const Vec3& q : solid) solid_pnd += w((q - x[i]).norm());
     Vec3 mirror = Vec3::Zero(); // the wall term (one face, no contact at rest)
     std::array<Vec3, emps::max_faces3> per_face;

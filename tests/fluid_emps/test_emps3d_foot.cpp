@@ -84,19 +84,11 @@ Scene box_on_floor(bool convex_corners) {
         const Vec3 q = l0 * Vec3(i + 0.5, j + 0.5, k + 0.5);
         (in_tank(q) && !in_box(q) ? x : solid).push_back(q);
       }
-  emps::Particles3 p;
-  p.resize(x.size());
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    for (int a = 0; a < 3; ++a) p.position[a][i] = x[i][a];
-    p.p[i] = s.P;
-  }
-  particles::BasicCellGrid<3> grid(o.domain_min, o.domain_max, 1.1 * r_e);
-  grid.bin(p.position.coords(), p.size());
   const erp::TriangleLocator locator(walls, r_e);
-  emps::SpaceHits hits;
-  erp::ConvexFaces convex;
-  emps::test::query_faces(locator, p, hits, convex);
-  const emps::SpaceWallTerms terms(o, s.n0, p, grid, hits, convex);
+  const emps::test::AtRest rest(o, x, s.P, locator);
+  const emps::SpaceWallTerms terms = rest.terms(o, s.n0);
+  const emps::SpaceHits& hits = rest.hits;
+  const erp::ConvexFaces& convex = rest.convex;
   for (std::size_t i = 0; i < x.size(); ++i) {
     const Vec3 nearest = x[i].cwiseMax(lo).cwiseMin(hi);
     const Vec3 gap = (lo - x[i]).cwiseMax(x[i] - hi).cwiseMax(0.0);
@@ -107,15 +99,10 @@ Scene box_on_floor(bool convex_corners) {
     const bool foot = x[i][1]<r_e, beyond_edge = gap[0]> 0.0 && gap[2] > 0.0;
     const Zone zone =
         foot ? (beyond_edge ? edge_foot : face_foot) : (beyond_edge ? edge_above : face_above);
-    double fluid_pnd = 0.0, solid_pnd = 0.0;
-    Vec3 fluid = Vec3::Zero();
-    for (std::size_t j = 0; j < x.size(); ++j) {
-      const Vec3 d = x[j] - x[i];
-      const double r2 = d.squaredNorm();
-      if (j == i || r2 >= r_e * r_e) continue;
-      fluid_pnd += w(std::sqrt(r2));
-      fluid += 2.0 * s.P * w.inside(std::sqrt(r2)) / r2 * d;
-    }
+    const emps::test::DirectSums direct = emps::test::direct_sums(x, i, r_e, w, s.P);
+    const double fluid_pnd = direct.pnd;
+    const Vec3 fluid = direct.gradient;
+    double solid_pnd = 0.0;
     for (const Vec3& q : solid) solid_pnd += w((q - x[i]).norm());
     Vec3 wall = Vec3::Zero();
     std::array<Vec3, emps::max_faces3> per_face;
