@@ -28,10 +28,7 @@ struct Sample {
   double half_space;
 };
 
-struct Scene {
-  double l0 = 0.01, P = 1000.0 * 9.81 * 0.18, n0 = 0.0;
-  std::vector<Sample> samples;
-};
+using Scene = emps::test::LatticeScene<Sample>;
 
 /// An 18 l0 cube tank holding a 4 l0 box at [7 l0, 11 l0]^3 (narrower than 2 r_e: every particle
 /// within r_e of it has convex faces, opposite ones included), the lattice l0/2 + k l0 outside

@@ -33,10 +33,7 @@ struct Sample {
   double pnd;
 };
 
-struct Scene {
-  double l0 = 0.01, P = 1000.0 * 9.81 * 0.18, n0 = 0.0;
-  std::vector<Sample> samples;
-};
+using Scene = emps::test::LatticeScene<Sample>;
 
 /// A 4 l0 box [7 l0, 11 l0] x [0, 4 l0] x [7 l0, 11 l0] standing on the floor y = 0 of an 18 l0
 /// cube tank: its top and four sides, normals out of it, no bottom (as scripts/tank_with_box_stl

@@ -70,6 +70,13 @@ struct AtRest {
   }
 };
 
+/// A lattice at rest under a uniform pressure P (the 3-D wall tests') and what a test samples on
+/// it.
+template <class Sample> struct LatticeScene {
+  double l0 = 0.01, P = 1000.0 * 9.81 * 0.18, n0 = 0.0;
+  std::vector<Sample> samples;
+};
+
 /// Eq. 9's sum over the points of x within r_e of x[i] (i left out) and eq. 10's geometric sum
 /// at a uniform pressure P, 2 P sum (x_j - x_i) w / r^2.
 struct DirectSums {
