@@ -180,7 +180,7 @@ template <int D> void BasicEmpsFluid<D>::query_walls([[maybe_unused]] bool step_
         std::fill(hits[k].triangle.begin(), hits[k].triangle.end(), -1);
       }
     }
-    if (walls_.convex_corners) locator.convex_faces(x, y, z, hits[0], walls_.convex);
+    if (walls_.convex_corners) locator.convex_faces(x, y, z, hits, walls_.convex);
   }
 }
 

@@ -128,19 +128,11 @@ template <int D> void BasicEmpsFluid<D>::pressure_gradient(double dt) {
         f.f_contact[i] = -V * contact[k];
         f.f_viscous[i] = visc;
       }
-    } else { // 3-D: each face's mirror pressure and contact terms (eqs. 25-27), the images
-             // behind two or three faces (edges, corners) once
+    } else { // 3-D: the wall terms over the faces (SpaceWallTerms::add_pressure)
       const VecSum<D> fluid = fluid_gradient(i, nullptr);
       for (int a = 0; a < D; ++a) grad[a] = c_grad * fluid[static_cast<std::size_t>(a)];
-      const Vec3 corner = walls_.terms.corner_mirror_pressure(i);
-      grad += corner;
-      std::array<Vec3, max_faces3> wall = split_corner_term(corner, walls_.hits, i);
-      for (std::size_t k = 0; k < max_faces3; ++k) {
-        if (walls_.hits[k].triangle[i] < 0) continue;
-        const Vec3 face = walls_.terms.mirror_pressure(i, k) + walls_.terms.contact(i, k, dt);
-        grad += face;
-        wall[k] += face;
-      }
+      std::array<Vec3, max_faces3> wall;
+      walls_.terms.add_pressure(i, dt, grad, wall);
       // eq. 52 without the viscous mirror term: f_wall = -V (R_ref <grad p>_i' + f_rep), per face
       for (std::size_t k = 0; k < max_faces3; ++k) {
         TriangleForces& f = walls_.forces[k];

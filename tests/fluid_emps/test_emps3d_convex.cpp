@@ -17,10 +17,10 @@ using namespace fsi;
 namespace {
 
 /// Per particle within r_e of the box (and beyond r_e of the tank): the number of its convex
-/// faces (0 a face, 1 an edge, 2 a corner), pnd minus the reference, eq. 10's sum at uniform
-/// pressure P (fluid plus wall terms; zero for the full lattice), face 0's mirror term and n_wall,
-/// and the half-space's term there, -(3/n0) 2 P wall_gradient_sum(r) n_wall, where its nearest
-/// point lies inside a face (not on an edge or vertex; else -inf).
+/// faces (0 a face, 1 an edge, 2 a corner; its one convex piece's), pnd minus the reference, eq.
+/// 10's sum at uniform pressure P (fluid plus wall terms; zero for the full lattice), the wall term
+/// and face 0's n_wall, and the half-space's term there, -(3/n0) 2 P wall_gradient_sum(r) n_wall,
+/// where its nearest point lies inside a face (not on an edge or vertex; else -inf).
 struct Sample {
   int convex;
   double pnd_error;
@@ -28,10 +28,7 @@ struct Sample {
   double half_space;
 };
 
-struct Scene {
-  double l0 = 0.01, P = 1000.0 * 9.81 * 0.18, n0 = 0.0;
-  std::vector<Sample> samples;
-};
+using Scene = emps::test::LatticeScene<Sample>;
 
 /// An 18 l0 cube tank holding a 4 l0 box at [7 l0, 11 l0]^3 (narrower than 2 r_e: every particle
 /// within r_e of it has convex faces, opposite ones included), the lattice l0/2 + k l0 outside
@@ -53,38 +50,28 @@ Scene box_in_tank(bool convex_corners) {
   };
   std::vector<Vec3> x, solid; // the fluid lattice and the reference's wall particles
   for (const Vec3& q : emps::test::block(18, 18, 18, l0)) (inside(q) ? solid : x).push_back(q);
-  emps::Particles3 p;
-  p.resize(x.size());
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    for (int a = 0; a < 3; ++a) p.position[a][i] = x[i][a];
-    p.p[i] = s.P;
-  }
-  particles::BasicCellGrid<3> grid(o.domain_min, o.domain_max, 1.1 * r_e);
-  grid.bin(p.position.coords(), p.size());
   const erp::TriangleLocator locator(walls, r_e);
-  emps::SpaceHits hits;
-  erp::ConvexFaces convex;
-  emps::test::query_faces(locator, p, hits, convex);
-  const emps::SpaceWallTerms terms(o, s.n0, p, grid, hits, convex);
+  const emps::test::AtRest rest(o, x, s.P, locator);
+  const emps::SpaceWallTerms terms = rest.terms(o, s.n0);
+  const emps::SpaceHits& hits = rest.hits;
+  const erp::ConvexFaces& convex = rest.convex;
   for (std::size_t i = 0; i < x.size(); ++i) {
     const Vec3 gap = (lo - x[i]).cwiseMax(x[i] - hi).cwiseMax(0.0);
     if (gap.norm() >= r_e || emps::test::walls_near(x[i], L, r_e) > 0) continue;
-    double fluid_pnd = 0.0, solid_pnd = 0.0;
-    Vec3 fluid = Vec3::Zero();
-    for (std::size_t j = 0; j < x.size(); ++j) {
-      const Vec3 d = x[j] - x[i];
-      const double r2 = d.squaredNorm();
-      if (j == i || r2 >= r_e * r_e) continue;
-      fluid_pnd += w(std::sqrt(r2));
-      fluid += 2.0 * s.P * w.inside(std::sqrt(r2)) / r2 * d;
-    }
+    const emps::test::DirectSums direct = emps::test::direct_sums(x, i, r_e, w, s.P);
+    const double fluid_pnd = direct.pnd;
+    const Vec3 fluid = direct.gradient;
+    double solid_pnd = 0.0;
     for (const Vec3& q : solid) solid_pnd += w((q - x[i]).norm());
-    const Vec3 mirror = terms.mirror_pressure(i, 0);
+    Vec3 mirror = Vec3::Zero(); // the wall term (one face, no contact at rest)
+    std::array<Vec3, emps::max_faces3> per_face;
+    terms.add_pressure(i, 0.0005, mirror, per_face);
     const double half_space =
         hits[0].feature[i] == TriangleFeature::face
             ? -3.0 / s.n0 * 2.0 * s.P * erp::wall_gradient_sum<3>(hits[0].r[i], l0, r_e, w)
             : -std::numeric_limits<double>::infinity();
-    s.samples.push_back({convex.count[i], terms.pnd(i, fluid_pnd) - (fluid_pnd + solid_pnd),
+    const int faces = convex.pieces[i] == 0 ? 0 : convex.end[0][i] - 1;
+    s.samples.push_back({faces, terms.pnd(i, fluid_pnd) - (fluid_pnd + solid_pnd),
                          3.0 / s.n0 * fluid + mirror, mirror, hits[0].n_wall[i], half_space});
   }
   return s;

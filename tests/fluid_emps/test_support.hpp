@@ -3,8 +3,10 @@
 // of the fluid-fluid terms, which are antisymmetric in pairs (eqs. 10, 11, the closing-pair
 // viscosity), so that without gravity and walls sum_i v_i changes by round-off only.
 #include "fluid_emps/emps_fluid.hpp"
+#include "fluid_emps/space_wall_terms.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace fsi::emps::test {
@@ -42,7 +44,56 @@ inline void query_faces(const erp::TriangleLocator& locator, const Particles3& p
                         erp::ConvexFaces& convex) {
   locator.query(p.position[0], p.position[1], p.position[2], hits[0]);
   locator.corner_faces(p.position[0], p.position[1], p.position[2], hits);
-  locator.convex_faces(p.position[0], p.position[1], p.position[2], hits[0], convex);
+  locator.convex_faces(p.position[0], p.position[1], p.position[2], hits, convex);
+}
+
+/// Lattice points x at rest under a uniform pressure P, binned, with the faces and convex pieces
+/// the step would query: what the 3-D wall terms are tested on (terms(), which refers to them).
+struct AtRest {
+  Particles3 p;
+  particles::BasicCellGrid<3> grid;
+  SpaceHits hits;
+  erp::ConvexFaces convex;
+  AtRest(const FluidOptions3& o, const std::vector<Vec3>& x, double P,
+         const erp::TriangleLocator& locator)
+      : grid(o.domain_min, o.domain_max, 1.1 * o.r_e()) {
+    p.resize(x.size());
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      for (int a = 0; a < 3; ++a) p.position[a][i] = x[i][a];
+      p.p[i] = P;
+    }
+    grid.bin(p.position.coords(), p.size());
+    query_faces(locator, p, hits, convex);
+  }
+  SpaceWallTerms terms(const FluidOptions3& o, double n0) const {
+    return SpaceWallTerms(o, n0, p, grid, hits, convex);
+  }
+};
+
+/// A lattice at rest under a uniform pressure P (the 3-D wall tests') and what a test samples on
+/// it.
+template <class Sample> struct LatticeScene {
+  double l0 = 0.01, P = 1000.0 * 9.81 * 0.18, n0 = 0.0;
+  std::vector<Sample> samples;
+};
+
+/// Eq. 9's sum over the points of x within r_e of x[i] (i left out) and eq. 10's geometric sum
+/// at a uniform pressure P, 2 P sum (x_j - x_i) w / r^2.
+struct DirectSums {
+  double pnd = 0.0;
+  Vec3 gradient = Vec3::Zero();
+};
+inline DirectSums direct_sums(const std::vector<Vec3>& x, std::size_t i, double r_e,
+                              const particles::MpsWeight& w, double P) {
+  DirectSums s;
+  for (std::size_t j = 0; j < x.size(); ++j) {
+    const Vec3 d = x[j] - x[i];
+    const double r2 = d.squaredNorm();
+    if (j == i || r2 >= r_e * r_e) continue;
+    s.pnd += w(std::sqrt(r2));
+    s.gradient += 2.0 * P * w.inside(std::sqrt(r2)) / r2 * d;
+  }
+  return s;
 }
 
 template <int D> VecD<D> momentum(const BasicParticles<D>& p) {

@@ -6,7 +6,9 @@
 
 #include <catch2/catch.hpp>
 
+#include <array>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 using namespace fsi;
@@ -115,11 +117,15 @@ TEST_CASE("convex_faces: none beside a face or in a tank's concave corner, one b
   TriangleHits hits;
   locator.query(px, py, pz, hits);
   ConvexFaces convex;
-  locator.convex_faces(px, py, pz, hits, convex);
-  CHECK(convex.count[0] == 0);
-  CHECK(convex.count[1] == 1);
-  CHECK(convex.count[2] == 2);
-  CHECK(convex.count[3] == 0);
+  locator.convex_faces(px, py, pz, std::span<const TriangleHits>(&hits, 1), convex);
+  // One piece each beside the edge and the corner, seeded by the nearest triangle (face 0).
+  CHECK(convex.pieces[0] == 0);
+  CHECK(convex.pieces[1] == 1);
+  CHECK(convex.pieces[2] == 1);
+  CHECK(convex.pieces[3] == 0);
+  CHECK(convex.face[0][1] == 0);
+  CHECK(convex.end[0][1] == 2); // plane 0 and one convex face
+  CHECK(convex.end[0][2] == 3); // and two
   // Beside the edge: plane 0 is x = 0.12 (s = 0.005), the other y = 0.12 (s = -0.005).
   CHECK(convex.n[0][1].isApprox(Vec3::UnitX()));
   CHECK(std::abs(convex.s[0][1] - 0.005) < 1e-15);
@@ -145,11 +151,58 @@ TEST_CASE("has_convex_edges: none in a box tank, some with a box obstacle, found
   CHECK_FALSE(locator.has_convex_edges());
   // Without convex edges no point gets a convex face.
   const std::vector<double> px = {-0.045, -0.115}, py = {0.045, 0.08}, pz = {0.045, 0.08};
-  TriangleHits hits;
-  locator.query(px, py, pz, hits);
+  std::array<TriangleHits, 3> faces;
+  locator.query(px, py, pz, faces[0]);
+  locator.corner_faces(px, py, pz, faces);
   ConvexFaces convex;
-  locator.convex_faces(px, py, pz, hits, convex);
-  CHECK(hits.triangle[0] >= 0);
-  CHECK(convex.count[0] == 0);
-  CHECK(convex.count[1] == 0);
+  locator.convex_faces(px, py, pz, faces, convex);
+  CHECK(faces[0].triangle[0] >= 0);
+  CHECK(convex.pieces[0] == 0);
+  CHECK(convex.pieces[1] == 0);
+}
+
+TEST_CASE("convex_faces: at the foot of a box standing on the floor, a piece seeded by the box's "
+          "face where it acts and one of its own beyond the vertical edge",
+          "[convex3d]") {
+  const double l0 = 0.01, r_e = 3.1 * l0;
+  TriangleWallSet walls;
+  add_box_tank(walls, Vec3::Zero(), Vec3::Constant(0.2), false, 0);
+  // The box [0.04, 0.12] x [0, 0.08] x [0.04, 0.12] on the floor y = 0: its top and four sides.
+  const std::vector<Vec3> c = {{0.04, 0, 0.04},    {0.12, 0, 0.04},   {0.12, 0.08, 0.04},
+                               {0.04, 0.08, 0.04}, {0.04, 0, 0.12},   {0.12, 0, 0.12},
+                               {0.12, 0.08, 0.12}, {0.04, 0.08, 0.12}};
+  std::vector<std::array<int, 3>> box = {{3, 2, 6}, {3, 6, 7}, {1, 2, 6}, {1, 6, 5}, {0, 4, 7},
+                                         {0, 7, 3}, {0, 3, 2}, {0, 2, 1}, {4, 5, 6}, {4, 6, 7}};
+  const Vec3 centre(0.08, 0.04, 0.08);
+  for (auto& t : box) { // normals out of the box
+    const Vec3 &a = c[static_cast<std::size_t>(t[0])], &b = c[static_cast<std::size_t>(t[1])],
+               &d = c[static_cast<std::size_t>(t[2])];
+    if ((b - a).cross(d - a).dot(a - centre) < 0.0) std::swap(t[1], t[2]);
+  }
+  walls.add_triangles(c, box, 1);
+  const TriangleLocator locator(walls, r_e);
+  // At the foot of the face x = 0.12 near its edge with z = 0.12 (the floor nearest, the face a
+  // corner face), and beyond that vertical edge (no face of the box acts).
+  const std::vector<Vec3> x = {{0.125, 0.003, 0.115}, {0.125, 0.004, 0.125}};
+  std::vector<double> px, py, pz;
+  for (const Vec3& q : x) px.push_back(q[0]), py.push_back(q[1]), pz.push_back(q[2]);
+  std::array<TriangleHits, 3> faces;
+  locator.query(px, py, pz, faces[0]);
+  locator.corner_faces(px, py, pz, faces);
+  REQUIRE(walls.face_normal(faces[0].triangle[0]).isApprox(Vec3::UnitY()));
+  REQUIRE(walls.face_normal(faces[1].triangle[0]).isApprox(Vec3::UnitX()));
+  REQUIRE(walls.face_normal(faces[0].triangle[1]).isApprox(Vec3::UnitY()));
+  REQUIRE(faces[1].triangle[1] < 0);
+  ConvexFaces convex;
+  locator.convex_faces(px, py, pz, faces, convex);
+  for (std::size_t i = 0; i < 2; ++i) {
+    CHECK(convex.pieces[i] == 1);
+    CHECK(convex.face[0][i] == (i == 0 ? 1 : -1));
+    CHECK(convex.end[0][i] == 2);
+    // The piece: behind x = 0.12 and z = 0.12, either plane first.
+    const Vec3 sum = convex.n[0][i] + convex.n[1][i];
+    CHECK(sum.isApprox(Vec3(1.0, 0.0, 1.0)));
+    for (std::size_t k = 0; k < 2; ++k)
+      CHECK(std::abs(convex.s[k][i] - (x[i] - Vec3(0.12, 0.0, 0.12)).dot(convex.n[k][i])) < 1e-15);
+  }
 }

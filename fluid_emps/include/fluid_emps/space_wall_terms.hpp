@@ -5,7 +5,8 @@
 // other planes of a concave edge or corner, TriangleLocator::corner_faces). One file per term:
 // space_wall_pnd.cpp, space_mirror_pressure.cpp, space_corner_mirror_pressure.cpp,
 // space_mirror_viscous.cpp, space_wall_contact.cpp, space_wall_gap.cpp, space_convex_part.cpp (the
-// convex edges' and corners' wedge). Not in 3-D yet: the viscous mirror's images behind two and
+// convex edges' and corners' pieces), space_wall_pressure.cpp (the pressure terms summed). Not in
+// 3-D yet: the viscous mirror's images behind two and
 // three walls, WallContact::viscous and WallPressure::neighbours (the fluid refuses the last two).
 #include "fluid_emps/options.hpp"
 #include "fluid_emps/particles.hpp"
@@ -44,23 +45,39 @@ public:
                  const particles::BasicCellGrid<3>& grid, const SpaceHits& hits,
                  const erp::ConvexFaces& convex);
 
-  /// A convex edge's or corner's part of particle i's wall terms (space_convex_part.cpp): the
-  /// lattice of the solid's wedge that replaces face 0's half-space, in proportion `share`.
+  /// The convex pieces' part of particle i's wall terms (space_convex_part.cpp): the solid beside
+  /// a convex edge or corner is the union of the half-spaces of the acting faces that seed no
+  /// piece and the pieces (TriangleLocator::convex_faces); a face seeding a piece has no
+  /// half-space, z or mirror of its own.
   struct ConvexPart {
-    double share = 0.0;
-    erp::LatticeSum3 lattice;
+    unsigned replaced = 0;    ///< bit k: acting face k seeds a piece
+    std::size_t owner = 0;    ///< the face whose wall force records the pieces' term (eq. 52)
+    erp::LatticeSum3 lattice; ///< the pieces' lattice in front of the other faces (eqs. 20, 10)
+    /// eq. 10's geometric sum over that lattice reflected across the other faces (each, each pair,
+    /// the three): where their mirrors find no fluid to image, the pieces being solid.
+    Vec3 images = Vec3::Zero();
   };
+  /// Empty without convex_corners, without pieces, or where a plane is not a box's.
   ConvexPart convex_part(std::size_t i) const;
 
-  /// n*_i from the fluid part of pnd: z (eq. 20) summed over the faces, the lattice behind two or
-  /// three walls counted once (space_wall_pnd.cpp).
+  /// n*_i from the fluid part of pnd: z (eq. 20) summed over the acting faces, the lattice behind
+  /// two or three walls counted once, the convex pieces' lattice added (space_wall_pnd.cpp).
   double pnd(std::size_t i, double fluid_pnd) const;
   /// (d/n0) R_ref <grad p>_i' (eqs. 25-26) on face k with p_i' = p_i (space_mirror_pressure.cpp).
   Vec3 mirror_pressure(std::size_t i, std::size_t k) const;
-  /// The pressure term of the lattice behind two walls (each pair of faces) and three (a corner),
-  /// which no single face's mirror images: eqs. 25-26 across several planes
-  /// (space_corner_mirror_pressure.cpp). Zero with fewer than two faces.
-  Vec3 corner_mirror_pressure(std::size_t i) const;
+  /// The pieces' pressure term: virtual particles at p_i (eq. 26) on their lattice and its
+  /// images, (d/n0) 2 p_i (lattice.gradient + images) (space_convex_part.cpp).
+  Vec3 convex_pressure(std::size_t i, const ConvexPart& part) const;
+  /// The pressure term of the lattice behind two walls (each pair of acting faces not in
+  /// `replaced`) and three (a corner), which no single face's mirror images: eqs. 25-26 across
+  /// several planes (space_corner_mirror_pressure.cpp). Zero with fewer than two faces.
+  Vec3 corner_mirror_pressure(std::size_t i, unsigned replaced = 0) const;
+  /// Adds the wall part of <grad p>_i to grad (space_wall_pressure.cpp): each acting face's mirror
+  /// pressure (unless it seeds a convex piece) and contact terms (eqs. 25-27), the images behind
+  /// two or three faces once, the convex pieces' term; `per_face` its share on each face for eq. 52
+  /// (the images split by split_corner_term, the pieces' term on ConvexPart::owner).
+  void add_pressure(std::size_t i, double dt, Vec3& grad,
+                    std::array<Vec3, max_faces3>& per_face) const;
   /// The viscous mirror sums on face k (eq. 24; `approach`: the approach viscosity's too)
   /// (space_mirror_viscous.cpp).
   MirrorViscous3 mirror_viscous(std::size_t i, std::size_t k, bool approach) const;
@@ -75,12 +92,13 @@ private:
   /// The turn between two faces as a share of a right angle (1 at 90 degrees), as in 2-D's
   /// concave_overlap: the weight of the lattice behind both.
   static double turn_share(const Vec3& n1, const Vec3& n2);
-  /// The faces acting on i (hits_[on[k]], k < the count returned).
-  std::size_t acting_faces(std::size_t i, std::array<std::size_t, max_faces3>& on) const;
-  /// z of eq. 20 over the acting faces on[from ..]: each face's z(r), the lattice behind two and
+  /// The faces acting on i and not in `replaced` (hits_[on[k]], k < the count returned).
+  std::size_t acting_faces(std::size_t i, std::array<std::size_t, max_faces3>& on,
+                           unsigned replaced = 0) const;
+  /// z of eq. 20 over the faces on[0 .. faces - 1]: each face's z(r), the lattice behind two and
   /// three of them counted once (space_wall_pnd.cpp).
   double faces_weight(std::size_t i, const std::array<std::size_t, max_faces3>& on,
-                      std::size_t from, std::size_t faces) const;
+                      std::size_t faces) const;
   bool behind(std::uint32_t j, const Vec3& x_wall, const Vec3& n_wall) const;
   /// f(j) for every binned particle in the cells that the ball of radius r_e around m touches
   /// (at most 2 x 2 x 2 of the grid's cells of side >= r_e, not the 27 of for_each_near).

@@ -16,11 +16,9 @@ namespace fsi::emps {
 // part R_ref(n_k) R_ref(n_l) (three planes alike). Each pair of faces is counted once and the
 // three once, as the lattice in SpaceWallTerms::pnd (exact at right angles; another turn scales
 // each image by turn_share, the corner's by the product of its three pairs').
-Vec3 SpaceWallTerms::corner_mirror_pressure(std::size_t i) const {
+Vec3 SpaceWallTerms::corner_mirror_pressure(std::size_t i, unsigned replaced) const {
   std::array<std::size_t, max_faces3> on{};
-  std::size_t faces = 0;
-  for (std::size_t k = 0; k < max_faces3; ++k)
-    if (hits_[k].triangle[i] >= 0) on[faces++] = k;
+  const std::size_t faces = acting_faces(i, on, replaced);
   if (faces < 2) return Vec3::Zero();
   const double p_i = p_.p[i];
   // The image across faces on[a] for a in `set` (bit a): its gradient sum, turned back.

@@ -9,8 +9,6 @@ namespace fsi::emps {
 
 // (d/n0) R_ref <grad p>_i' (eqs. 25-26): the gradient sum at the mirror point x_i' = 2 x_wall -
 // x_i over the real neighbours of x_i' (j = i included) with p_i' = p_i (eq. 26), reflected back.
-// On face 0 with convex_corners, the convex edge's or corner's wedge (convex_part: virtual
-// particles at p_i, eq. 10's sum 2 p_i sum (x_k - x_i) w / r^2) replaces it in proportion share.
 Vec3 SpaceWallTerms::mirror_pressure(std::size_t i, std::size_t k) const {
   const erp::TriangleHits& f = hits_[k];
   const Vec3 x_wall = f.x_wall[i], n_wall = f.n_wall[i];
@@ -23,12 +21,7 @@ Vec3 SpaceWallTerms::mirror_pressure(std::size_t i, std::size_t k) const {
     if (r2 >= re2_ || r2 == 0.0 || behind(j, x_wall, n_wall)) return;
     u += (p_.p[j] + p_i) * w_e_.inside(std::sqrt(r2)) / r2 * d;
   });
-  Vec3 mirror = erp::R_ref<3>(n_wall) * u;
-  if (k == 0 && o_.convex_corners) {
-    const ConvexPart part = convex_part(i);
-    mirror = (1.0 - part.share) * mirror + part.share * (2.0 * p_i) * part.lattice.gradient;
-  }
-  return 3.0 / n0_ * mirror;
+  return 3.0 / n0_ * Vec3(erp::R_ref<3>(n_wall) * u);
 }
 
 } // namespace fsi::emps

@@ -27,11 +27,11 @@ double SpaceWallTerms::turn_share(const Vec3& n1, const Vec3& n2) {
   return std::acos(std::clamp(n1.dot(n2), -1.0, 1.0)) / (0.5 * std::numbers::pi);
 }
 
-std::size_t SpaceWallTerms::acting_faces(std::size_t i,
-                                         std::array<std::size_t, max_faces3>& on) const {
+std::size_t SpaceWallTerms::acting_faces(std::size_t i, std::array<std::size_t, max_faces3>& on,
+                                         unsigned replaced) const {
   std::size_t faces = 0;
   for (std::size_t k = 0; k < max_faces3; ++k)
-    if (hits_[k].triangle[i] >= 0) on[faces++] = k;
+    if (hits_[k].triangle[i] >= 0 && !(replaced >> k & 1u)) on[faces++] = k;
   return faces;
 }
 

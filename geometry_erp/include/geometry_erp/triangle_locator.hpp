@@ -26,15 +26,21 @@
 // it (so the pieces of one plane and the gentle turns of a curved wall never count). Beside a
 // convex edge the foot falls outside the other face's triangles, so only concave ones count.
 //
-// Convex edges and corners (convex_faces): beside a box obstacle's edge the nearest face's
-// half-space is not the solid. Each hit takes, as up to five convex faces, in order of distance,
-// the nearest other triangles within r_e whose normal turns by more than 30 degrees from the
-// nearest triangle's and from each one taken before (the opposite face of a box thinner than r_e
-// included), lying behind the nearest triangle's plane while that triangle lies behind theirs
-// (both to on_wall_tolerance r_e): the other faces of a convex edge, corner or small box. A
-// concave edge's other face is in front of the plane, a coplanar piece does not turn. Whether any
-// pair of triangles can be such faces is found once per update() (has_convex_edges): a tank
-// without convex edges skips the per-point search.
+// Convex edges and corners (convex_faces): beside a box obstacle's edge a face's half-space is not
+// the solid. Each particle gets up to three convex pieces, each the intersection of the
+// half-spaces behind its planes: plane 0 its seed triangle's, then, in order of distance, the
+// nearest other triangles within r_e whose normal turns by more than 30 degrees from the seed's
+// and from each one taken before (the opposite face of a box thinner than r_e included), lying
+// behind the seed's plane while the seed lies behind theirs (both to on_wall_tolerance r_e): the
+// other faces of a convex edge, corner or small box. A concave edge's other face is in front of
+// the plane, a coplanar piece does not turn. Seeds: every acting face (the nearest triangle and the
+// corner faces above), a piece kept where it has a convex face; then the nearest triangle within
+// r_e that the particle is in front of, turned by more than 30 degrees from every plane taken so
+// far and wholly on or in front of every acting face's plane: a solid standing on an acting
+// face, whose edge is near and none of whose faces acts (the foot of a box's vertical edge on the
+// floor). A seed of its own without a convex face ends the search.
+// Whether any pair of triangles can be such faces is found once per update() (has_convex_edges):
+// a tank without convex edges skips the per-point search.
 //
 // These are new types rather than WallHits<D>: the 2-D record carries one segment coordinate t
 // and the corner faces; a triangle needs barycentric coordinates and a feature.
@@ -64,14 +70,19 @@ struct TriangleHits {
   std::size_t size() const { return triangle.size(); }
 };
 
-/// The planes of the convex edges and corners beside each particle (TriangleLocator::convex_faces):
-/// plane 0 the nearest triangle's, planes 1 .. count its convex faces'; unit normal n (into the
-/// fluid) and the particle's signed distance s from the plane (> 0 in front).
+/// The convex pieces beside each particle (TriangleLocator::convex_faces), their planes in one
+/// list: piece q has planes begin(q) .. end[q] - 1, the first its seed's, the others its convex
+/// faces'; unit normal n (into the fluid) and the particle's signed distance s from the plane
+/// (> 0 in front). face[q]: the acting face k (faces[k] of the query) that seeds it, -1 for a seed
+/// of its own.
 struct ConvexFaces {
-  static constexpr std::size_t max_planes = 6;
-  std::vector<unsigned char> count; ///< convex faces: 0, 1 beside an edge, 2 a corner, up to 5
+  static constexpr std::size_t max_pieces = 3, max_planes = 8;
+  std::vector<unsigned char> pieces;
+  std::array<std::vector<signed char>, max_pieces> face;
+  std::array<std::vector<unsigned char>, max_pieces> end;
   std::array<std::vector<Vec3>, max_planes> n;
   std::array<std::vector<double>, max_planes> s;
+  std::size_t begin(std::size_t q, std::size_t i) const { return q == 0 ? 0 : end[q - 1][i]; }
   void resize(std::size_t n_points);
 };
 
@@ -100,11 +111,12 @@ public:
   /// 0, a_wall interpolated like v_wall.
   void corner_faces(std::span<const double> x, std::span<const double> y, std::span<const double> z,
                     std::span<TriangleHits> faces) const;
-  /// The convex faces (see above) of each point, `nearest` being its nearest-triangle hits.
+  /// The convex pieces (see above) of each point, `faces` being its acting faces from query()
+  /// and corner_faces() (faces[k].triangle = -1 where there is none).
   void convex_faces(std::span<const double> x, std::span<const double> y, std::span<const double> z,
-                    const TriangleHits& nearest, ConvexFaces& convex) const;
+                    std::span<const TriangleHits> faces, ConvexFaces& convex) const;
   /// Some pair of triangles within 2 r_e of each other makes a convex edge or corner (as
-  /// convex_faces takes them); without one convex_faces finds none at any point.
+  /// convex_faces takes them); without one convex_faces finds no piece at any point.
   bool has_convex_edges() const { return has_convex_edges_; }
   double r_e() const { return r_e_; }
   double cell_size() const { return grid_.cell_size(); }
@@ -119,6 +131,10 @@ private:
   /// The nearest corner face of point p that turns from each of `normals` by more than 30 degrees.
   void corner_face(const Vec3& p, std::span<const Vec3> normals, TriangleHits& face,
                    std::size_t i) const;
+  /// Appends to convex's planes of point i the piece seeded by triangle t0 (plane 0, then its
+  /// convex faces) and returns the new end (`m` + 1 + its convex faces, at most max_planes).
+  std::size_t convex_piece(const Vec3& p, int t0, ConvexFaces& convex, std::size_t i,
+                           std::size_t m) const;
 
   /// f(g) for the triangles binned in the 3 x 3 x 3 cells around p (every triangle within r_e);
   /// a triangle spanning several cells comes once per cell.
