@@ -14,11 +14,15 @@ namespace {
 
 // Another type's block (fluid.emps: {...} in a fluid of type sph) is read by that type's
 // plug-in, with the keys of the enclosing block that plug-in declares, so its keys are checked;
-// then it is set aside.
+// then it is set aside. A structure block without its own geometry (a 3-D tlsph block of dp
+// beside the FE box) is read as that type reads the entry: through its adopt.
 template <class Plugin> void check_set_aside(Section& s, const Plugin& p) {
+  Section entry(s.node(), s.path(), s.context(), s.line());
+  if constexpr (std::is_same_v<Plugin, StructurePlugin>)
+    if (p.adopt) p.adopt(entry);
   const std::set<std::string> own = declared_keys(p.read);
   YAML::Node view(YAML::NodeType::Map);
-  for (auto it = s.node().begin(); it != s.node().end(); ++it)
+  for (auto it = entry.node().begin(); it != entry.node().end(); ++it)
     if (own.count(it->first.Scalar()) || it->first.Scalar() == p.name)
       view.force_insert(it->first, it->second);
   Section other(view, s.path(), s.context(), s.line());

@@ -74,9 +74,10 @@ BasicEmpsFluid<D>::BasicEmpsFluid(const Options& options, const std::vector<Vec>
 SpaceWalls::SpaceWalls(const FluidOptions3& options, double n0, const erp::TriangleWallSet& walls,
                        bool moving, const Particles3& particles,
                        const particles::BasicCellGrid<3>& grid)
-    : locator(walls, options.r_e()), before(walls), before_locator(before, options.r_e()),
-      terms(options, n0, particles, grid, hits, convex), corner_faces(options.wall.corner_faces),
-      convex_corners(options.wall.convex_corners), moving(moving) {
+    : locator(walls, options.r_e()), terms(options, n0, particles, grid, hits, convex),
+      corner_faces(options.wall.corner_faces), convex_corners(options.wall.convex_corners),
+      moving(moving) {
+  if (moving) before.emplace(walls, options.r_e());
   // Not in 3-D yet: the two 2-D-only wall options are refused, not ignored.
   if (options.wall.contact.model == WallContact::viscous)
     throw InputError("fluid.wall_contact: 'viscous' is not available in 3-D yet");
@@ -86,9 +87,9 @@ SpaceWalls::SpaceWalls(const FluidOptions3& options, double n0, const erp::Trian
 
 void SpaceWalls::set_step_start(const erp::TriangleWallNodes& nodes) {
   if (!moving) return;
-  before.nodes() = nodes;
-  before.update();
-  before_locator.update();
+  before->walls.nodes() = nodes;
+  before->walls.update();
+  before->locator.update();
 }
 
 template <int D>

@@ -20,7 +20,8 @@ namespace fsi::emps {
 template <int D> typename BasicEmpsFluid<D>::State BasicEmpsFluid<D>::save() const {
   State s{{}, step_, removed_, layout_, gap_dt_, gap_limited_steps_};
   particles_.fields.save(s.particles, owned());
-  if constexpr (D == 3) s.walls_before = walls_.before.nodes();
+  if constexpr (D == 3)
+    if (walls_.moving) s.walls_before = walls_.before->walls.nodes();
   return s;
 }
 
@@ -80,8 +81,8 @@ void BasicEmpsFluid<D>::write_state(StateArchive& a, const std::string& prefix) 
   }
   if constexpr (D == 2)
     a.put_integer(prefix + "hits/valid", hits);
-  else
-    put_nodes(a, prefix + "walls_before/", walls_.before.nodes()); // the walls at t^n
+  else if (walls_.moving)
+    put_nodes(a, prefix + "walls_before/", walls_.before->walls.nodes()); // the walls at t^n
 }
 
 // The per-particle arrays of the owned particles: the fields, the neighbour list's build
@@ -137,8 +138,8 @@ void BasicEmpsFluid<D>::read_state(const StateArchive& a, const std::string& pre
   bool hits = false;
   if constexpr (D == 2) {
     hits = a.integer(prefix + "hits/valid") != 0;
-  } else {
-    erp::TriangleWallNodes before = walls_.before.nodes(); // sized as the walls
+  } else if (walls_.moving) {
+    erp::TriangleWallNodes before = walls_.before->walls.nodes(); // sized as the walls
     read_nodes(a, prefix + "walls_before/", before);
     walls_.set_step_start(before);
   }

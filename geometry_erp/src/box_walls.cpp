@@ -2,24 +2,28 @@
 
 #include "fsi/core/error.hpp"
 
+#include <string>
 #include <vector>
 
 namespace fsi::erp {
 
 namespace {
-/// The faces of [lo, hi] but the top with open_top, normals into the box (a tank) or out of it.
-TriangleRange add_box(TriangleWallSet& walls, const Vec3& lo, const Vec3& hi, bool open_top,
+/// The faces of [lo, hi] but face `open` of the list below (-1: none), normals into the box (a
+/// tank) or out of it.
+TriangleRange add_box(TriangleWallSet& walls, const Vec3& lo, const Vec3& hi, int open,
                       bool into_box, int group) {
   std::vector<Vec3> corner(8); // corner b: x from bit 0, y from bit 1, z from bit 2
   for (int b = 0; b < 8; ++b)
     corner[static_cast<std::size_t>(b)] =
         Vec3(b & 1 ? hi.x() : lo.x(), b & 2 ? hi.y() : lo.y(), b & 4 ? hi.z() : lo.z());
   const Vec3 centre = 0.5 * (lo + hi);
-  // The faces as corner quadruples around their edge; z = hi.z last.
+  // The faces as corner quadruples around their edge: z = lo.z, y = lo.y, y = hi.y, x = lo.x,
+  // x = hi.x, z = hi.z.
   const int faces[6][4] = {{0, 1, 3, 2}, {0, 1, 5, 4}, {2, 3, 7, 6},
                            {0, 2, 6, 4}, {1, 3, 7, 5}, {4, 5, 7, 6}};
   std::vector<std::array<int, 3>> triangles;
-  for (int f = 0; f < (open_top ? 5 : 6); ++f) {
+  for (int f = 0; f < 6; ++f) {
+    if (f == open) continue;
     const int* q = faces[f];
     for (const std::array<int, 3> t : {std::array<int, 3>{q[0], q[1], q[2]}, {q[0], q[2], q[3]}}) {
       const Vec3 &a = corner[static_cast<std::size_t>(t[0])],
@@ -36,12 +40,16 @@ TriangleRange add_box(TriangleWallSet& walls, const Vec3& lo, const Vec3& hi, bo
 TriangleRange add_box_tank(TriangleWallSet& walls, const Vec3& lo, const Vec3& hi, bool open_top,
                            int group) {
   if (!(hi.array() > lo.array()).all()) throw InputError("box tank: empty box");
-  return add_box(walls, lo, hi, open_top, true, group);
+  return add_box(walls, lo, hi, open_top ? 5 : -1, true, group);
 }
 
-TriangleRange add_box_obstacle(TriangleWallSet& walls, const Vec3& lo, const Vec3& hi, int group) {
+TriangleRange add_box_obstacle(TriangleWallSet& walls, const Vec3& lo, const Vec3& hi, int group,
+                               int open_bottom) {
   if (!(hi.array() > lo.array()).all()) throw InputError("box obstacle: empty box");
-  return add_box(walls, lo, hi, false, false, group);
+  if (open_bottom < -1 || open_bottom > 2)
+    throw InputError("box obstacle: no axis " + std::to_string(open_bottom));
+  const int bottom_face[3] = {3, 1, 0}; // the face x = lo.x, y = lo.y, z = lo.z in the list
+  return add_box(walls, lo, hi, open_bottom < 0 ? -1 : bottom_face[open_bottom], false, group);
 }
 
 } // namespace fsi::erp

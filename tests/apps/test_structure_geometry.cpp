@@ -142,6 +142,24 @@ TEST_CASE("apps: a TL-SPH rectangle with a clamp strip as an FE rectangle", "[ap
                       "translate to an FE mesh"));
 }
 
+TEST_CASE("apps: a 3-D TL-SPH solid of a T10 box as FE: the box, its tlsph block checked as the "
+          "box translates and set aside",
+          "[apps][fem]") {
+  // cantilever_3d_tlsph_static: type tlsph, the T10 box 20 x 2 x 2 of 1 x 0.1 x 0.1 m clamped at
+  // its left, tlsph: {dp: 0.01, mass_damping: 60}.
+  const std::string file = FSI_SOURCE_DIR "/data/scenes/cantilever_3d_tlsph_static.yaml";
+  const Scene scene = load_scene(file, {"structures[0].type=fem"});
+  const auto& fe = scene.structures.front().as<fem_plugin::StructureSpec>();
+  CHECK(fe.mesh.kind == "box");
+  CHECK(fe.mesh.elements_x == 20);
+  CHECK(fe.mesh.elements_y == 2);
+  CHECK(fe.mesh.elements_z == 2);
+  CHECK(fe.clamped == std::vector<std::string>{"left"});
+  // The set-aside block is still checked: a bad TL-SPH key in it is refused by name.
+  CHECK_THAT(error_of(file, {"structures[0].type=fem", "structures[0].tlsph.dp=-1"}),
+             Contains("structures[0].tlsph.dp"));
+}
+
 TEST_CASE("apps: what does not translate between the structure types is refused naming the key",
           "[apps][tlsph]") {
   // Loads: TL-SPH has none.

@@ -3,7 +3,6 @@
 // particle-wall reference (the lattice filling the box counted directly) and the wall pressure
 // term under a uniform pressure (eqs. 25-26) against zero, with and without convex_corners.
 #include "fluid_emps/space_wall_terms.hpp"
-#include "geometry_erp/box_walls.hpp"
 #include "test_support.hpp"
 
 #include <catch2/catch.hpp>
@@ -35,22 +34,20 @@ using Scene = emps::test::LatticeScene<Sample>;
 /// the box at rest under a uniform pressure P.
 Scene box_in_tank(bool convex_corners) {
   Scene s;
-  const double l0 = s.l0, L = 18 * l0;
+  const double l0 = s.l0;
   const Vec3 lo = Vec3::Constant(7 * l0), hi = Vec3::Constant(11 * l0);
-  emps::FluidOptions3 o = emps::test::water<3>(l0, -0.05, 0.25);
-  o.wall.convex_corners = convex_corners;
-  const double r_e = o.r_e();
-  const particles::MpsWeight w(r_e);
-  s.n0 = erp::lattice_n0<3>(l0, r_e, w);
-  erp::TriangleWallSet walls;
-  erp::add_box_tank(walls, Vec3::Zero(), Vec3::Constant(L), false, 0);
-  erp::add_box_obstacle(walls, lo, hi, 1);
+  emps::test::CubeTank tank(l0, convex_corners);
+  const emps::FluidOptions3& o = tank.o;
+  const double L = tank.L, r_e = tank.r_e;
+  const particles::MpsWeight& w = tank.w;
+  s.n0 = tank.n0;
+  erp::add_box_obstacle(tank.walls, lo, hi, 1);
   const auto inside = [&](const Vec3& x) {
     return (x.array() > lo.array()).all() && (x.array() < hi.array()).all();
   };
   std::vector<Vec3> x, solid; // the fluid lattice and the reference's wall particles
   for (const Vec3& q : emps::test::block(18, 18, 18, l0)) (inside(q) ? solid : x).push_back(q);
-  const erp::TriangleLocator locator(walls, r_e);
+  const erp::TriangleLocator locator(tank.walls, r_e);
   const emps::test::AtRest rest(o, x, s.P, locator);
   const emps::SpaceWallTerms terms = rest.terms(o, s.n0);
   const emps::SpaceHits& hits = rest.hits;

@@ -3,7 +3,6 @@
 // (eq. 20's z) against the particle-wall reference (the lattice of the floor and of the box counted
 // directly) and the wall pressure term under a uniform pressure (eqs. 25-26) against zero.
 #include "fluid_emps/space_wall_terms.hpp"
-#include "geometry_erp/box_walls.hpp"
 #include "test_support.hpp"
 
 #include <catch2/catch.hpp>
@@ -40,34 +39,14 @@ using Scene = emps::test::LatticeScene<Sample>;
 /// writes it). The lattice l0/2 + k l0 outside the box at rest under a uniform pressure P.
 Scene box_on_floor(bool convex_corners) {
   Scene s;
-  const double l0 = s.l0, L = 18 * l0;
+  const double l0 = s.l0;
   const Vec3 lo(7 * l0, 0.0, 7 * l0), hi(11 * l0, 4 * l0, 11 * l0);
-  emps::FluidOptions3 o = emps::test::water<3>(l0, -0.05, 0.25);
-  o.wall.convex_corners = convex_corners;
-  const double r_e = o.r_e();
-  const particles::MpsWeight w(r_e);
-  s.n0 = erp::lattice_n0<3>(l0, r_e, w);
-  erp::TriangleWallSet walls;
-  erp::add_box_tank(walls, Vec3::Zero(), Vec3::Constant(L), false, 0);
-  std::vector<Vec3> corner(8); // corner b: x from bit 0, y from bit 1, z from bit 2
-  for (int b = 0; b < 8; ++b)
-    corner[static_cast<std::size_t>(b)] =
-        Vec3(b & 1 ? hi.x() : lo.x(), b & 2 ? hi.y() : lo.y(), b & 4 ? hi.z() : lo.z());
-  const Vec3 centre = 0.5 * (lo + hi);
-  std::vector<std::array<int, 3>> box;
-  for (const auto& q : {std::array<int, 4>{0, 1, 3, 2},
-                        {2, 3, 7, 6},
-                        {0, 2, 6, 4},
-                        {1, 3, 7, 5},
-                        {4, 5, 7, 6}}) // every face but y = 0
-    for (const std::array<int, 3> t : {std::array<int, 3>{q[0], q[1], q[2]}, {q[0], q[2], q[3]}}) {
-      const Vec3 &a = corner[static_cast<std::size_t>(t[0])],
-                 &b = corner[static_cast<std::size_t>(t[1])],
-                 &c = corner[static_cast<std::size_t>(t[2])];
-      const bool inward = (b - a).cross(c - a).dot(centre - a) > 0.0;
-      box.push_back(inward ? std::array<int, 3>{t[0], t[2], t[1]} : t);
-    }
-  walls.add_triangles(corner, box, 1);
+  emps::test::CubeTank tank(l0, convex_corners);
+  const emps::FluidOptions3& o = tank.o;
+  const double L = tank.L, r_e = tank.r_e;
+  const particles::MpsWeight& w = tank.w;
+  s.n0 = tank.n0;
+  erp::add_box_obstacle(tank.walls, lo, hi, 1, 1); // no bottom: open at y = lo.y
   const auto in_box = [&](const Vec3& x) {
     return (x.array() > lo.array()).all() && (x.array() < hi.array()).all();
   };
@@ -81,7 +60,7 @@ Scene box_on_floor(bool convex_corners) {
         const Vec3 q = l0 * Vec3(i + 0.5, j + 0.5, k + 0.5);
         (in_tank(q) && !in_box(q) ? x : solid).push_back(q);
       }
-  const erp::TriangleLocator locator(walls, r_e);
+  const erp::TriangleLocator locator(tank.walls, r_e);
   const emps::test::AtRest rest(o, x, s.P, locator);
   const emps::SpaceWallTerms terms = rest.terms(o, s.n0);
   const emps::SpaceHits& hits = rest.hits;

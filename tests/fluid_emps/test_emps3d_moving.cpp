@@ -214,6 +214,7 @@ TEST_CASE("emps 3-D moving walls: save/restore and checkpoints keep the walls at
     for (long s = 0; s < 10; ++s) first.step(s);
     StateArchive archive;
     first.fluid->write_state(archive, "fluid/");
+    CHECK(archive.reals("fluid/walls_before/x").size() == 3 * first.walls.nodes().x.size());
     MovingTank second(o); // its walls at t = 0 until the next step moves them
     second.fluid->read_state(archive, "fluid/");
     for (long s = 10; s < 20; ++s) second.step(s);

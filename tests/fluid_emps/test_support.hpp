@@ -4,6 +4,7 @@
 // viscosity), so that without gravity and walls sum_i v_i changes by round-off only.
 #include "fluid_emps/emps_fluid.hpp"
 #include "fluid_emps/space_wall_terms.hpp"
+#include "geometry_erp/box_walls.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -75,6 +76,23 @@ struct AtRest {
 template <class Sample> struct LatticeScene {
   double l0 = 0.01, P = 1000.0 * 9.81 * 0.18, n0 = 0.0;
   std::vector<Sample> samples;
+};
+
+/// The setting of the box tests on it (test_emps3d_convex.cpp, test_emps3d_foot.cpp): water at
+/// l0 with convex_corners as given in the 18 l0 cube tank [0, L]^3 (walls, group 0), and the
+/// lattice's n0 (eq. 9); the test adds its box to the walls.
+struct CubeTank {
+  FluidOptions3 o;
+  double L, r_e;
+  particles::MpsWeight w;
+  double n0;
+  erp::TriangleWallSet walls;
+  CubeTank(double l0, bool convex_corners)
+      : o(water<3>(l0, -0.05, 0.25)), L(18 * l0), r_e(o.r_e()), w(r_e),
+        n0(erp::lattice_n0<3>(l0, r_e, w)) {
+    o.wall.convex_corners = convex_corners;
+    erp::add_box_tank(walls, Vec3::Zero(), Vec3::Constant(L), false, 0);
+  }
 };
 
 /// Eq. 9's sum over the points of x within r_e of x[i] (i left out) and eq. 10's geometric sum

@@ -8,7 +8,6 @@
 
 #include <array>
 #include <cmath>
-#include <utility>
 #include <vector>
 
 using namespace fsi;
@@ -168,18 +167,7 @@ TEST_CASE("convex_faces: at the foot of a box standing on the floor, a piece see
   TriangleWallSet walls;
   add_box_tank(walls, Vec3::Zero(), Vec3::Constant(0.2), false, 0);
   // The box [0.04, 0.12] x [0, 0.08] x [0.04, 0.12] on the floor y = 0: its top and four sides.
-  const std::vector<Vec3> c = {{0.04, 0, 0.04},    {0.12, 0, 0.04},   {0.12, 0.08, 0.04},
-                               {0.04, 0.08, 0.04}, {0.04, 0, 0.12},   {0.12, 0, 0.12},
-                               {0.12, 0.08, 0.12}, {0.04, 0.08, 0.12}};
-  std::vector<std::array<int, 3>> box = {{3, 2, 6}, {3, 6, 7}, {1, 2, 6}, {1, 6, 5}, {0, 4, 7},
-                                         {0, 7, 3}, {0, 3, 2}, {0, 2, 1}, {4, 5, 6}, {4, 6, 7}};
-  const Vec3 centre(0.08, 0.04, 0.08);
-  for (auto& t : box) { // normals out of the box
-    const Vec3 &a = c[static_cast<std::size_t>(t[0])], &b = c[static_cast<std::size_t>(t[1])],
-               &d = c[static_cast<std::size_t>(t[2])];
-    if ((b - a).cross(d - a).dot(a - centre) < 0.0) std::swap(t[1], t[2]);
-  }
-  walls.add_triangles(c, box, 1);
+  add_box_obstacle(walls, Vec3(0.04, 0.0, 0.04), Vec3(0.12, 0.08, 0.12), 1, 1);
   const TriangleLocator locator(walls, r_e);
   // At the foot of the face x = 0.12 near its edge with z = 0.12 (the floor nearest, the face a
   // corner face), and beyond that vertical edge (no face of the box acts).

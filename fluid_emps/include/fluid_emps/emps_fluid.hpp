@@ -34,6 +34,7 @@
 #include <array>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 #include <type_traits>
 #include <variant>
@@ -124,17 +125,23 @@ using WallForces3 = std::array<TriangleForces, max_faces3>;
 struct SpaceWalls {
   SpaceWalls(const FluidOptions3& options, double n0, const erp::TriangleWallSet& walls,
              bool moving, const Particles3& particles, const particles::BasicCellGrid<3>& grid);
-  SpaceWalls(const SpaceWalls&) = delete; // before_locator points at before
+  SpaceWalls(const SpaceWalls&) = delete; // before's locator points at its walls
   SpaceWalls& operator=(const SpaceWalls&) = delete;
   /// The walls as the step starts (t^n), for the viscous stage at x^n (2-D reuses the last x*
-  /// hits, taken with the walls at t^n): `before_locator` when the walls move, else `locator`.
-  const erp::TriangleLocator& at_step_start() const { return moving ? before_locator : locator; }
+  /// hits, taken with the walls at t^n): `before`'s when the walls move, else `locator`.
+  const erp::TriangleLocator& at_step_start() const { return moving ? before->locator : locator; }
   /// Moving walls: sets `before` to `nodes` (the next step's t^n, restore, a checkpoint) and
-  /// refits its index; static walls: nothing (`before` is the walls).
+  /// refits its index; static walls: nothing (the walls are their own t^n).
   void set_step_start(const erp::TriangleWallNodes& nodes);
+  /// A copy of the caller's walls at t^n and its index.
+  struct StepStart {
+    StepStart(const erp::TriangleWallSet& caller, double r_e)
+        : walls(caller), locator(walls, r_e) {}
+    erp::TriangleWallSet walls;
+    erp::TriangleLocator locator;
+  };
   erp::TriangleLocator locator;
-  erp::TriangleWallSet before; ///< a copy of the caller's walls at t^n
-  erp::TriangleLocator before_locator;
+  std::optional<StepStart> before; ///< moving walls only
   SpaceHits hits;
   erp::ConvexFaces convex; ///< the convex edges' and corners' planes (with convex_corners)
   SpaceWallTerms terms;
@@ -214,7 +221,7 @@ public:
     long layout = 0;
     double gap_dt = 0.0;
     long gap_limited_steps = 0;
-    /// The walls at the step's start (3-D: SpaceWalls::before).
+    /// The walls at the step's start (3-D, moving walls: SpaceWalls::before; else empty).
     std::conditional_t<D == 3, erp::TriangleWallNodes, std::monostate> walls_before{};
   };
   State save() const;

@@ -4,10 +4,11 @@
 // face k of the walls that act on it (face 0 the nearest triangle of eq. 18, faces 1 and 2 the
 // other planes of a concave edge or corner, TriangleLocator::corner_faces). One file per term:
 // space_wall_pnd.cpp, space_mirror_pressure.cpp, space_corner_mirror_pressure.cpp,
-// space_mirror_viscous.cpp, space_wall_contact.cpp, space_wall_gap.cpp, space_convex_part.cpp (the
-// convex edges' and corners' pieces), space_wall_pressure.cpp (the pressure terms summed). Not in
-// 3-D yet: the viscous mirror's images behind two and
-// three walls, WallContact::viscous and WallPressure::neighbours (the fluid refuses the last two).
+// space_corner_split.cpp (split_corner_term), space_mirror_viscous.cpp, space_wall_contact.cpp,
+// space_wall_gap.cpp, space_convex_part.cpp (the convex edges' and corners' pieces),
+// space_wall_pressure.cpp (the pressure terms summed). Not in 3-D yet: the viscous mirror's
+// images behind two and three walls, WallContact::viscous and WallPressure::neighbours (the fluid
+// refuses the last two).
 #include "fluid_emps/options.hpp"
 #include "fluid_emps/particles.hpp"
 #include "geometry_erp/convex_wedge3.hpp"
