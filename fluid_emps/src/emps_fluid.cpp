@@ -213,12 +213,14 @@ template <int D> void BasicEmpsFluid<D>::advance(double t, double dt) {
       walls_.locator.update();
   }
   const Vec g = options_.gravity;
-  // What the first stage reads of a ghost j before the next update (x*): x^n (the list's
-  // validity, the wall hits, every pair sum) and v^n (eqs. 11, 24, the closing pairs); p, pnd
-  // and the surface flags are those the last step's update sent, unchanged since, the wall
-  // forces are owned rows only, and id never changes.
-  particles::FieldList step_start;
-  for (int a = 0; a < D; ++a) step_start.add(p.position[a]).add(p.velocity[a]);
+  // Each halo update sends what the step reads of a ghost j before the next one (a rebuild sends
+  // every array): at the start x^n and v^n (the list's validity, the wall hits, the viscous sums
+  // of eqs. 11, 24 and the closing pairs), at x* the positions (the list's validity, the wall
+  // hits, the pnd sums of eqs. 9, 20), then p (density_and_pressure). pnd, the surface flags and
+  // the wall forces are read at owned rows only; id never changes.
+  particles::FieldList step_start, moved;
+  for (int a = 0; a < D; ++a)
+    step_start.add(p.position[a]).add(p.velocity[a]), moved.add(p.position[a]);
   refresh_neighbours(step_start, true, step_ + 1, t);
   const std::size_t n = owned();
   // The viscous loop writes every particle's viscous wall forces; without it they are zero.
@@ -250,8 +252,8 @@ template <int D> void BasicEmpsFluid<D>::advance(double t, double dt) {
       }
     });
   }
-  check_finite(step_ + 1, t + dt);                  // v*, x* (before they are binned)
-  refresh_neighbours({}, false, step_ + 1, t + dt); // x*, v* and the viscous wall forces
+  check_finite(step_ + 1, t + dt); // v*, x* (before they are binned)
+  refresh_neighbours(moved, false, step_ + 1, t + dt);
   query_walls();
   check_crossed(step_ + 1, t + dt);
   density_and_pressure();
