@@ -113,7 +113,7 @@ template <int D> void BasicEmpsFluid<D>::start(const std::vector<Vec>& positions
                               : 4.0 / 3.0 * std::numbers::pi * reach * reach * reach;
   capacity_ = static_cast<std::size_t>(std::ceil(2.0 * sites)) + 16;
   remove_outside();
-  refresh_neighbours(true, 0, 0.0);
+  refresh_neighbours({}, true, 0, 0.0);
   query_walls();
   density_and_pressure();
 }
@@ -131,11 +131,11 @@ template <int D> void BasicEmpsFluid<D>::damp(double t, double dt) {
 }
 
 template <int D>
-void BasicEmpsFluid<D>::refresh_neighbours(bool allow_reorder, long step, double t) {
+void BasicEmpsFluid<D>::refresh_neighbours(const particles::FieldList& changed, bool allow_reorder,
+                                           long step, double t) {
   Timer timer(times_.neighbours);
   ParticleSet& p = particles_;
-  // x, v and the step's scratch the viscous term reads (its wall hits): every array.
-  decomposition_->update_ghosts(p.fields, {});
+  decomposition_->update_ghosts(p.fields, changed);
   const bool valid = neighbours_.valid(p.position.coords(), p.size(), 0.5 * options_.skin * r_e_);
   if (decomposition_->all(valid)) return;
   // Ghosts off, the owned particles to their regions' processes (nothing serial).
@@ -214,7 +214,15 @@ template <int D> void BasicEmpsFluid<D>::advance(double t, double dt) {
       walls_.locator.update();
   }
   const Vec g = options_.gravity;
-  refresh_neighbours(true, step_ + 1, t);
+  // Each halo update sends what the step reads of a ghost j before the next one (a rebuild sends
+  // every array): at the start x^n and v^n (the list's validity, the wall hits, the viscous sums
+  // of eqs. 11, 24 and the closing pairs), at x* the positions (the list's validity, the wall
+  // hits, the pnd sums of eqs. 9, 20), then p (density_and_pressure). pnd, the surface flags and
+  // the wall forces are read at owned rows only; id never changes.
+  particles::FieldList step_start, moved;
+  for (int a = 0; a < D; ++a)
+    step_start.add(p.position[a]).add(p.velocity[a]), moved.add(p.position[a]);
+  refresh_neighbours(step_start, true, step_ + 1, t);
   const std::size_t n = owned();
   // The viscous loop writes every particle's viscous wall forces; without it they are zero.
   const bool viscous = options_.viscous_loop();
@@ -246,7 +254,7 @@ template <int D> void BasicEmpsFluid<D>::advance(double t, double dt) {
     });
   }
   check_finite(step_ + 1, t + dt); // v*, x* (before they are binned)
-  refresh_neighbours(false, step_ + 1, t + dt);
+  refresh_neighbours(moved, false, step_ + 1, t + dt);
   query_walls();
   check_crossed(step_ + 1, t + dt);
   density_and_pressure();
@@ -319,8 +327,8 @@ template <int D> void BasicEmpsFluid<D>::decompose(particles::Decomposition<D>& 
     if (neighbours_.built() == particles_.size()) return scatter_restored();
   }
   neighbours_.invalidate();
-  refresh_neighbours(true, step_, 0.0); // the first migration and halo
-  query_walls();                        // the ghosts' hits
+  refresh_neighbours({}, true, step_, 0.0); // the first migration and halo
+  query_walls();                            // the ghosts' hits
 }
 
 template <int D> void BasicEmpsFluid<D>::set_velocities(const std::vector<Vec>& v) {

@@ -31,8 +31,8 @@ template <int D> void BasicEmpsFluid<D>::density_and_pressure() {
         return std::size_t{sum.within};
       },
       [](std::size_t a, std::size_t b) { return a + b; });
-  decomposition_->update_ghosts(p.fields,
-                                particles::FieldList(p.p, p.pnd, p.surface)); // the gradient
+  // The gradient's p_j (eqs. 10, 26); pnd and surface are read at owned rows only.
+  decomposition_->update_ghosts(p.fields, particles::FieldList(p.p));
   const double all_pairs = decomposition_->sum(static_cast<double>(pairs));
   const double all_n = decomposition_->sum(static_cast<double>(n));
   mean_neighbours_ = all_n > 0 ? all_pairs / all_n : 0.0;

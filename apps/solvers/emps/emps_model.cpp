@@ -196,8 +196,7 @@ std::optional<ParticleCount> EmpsModel::particle_count() const {
 }
 
 void EmpsModel::report(JsonObject& run) const {
-  run.add("fluid", fluid_report(*fluid_, initial_count_, particle_count()->count,
-                                ranks_.global(fluid_->removed())));
+  run.add("fluid", fluid_report(*fluid_, initial_count_, ranks_));
 }
 
 } // namespace fsi::app::emps_plugin

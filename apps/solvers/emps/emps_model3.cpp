@@ -354,8 +354,7 @@ std::optional<ParticleCount> EmpsModel3::particle_count() const {
 }
 
 void EmpsModel3::report(JsonObject& run) const {
-  JsonObject f = fluid_report(*fluid_, initial_count_, particle_count()->count,
-                              ranks_.global(fluid_->removed()));
+  JsonObject f = fluid_report(*fluid_, initial_count_, ranks_);
   f.add("wall_triangles", static_cast<long long>(walls_->triangles().size()));
   run.add("fluid", f);
 }

@@ -1,23 +1,26 @@
 #pragma once
 // The fluid's part of run.json, one form for 2-D and 3-D: counts, n0, the resolved options and
 // this process's seconds per part of the step.
+#include "decomposed_particles.hpp"
 #include "fluid_emps/emps_fluid.hpp"
 #include "fsi_app/output/json.hpp"
 #include "fsi_app/output/json_options.hpp"
 
 namespace fsi::app::emps_plugin {
 
-/// `particles` and `removed` as the caller counts them (over every rank when decomposed).
+/// The counts over every rank when decomposed (collective), and then the bytes every rank sent
+/// for ghosts over the run.
 template <int D>
 JsonObject fluid_report(const emps::BasicEmpsFluid<D>& fluid, std::size_t initial,
-                        std::size_t particles, std::size_t removed) {
+                        const DecomposedParticles<D>& ranks) {
   JsonObject f;
   f.add("particles_initial", static_cast<long long>(initial))
-      .add("particles", static_cast<long long>(particles))
-      .add("removed_particles", static_cast<long long>(removed))
+      .add("particles", static_cast<long long>(ranks.global(fluid.owned())))
+      .add("removed_particles", static_cast<long long>(ranks.global(fluid.removed())))
       .add("mean_neighbours", fluid.mean_neighbours())
       .add("n0", fluid.n0())
       .add("neighbour_list_builds", static_cast<long long>(fluid.neighbour_builds()));
+  if (ranks.decomposed()) f.add("halo_bytes", ranks.halo_bytes());
   if (fluid.options().wall.gap_courant > 0)
     f.add("wall_gap_limited_steps", static_cast<long long>(fluid.gap_limited_steps()));
   emps::BasicFluidOptions<D> options = fluid.options(); // the visitor takes members by reference

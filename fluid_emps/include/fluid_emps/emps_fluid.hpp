@@ -250,10 +250,12 @@ private:
   /// Places the particles at `positions` and computes pnd, pressure and the free-surface flags
   /// of the initial state (for output at t = 0).
   void start(const std::vector<Vec>& positions);
-  /// Refreshes the ghosts; rebuilds the neighbour list when a particle of any process has moved
-  /// half the skin (with `allow_reorder`, migrating and reordering the owned particles first).
-  /// `step` and `t` name the step in progress in messages.
-  void refresh_neighbours(bool allow_reorder, long step, double t);
+  /// Refreshes the ghosts' arrays `changed` (empty: every array); rebuilds the neighbour list
+  /// (its halo build sends every array) when a particle of any process has moved half the skin
+  /// (with `allow_reorder`, migrating and reordering the owned particles first). `step` and `t`
+  /// name the step in progress in messages.
+  void refresh_neighbours(const particles::FieldList& changed, bool allow_reorder, long step,
+                          double t);
   /// The wall hits at the particles' positions; `step_start`: with the walls at t^n (3-D's
   /// viscous stage; the caller has moved its walls to t + dt), else with the caller's walls.
   void query_walls(bool step_start = false);
