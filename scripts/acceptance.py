@@ -304,11 +304,52 @@ def m_regression(run, q, _others, spec):
     return {"value": worst, "time": at}
 
 
+def m_arrival(run, q, _others, _spec):
+    """The first time in the window the probe reaches q["level"], between frames linearly."""
+    w = inside(run, q)
+    level = float(q["level"])
+    for (t0, v0), (t1, v1) in zip(w, w[1:]):
+        if v0 < level <= v1:
+            return {"value": t0 + (t1 - t0) * (level - v0) / (v1 - v0)}
+    raise ValueError(f"{q['probe']} never reaches {level:g} in the window")
+
+
+def read_table(path):
+    """A whitespace-separated table with one header line: its numeric columns."""
+    with open(path) as f:
+        rows = [line.split() for line in f.readlines()[1:] if line.strip()]
+    return [[float(r[k]) for r in rows] for k in range(len(rows[0]))]
+
+
+def m_history(run, q, _others, _spec):
+    """A measured history (q["file"] from the repository's root, whitespace-separated, time in
+    column 1, q["column"] counted from 1): the RMS over the run's samples in the window of
+    probe - reference (interpolated at each sample's time), over the reference's largest |value|
+    in the window."""
+    path = os.path.join(ROOT, q["file"])
+    if not os.path.isfile(path):
+        raise AcceptanceError(f"{path}: no such file")
+    cols = read_table(path)
+    t_ref, v_ref = cols[0], cols[int(q["column"]) - 1]
+    t0, t1 = window(q, run)
+    pairs = [(v, interpolate(t_ref, v_ref, t)) for t, v in inside(run, q)]
+    errors = [v - r for v, r in pairs if r is not None]  # samples the reference covers
+    scale = max(abs(v) for t, v in zip(t_ref, v_ref) if t0 <= t <= t1)
+    return {"value": math.sqrt(sum(e * e for e in errors) / len(errors)) / scale}
+
+
+def m_impulse(run, q, _others, _spec):
+    """value: the probe's integral over the window (trapezoids between frames)."""
+    w = inside(run, q)
+    return {"value": sum(0.5 * (v0 + v1) * (t1 - t0) for (t0, v0), (t1, v1) in zip(w, w[1:]))}
+
+
 MEASURES = {"peak": m_peak, "mean": m_mean, "final": m_final, "gradient": m_gradient,
             "ratio": m_ratio,
             "front": m_front, "front_agreement": m_front_agreement, "agreement": m_agreement,
             "still_water": m_still_water, "growth": m_growth, "decay": m_decay, "oscillation": m_oscillation,
-            "regression": m_regression}
+            "regression": m_regression, "arrival": m_arrival, "history": m_history,
+            "impulse": m_impulse}
 
 
 # --- judging ----------------------------------------------------------------------------------

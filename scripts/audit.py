@@ -326,6 +326,8 @@ for name, old, new, names in [  # the scene file named
     ("stl_missing", TANK, "tank_file: no_such.stl", ["fluid.tank_file", "file not found"]),
     ("wall_contact_viscous", "wall_model: default", "wall_model: default\n  wall_contact: viscous",
      ["fluid.wall_contact", "not available in 3-D yet"]),
+    ("water_height_no_point", "quantity: particles", "quantity: water_height",
+     ["output.probes[7].point", "required key missing"]),
 ]:
     scene_case("e3d_" + name, edit(E3, old, new), names)
 # A plate under part of the tank's floor: a tank triangle partly covered is refused (issue 46).

@@ -60,8 +60,10 @@ ProbeSpec read_probe(Section s) {
                "kinetic_energy (J per m of depth; 3-D: J) of all particles; velocity_x|y|z, "
                "the kernel-weighted velocity at a point (type sph); wall_force_x|y, "
                "the fluid's force on the coupled structure (on all walls without one), "
-               "N/m, of the last step; (3-D, type emps) particles, their count, and wall_gap, "
-               "the smallest distance of a particle centre to its nearest wall, m");
+               "N/m, of the last step; (3-D, type emps) particles, their count, wall_gap, "
+               "the smallest distance of a particle centre to its nearest wall, m, and "
+               "water_height, a wave gauge at point: the top (centre + l0/2) of the highest "
+               "particle with pnd >= n0/2 within l0 of the vertical through point, above it, m");
   p.structure = s.text("structure", "", "structure name, for displacement probes");
   p.node = s.optional_integer("node", Range::non_negative(), "FE node index (or give point)");
   const std::string point_doc = "reference position of the FE node or the TL-SPH point, or the "
@@ -103,7 +105,8 @@ ProbeSpec read_probe(Section s) {
     if ((p.quantity == "displacement_z" || p.quantity == "velocity_z") &&
         s.context().dimension != 3)
       s.fail("quantity", p.quantity + " needs a 3-D scene (dimension: 3)");
-    const bool at_point = p.quantity == "pressure" || p.quantity.starts_with("velocity_");
+    const bool at_point = p.quantity == "pressure" || p.quantity == "water_height" ||
+                          p.quantity.starts_with("velocity_");
     if (at_point && !p.point && !p.point3) s.fail("point", "required key missing");
     if (p.quantity == "mean_pressure") {
       if (!p.box_min && !p.box3_min) s.fail("min", "required key missing");

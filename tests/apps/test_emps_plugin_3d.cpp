@@ -69,6 +69,25 @@ TEST_CASE("apps: the 3-D EMPS scene's tank is 12 triangles facing the water, its
   CHECK(probe(model, "particles") == 1000.0);
 }
 
+TEST_CASE("apps: the 3-D EMPS water_height gauge reads the depth of still water",
+          "[apps][emps][3d]") {
+  // The shipped tank at rest: 10 layers of l0 = 0.02 m, the top centres at 0.19 m, so the still
+  // layer's top is H = 0.2 m wherever the gauge stands, and H - y0 above a point at y0.
+  const Scene scene = load_scene(kScene, {});
+  emps_plugin::EmpsModel3 model(scene);
+  const auto gauge = [&](const Vec3& at) {
+    ProbeSpec p;
+    p.quantity = "water_height";
+    p.point3 = at;
+    return *model.probe(p);
+  };
+  CHECK(gauge(Vec3(0.1, 0.0, 0.1)) == Approx(0.2).epsilon(1e-12));
+  CHECK(gauge(Vec3(0.0, 0.0, 0.0)) == Approx(0.2).epsilon(1e-12)); // the tank's corner
+  CHECK(gauge(Vec3(0.13, 0.05, 0.07)) == Approx(0.15).epsilon(1e-12));
+  CHECK(gauge(Vec3(0.1, 0.25, 0.1)) == 0.0); // above the water
+  CHECK(gauge(Vec3(0.25, 0.0, 0.1)) == 0.0); // l0 beyond the tank's side: no particle near
+}
+
 TEST_CASE("apps: the 3-D EMPS tank read from its STL file runs as the box of keys",
           "[apps][emps][3d]") {
   emps_plugin::EmpsModel3 box(load_scene(kScene, {}));

@@ -145,6 +145,31 @@ class AcceptanceTest(unittest.TestCase):
         self.assertEqual(status, 2, out)
         self.assertIn("no column 'p_corner'", out)
 
+    def test_arrival_impulse_and_history_measures(self):
+        # v = t on 0.01 s frames: it reaches 0.255 at 0.255 s (between frames), its integral
+        # over [0.2, 0.6] is (0.6^2 - 0.2^2) / 2 = 0.16 (trapezoids are exact for a line).
+        d = write_run("measures_line", "spheric_test2_emps_3d", [], ["time", "v"],
+                      [(0.01 * k, 0.01 * k) for k in range(101)])
+        run = acceptance.Run(d)
+        q = {"probe": "v", "level": 0.255, "window": [0.0, 1.0]}
+        self.assertAlmostEqual(acceptance.m_arrival(run, q, {}, {})["value"], 0.255, places=12)
+        q = {"probe": "v", "window": [0.2, 0.6]}
+        self.assertAlmostEqual(acceptance.m_impulse(run, q, {}, {})["value"], 0.16, places=12)
+        with self.assertRaises(ValueError):  # never reached: not measurable
+            acceptance.m_arrival(run, {"probe": "v", "level": 2.0}, {}, {})
+        # The measured reservoir height (column 13) at its own sample times, then 0.01 m higher:
+        # RMS 0 and 0.01 m over the window's largest height (0.5511 m).
+        path = "data/ref/spheric_test2/test_case_2_exp_data.dat"
+        t, h = (acceptance.read_table(os.path.join(SOURCE, path))[c] for c in (0, 12))
+        samples = [(a, b) for a, b in zip(t, h) if a <= 1.0]
+        for name, shift, rms in (("history_same", 0.0, 0.0),
+                                 ("history_shift", 0.01, 0.01 / 0.5511333333)):
+            d = write_run(name, "spheric_test2_emps_3d", [], ["time", "H4"],
+                          [(a, b + shift) for a, b in samples])
+            q = {"probe": "H4", "file": path, "column": 13, "window": [0.0, 1.0]}
+            value = acceptance.m_history(acceptance.Run(d), q, {}, {})["value"]
+            self.assertAlmostEqual(value, rms, places=9)
+
     def test_every_acceptance_file_loads_with_its_scenes_and_regression_files(self):
         scenes = acceptance.scenes_with_acceptance()
         self.assertGreaterEqual(len(scenes), 10)

@@ -325,6 +325,18 @@ std::optional<double> EmpsModel3::evaluate(const ProbeSpec& probe) const {
     const double inside = ranks_.frame_sum(static_cast<double>(count));
     return inside > 0.0 ? sum / inside : 0.0;
   }
+  if (probe.quantity == "water_height") { // a wave gauge: the bulk's top along the vertical
+    const auto& o = fluid_->options();
+    const Vec3 up = o.gravity.norm() > 0.0 ? Vec3(-o.gravity.normalized()) : Vec3::UnitY();
+    double top = 0.0; // the height above the point of the highest bulk particle's top (y + l0/2)
+    for (std::size_t i = 0; i < n; ++i) {
+      const Vec3 d = x(i) - *probe.point3;
+      const double h = d.dot(up);
+      if (p.pnd[i] >= 0.5 * fluid_->n0() && (d - h * up).norm() < o.l0)
+        top = std::max(top, h + 0.5 * o.l0);
+    }
+    return ranks_.frame_max(top);
+  }
   if (probe.quantity == "particles") return ranks_.frame_sum(static_cast<double>(n));
   if (probe.quantity == "wall_gap") {
     locator_->update(); // the interfaces' triangles move

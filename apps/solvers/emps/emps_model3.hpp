@@ -42,7 +42,10 @@ public:
   void advance(double time, double dt) override;
   std::optional<double> stable_dt(double courant) const override;
   /// particles: the count; wall_gap: the smallest distance of a particle centre to its nearest
-  /// triangle within r_e (negative behind it; +inf with none near), m; the 2-D probes' others.
+  /// triangle within r_e (negative behind it; +inf with none near), m; water_height: a wave
+  /// gauge, the top (centre + l0/2 against gravity) of the highest bulk particle (pnd >= n0/2)
+  /// within l0 of the vertical through the point, above the point, m (0: none); the 2-D
+  /// probes' others.
   std::optional<double> probe(const ProbeSpec& probe) const override;
   /// The grid "particles" (3-D points): velocity, pressure, pnd, free_surface.
   void write_frame(FieldsFile& file, const std::vector<std::string>& fields) const override;
