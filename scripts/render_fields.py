@@ -55,6 +55,26 @@ def pieces(reader, time):
     return out
 
 
+def white_view(size):
+    """A render view of size [W, H] on white, with the orientation axes."""
+    view = CreateView("RenderView")
+    view.ViewSize = size
+    view.UseColorPaletteForBackground = 0
+    view.Background = [1.0, 1.0, 1.0]
+    view.OrientationAxesVisibility = 1
+    return view
+
+
+def iso_camera(view, azimuth=35.0):
+    """The oblique view of a 3-D scene: from +z turned azimuth degrees round y (towards +x), 25
+    up."""
+    view.ResetCamera()
+    camera = view.GetActiveCamera()
+    camera.Azimuth(azimuth)
+    camera.Elevation(25.0)
+    view.ResetCamera()
+
+
 def particles(data):
     """True for a grid of particles: no cells, or cells of dimension 0 (one XDMF topology a grid)."""
     return data.GetNumberOfCells() == 0 or data.GetCell(0).GetCellDimension() == 0
@@ -103,11 +123,7 @@ def main():
     times = list(reader.TimestepValues) or [0.0]
     time = times[-1] if a.time is None else min(times, key=lambda t: abs(t - a.time))
     grids = pieces(reader, time)
-    view = CreateView("RenderView")
-    view.ViewSize = a.size
-    view.UseColorPaletteForBackground = 0
-    view.Background = [1.0, 1.0, 1.0]
-    view.OrientationAxesVisibility = 1
+    view = white_view(a.size)
     ranges, three_d = {}, False
     for g in grids:
         bounds = g.GetBounds()
@@ -123,11 +139,8 @@ def main():
     if not ranges:
         sys.exit("%s: the frame at t = %g holds neither pressure nor von_mises" % (xmf, time))
     view.ResetCamera()
-    camera = view.GetActiveCamera()
     if (a.view or ("iso" if three_d else "front")) == "iso":
-        camera.Azimuth(35.0)
-        camera.Elevation(25.0)
-        view.ResetCamera()
+        iso_camera(view)
     png = a.png or os.path.join(a.run, "fields_%g.png" % time)
     Render(view)
     SaveScreenshot(png, view, ImageResolution=a.size)
