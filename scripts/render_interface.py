@@ -13,24 +13,19 @@ Usage (pvpython needs an X server: scripts/render --interface runs it under Xvfb
   pvpython render_interface.py RUN_DIR [--time T] [--png FILE] [--size W H]
                                [--field traction|load] [--azimuth DEG]
 """
-import argparse
 import json
 import os
 import sys
 
 from paraview.simple import (ColorBy, GetColorTransferFunction, GetScalarBar, OpenDataFile, Render,
                              SaveScreenshot, Show)
-from render_fields import iso_camera, pieces, white_view
+from render_fields import frame_parser, iso_camera, nearest_time, pieces, white_view
 
 UNITS = {"traction": "N/m^2", "load": "N"}
 
 
 def parse():
-    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    p.add_argument("run", help="a run's output folder (holds interface.pvd)")
-    p.add_argument("--time", type=float, help="the recorded time nearest this (default: the last)")
-    p.add_argument("--png", help="output file (default RUN/interface_<field>_<time>.png)")
-    p.add_argument("--size", type=int, nargs=2, default=[1600, 900], metavar=("W", "H"))
+    p = frame_parser(__doc__, "interface.pvd", "interface_<field>_<time>.png")
     p.add_argument("--field", choices=sorted(UNITS), default="traction")
     p.add_argument("--azimuth", type=float, default=35.0,
                    help="the camera's turn round y from +z, degrees (-55: from upstream, -x)")
@@ -44,8 +39,7 @@ def main():
         sys.exit("%s: no interface.pvd (scripts/interface_vtk %s writes it from interface.h5)"
                  % (a.run, a.run))
     reader = OpenDataFile(pvd)
-    times = list(reader.TimestepValues) or [0.0]
-    time = times[-1] if a.time is None else min(times, key=lambda t: abs(t - a.time))
+    time = nearest_time(reader, a.time)
     (surface,) = pieces(reader, time)
     lo, hi = surface.GetPointData().GetArray(a.field).GetRange(-1)  # -1: the magnitude's range
     view = white_view(a.size)
