@@ -22,12 +22,25 @@ from paraview.simple import (Clip, ColorBy, CreateView, GetColorTransferFunction
                              OpenDataFile, Render, SaveScreenshot, Show, TrivialProducer)
 
 
-def parse():
-    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    p.add_argument("run", help="a run's output folder (holds fields.xmf)")
+def frame_parser(doc, holds, png):
+    """The arguments every picture of a run takes: RUN (holding the file `holds`), --time, --png
+    (default `png` in RUN), --size."""
+    p = argparse.ArgumentParser(description=doc.splitlines()[0])
+    p.add_argument("run", help="a run's output folder (holds %s)" % holds)
     p.add_argument("--time", type=float, help="the frame nearest this time (default: the last)")
-    p.add_argument("--png", help="output file (default RUN/fields_<time>.png)")
+    p.add_argument("--png", help="output file (default RUN/%s)" % png)
     p.add_argument("--size", type=int, nargs=2, default=[1600, 900], metavar=("W", "H"))
+    return p
+
+
+def nearest_time(reader, wanted):
+    """The reader's time nearest `wanted` (None: its last)."""
+    times = list(reader.TimestepValues) or [0.0]
+    return times[-1] if wanted is None else min(times, key=lambda t: abs(t - wanted))
+
+
+def parse():
+    p = frame_parser(__doc__, "fields.xmf", "fields_<time>.png")
     p.add_argument("--view", choices=["iso", "front"], help="camera (default: iso in 3-D)")
     p.add_argument("--clip", choices=["x", "y", "z"], help="cut the fluid's upper half along it")
     return p.parse_args()
@@ -53,6 +66,26 @@ def pieces(reader, time):
 
     walk(data)
     return out
+
+
+def white_view(size):
+    """A render view of size [W, H] on white, with the orientation axes."""
+    view = CreateView("RenderView")
+    view.ViewSize = size
+    view.UseColorPaletteForBackground = 0
+    view.Background = [1.0, 1.0, 1.0]
+    view.OrientationAxesVisibility = 1
+    return view
+
+
+def iso_camera(view, azimuth=35.0):
+    """The oblique view of a 3-D scene: from +z turned azimuth degrees round y (towards +x), 25
+    up."""
+    view.ResetCamera()
+    camera = view.GetActiveCamera()
+    camera.Azimuth(azimuth)
+    camera.Elevation(25.0)
+    view.ResetCamera()
 
 
 def particles(data):
@@ -100,14 +133,9 @@ def main():
     if not os.path.isfile(xmf):
         sys.exit("%s: no fields.xmf (run with output.fields set)" % a.run)
     reader = OpenDataFile(xmf)
-    times = list(reader.TimestepValues) or [0.0]
-    time = times[-1] if a.time is None else min(times, key=lambda t: abs(t - a.time))
+    time = nearest_time(reader, a.time)
     grids = pieces(reader, time)
-    view = CreateView("RenderView")
-    view.ViewSize = a.size
-    view.UseColorPaletteForBackground = 0
-    view.Background = [1.0, 1.0, 1.0]
-    view.OrientationAxesVisibility = 1
+    view = white_view(a.size)
     ranges, three_d = {}, False
     for g in grids:
         bounds = g.GetBounds()
@@ -123,11 +151,8 @@ def main():
     if not ranges:
         sys.exit("%s: the frame at t = %g holds neither pressure nor von_mises" % (xmf, time))
     view.ResetCamera()
-    camera = view.GetActiveCamera()
     if (a.view or ("iso" if three_d else "front")) == "iso":
-        camera.Azimuth(35.0)
-        camera.Elevation(25.0)
-        view.ResetCamera()
+        iso_camera(view)
     png = a.png or os.path.join(a.run, "fields_%g.png" % time)
     Render(view)
     SaveScreenshot(png, view, ImageResolution=a.size)
