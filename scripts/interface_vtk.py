@@ -17,6 +17,7 @@ usage: scripts/interface_vtk RUN_DIR|interface.h5 [--out FILE.pvd]
 (default RUN_DIR/interface.pvd, its rows in RUN_DIR/interface/row_<k>.vtu)
 """
 import argparse
+import glob
 import os
 import sys
 
@@ -141,6 +142,8 @@ def convert(h5_path, pvd_path):
             fail("%s: /faces: %d of the %d nodes on no face" % (h5_path, lonely, nodes))
         projection = Projection(f["position"][0], faces)
         os.makedirs(folder, exist_ok=True)
+        for old in glob.glob(os.path.join(folder, "row_[0-9][0-9][0-9][0-9][0-9][0-9].vtu")):
+            os.remove(old)  # a longer earlier conversion's rows: the folder holds this series only
         entries = []
         for k, t in enumerate(time):
             data = {name: f[name][k] for name in ARRAYS}

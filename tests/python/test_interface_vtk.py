@@ -78,6 +78,21 @@ class InterfaceVtkTest(unittest.TestCase):
             self.assertIn("/faces: missing", p.stderr)
             self.assertFalse(os.path.exists(os.path.join(d, "interface.pvd")))
 
+    def test_a_shorter_record_leaves_no_old_rows(self):
+        x, faces = plate(1, 1.0)
+        with tempfile.TemporaryDirectory() as d:
+            h5, pvd = os.path.join(d, "interface.h5"), os.path.join(d, "interface.pvd")
+            for rows in (4, 2):
+                with h5py.File(h5, "w") as f:
+                    f["time"] = 0.1 * np.arange(rows)
+                    f["faces"] = faces
+                    f["position"] = np.tile(x, (rows, 1, 1))
+                    for name in ("velocity", "acceleration", "load"):
+                        f[name] = np.zeros((rows, len(x), 3))
+                self.assertEqual(iv.convert(h5, pvd), rows)
+                self.assertEqual(sorted(os.listdir(os.path.join(d, "interface"))),
+                                 ["row_%06d.vtu" % k for k in range(rows)])
+
 
 if __name__ == "__main__":
     unittest.main()
