@@ -20,6 +20,17 @@ template <int D> std::size_t DecomposedParticles<D>::global(std::size_t local) c
   return hook_ ? static_cast<std::size_t>(hook_->sum(static_cast<double>(local))) : local;
 }
 
+template <int D> JsonObject DecomposedParticles<D>::balance(std::size_t owned) const {
+  const auto n = static_cast<double>(owned);
+  const double waited = hook_->waited_seconds();
+  JsonObject b; // the reductions below are collectives too: the figures are those before them
+  b.add("owned_min", static_cast<long long>(hook_->min(n)))
+      .add("owned_max", static_cast<long long>(hook_->max(n)))
+      .add("waited_seconds_min", hook_->min(waited))
+      .add("waited_seconds_max", hook_->max(waited));
+  return b;
+}
+
 template <int D> void DecomposedParticles<D>::gather_packed() {
   if (own_rows_)
     all_.assign(packed_.begin(), packed_.end());

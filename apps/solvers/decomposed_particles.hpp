@@ -7,6 +7,7 @@
 // all-to-all (FileRows). Not decomposed (a plain run), it holds nothing and every count is the
 // local one.
 #include "fsi_app/output/fields_file.hpp"
+#include "fsi_app/output/json.hpp"
 #include "fsi_app/ranks.hpp"
 #include "fsi_app/scene.hpp"
 
@@ -35,6 +36,9 @@ public:
   double sum(double local) const { return hook_ ? hook_->sum(local) : local; }
   /// Bytes every rank has sent for ghosts so far (halo builds and updates), summed (collective).
   double halo_bytes() const { return hook_ ? hook_->sum(hook_->halo_bytes()) : 0.0; }
+  /// Collective, decomposed: the spread over the ranks of their owned particles and of the wall
+  /// seconds each waited in collectives (the waiting of the slowest rank's peers: the imbalance).
+  JsonObject balance(std::size_t owned) const;
   /// Every rank's `values` summed entry by entry, the same bits on every rank (Ranks::sum).
   void sum(std::vector<double>& values) const {
     if (ranks_) ranks_->sum(values);

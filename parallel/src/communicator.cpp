@@ -3,7 +3,10 @@
 namespace fsi::parallel {
 
 namespace {
+double collective_seconds_ = 0.0; // MPI calls come from one thread (MPI_THREAD_FUNNELED)
+
 template <class T> T reduce(MPI_Comm comm, T v, MPI_Datatype type, MPI_Op op) {
+  const CollectiveTimer timer;
   T out{};
   MPI_Allreduce(&v, &out, 1, type, op, comm);
   return out;
@@ -13,10 +16,18 @@ Communicator::Flagged flagged(MPI_Comm comm, double v, bool failed, MPI_Op op) {
   const double sign = op == MPI_MIN ? -1.0 : 1.0;
   const double in[2] = {v, failed ? sign : 0.0};
   double out[2] = {0.0, 0.0};
+  const CollectiveTimer timer;
   MPI_Allreduce(in, out, 2, MPI_DOUBLE, op, comm);
   return {out[0], out[1] != 0.0};
 }
 } // namespace
+
+double collective_seconds() { return collective_seconds_; }
+
+CollectiveTimer::~CollectiveTimer() {
+  collective_seconds_ +=
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+}
 
 Communicator::Communicator(MPI_Comm comm) : comm_(comm) {
   MPI_Comm_rank(comm_, &rank_);
@@ -57,6 +68,7 @@ Communicator::Flagged Communicator::max(double v, bool failed) const {
 
 bool Communicator::sum(std::vector<double>& values, bool failed) const {
   values.push_back(failed ? 1.0 : 0.0);
+  const CollectiveTimer timer;
   MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_DOUBLE, MPI_SUM,
                 comm_);
   const bool any = values.back() != 0.0;
@@ -75,6 +87,7 @@ std::string Communicator::first_failure(const std::string& message, bool failed)
 }
 
 void Communicator::gather(const std::vector<double>& local, std::vector<double>& all) const {
+  const CollectiveTimer timer;
   const int count = static_cast<int>(local.size());
   std::vector<int> counts(static_cast<std::size_t>(size_)), offsets(counts.size(), 0);
   MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm_);
@@ -90,6 +103,7 @@ void Communicator::gather(const std::vector<double>& local, std::vector<double>&
 
 void Communicator::exchange(const std::vector<double>& send, const std::vector<int>& counts,
                             std::vector<double>& received) const {
+  const CollectiveTimer timer;
   const auto n = static_cast<std::size_t>(size_);
   std::vector<int> from(n), send_at(n, 0), from_at(n, 0);
   MPI_Alltoall(counts.data(), 1, MPI_INT, from.data(), 1, MPI_INT, comm_);

@@ -24,6 +24,7 @@ void FieldExchange::plan(const Communicator& comm, const std::vector<std::uint32
   start_.assign(start.begin(), start.end());
   std::vector<int> send_count(p), recv_count(p);
   for (std::size_t r = 0; r < p; ++r) send_count[r] = start_[r + 1] - start_[r];
+  const CollectiveTimer timer;
   MPI_Alltoall(send_count.data(), 1, MPI_INT, recv_count.data(), 1, MPI_INT, comm.comm());
   recv_start_.assign(p + 1, 0);
   for (std::size_t r = 0; r < p; ++r) recv_start_[r + 1] = recv_start_[r] + recv_count[r];
@@ -55,6 +56,7 @@ void FieldExchange::send(const Communicator& comm, const particles::FieldSet& fi
   }
   bytes_sent_ +=
       static_cast<double>(send_buf_.size() - static_cast<std::size_t>(send_bytes_[comm.rank()]));
+  const CollectiveTimer timer;
   MPI_Alltoallv(send_buf_.data(), send_bytes_.data(), send_displ_.data(), MPI_BYTE,
                 recv_buf_.data(), recv_bytes_.data(), recv_displ_.data(), MPI_BYTE, comm.comm());
 }

@@ -20,7 +20,8 @@ JsonObject fluid_report(const emps::BasicEmpsFluid<D>& fluid, std::size_t initia
       .add("mean_neighbours", fluid.mean_neighbours())
       .add("n0", fluid.n0())
       .add("neighbour_list_builds", static_cast<long long>(fluid.neighbour_builds()));
-  if (ranks.decomposed()) f.add("halo_bytes", ranks.halo_bytes());
+  if (ranks.decomposed())
+    f.add("halo_bytes", ranks.halo_bytes()).add("ranks", ranks.balance(fluid.owned()));
   if (fluid.options().wall.gap_courant > 0)
     f.add("wall_gap_limited_steps", static_cast<long long>(fluid.gap_limited_steps()));
   emps::BasicFluidOptions<D> options = fluid.options(); // the visitor takes members by reference

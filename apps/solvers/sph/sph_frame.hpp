@@ -84,6 +84,7 @@ JsonObject fluid_report(const DecomposedParticles<D>& ranks, const sph::BasicSph
   if (ranks.decomposed()) { // every rank's ghosts at the end (the halo of the last pair build)
     f.add("ghosts", static_cast<long long>(ranks.global(fluid.particles().size() - fluid.owned())));
     f.add("halo_bytes", ranks.halo_bytes()); // sent over the run, every rank's
+    f.add("ranks", ranks.balance(fluid.owned()));
   }
   return f;
 }

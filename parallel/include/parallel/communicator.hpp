@@ -2,12 +2,30 @@
 // A thin wrapper of an MPI communicator: rank, size and the global reductions of a step (time
 // step, probes, energies, removed counts) for doubles and integers. Not owning: the caller keeps
 // the MPI_Comm alive (MPI_COMM_WORLD between MPI_Init and MPI_Finalize).
+#include <chrono>
 #include <cstdint>
 #include <mpi.h>
 #include <string>
 #include <vector>
 
 namespace fsi::parallel {
+
+/// Wall seconds this process has spent inside the MPI collectives of Communicator and
+/// FieldExchange, waiting for the slowest rank included: ranks with less work wait longer, so the
+/// spread of this figure over the ranks is the step's load imbalance (run.json `ranks`).
+double collective_seconds();
+
+/// Adds the wall time from its construction to its destruction to collective_seconds().
+class CollectiveTimer {
+public:
+  CollectiveTimer() : start_(std::chrono::steady_clock::now()) {}
+  ~CollectiveTimer();
+  CollectiveTimer(const CollectiveTimer&) = delete;
+  CollectiveTimer& operator=(const CollectiveTimer&) = delete;
+
+private:
+  std::chrono::steady_clock::time_point start_;
+};
 
 class Communicator {
 public:

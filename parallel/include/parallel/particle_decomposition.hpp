@@ -39,6 +39,7 @@ public:
   void drop_ghosts(particles::FieldSet& fields) override;
   std::size_t ghosts() const override { return active_ ? halo_.ghosts() : 0; }
   double halo_bytes() const override { return halo_.bytes_sent(); }
+  double waited_seconds() const override { return collective_seconds(); }
 
   double sum(double v) const override { return agreed(comm_.sum(v, failing())); }
   void sum(std::vector<double>& values) const override {

@@ -44,6 +44,8 @@ public:
   virtual std::size_t ghosts() const = 0;
   /// Bytes this process has sent to others for ghosts (builds and updates) so far.
   virtual double halo_bytes() const = 0;
+  /// Wall seconds this process has waited in collectives (exchanges and reductions) so far.
+  virtual double waited_seconds() const = 0;
 
   /// Global reductions over every process (the same value on each).
   virtual double sum(double v) const = 0;
@@ -78,6 +80,7 @@ public:
   void drop_ghosts(FieldSet&) override {}
   std::size_t ghosts() const override { return 0; }
   double halo_bytes() const override { return 0.0; }
+  double waited_seconds() const override { return 0.0; }
   double sum(double v) const override { return v; }
   void sum(std::vector<double>&) const override {}
   double max(double v) const override { return v; }
