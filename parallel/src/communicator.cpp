@@ -22,7 +22,9 @@ Communicator::Flagged flagged(MPI_Comm comm, double v, bool failed, MPI_Op op) {
 }
 } // namespace
 
-double collective_seconds() { return collective_seconds_; }
+double collective_seconds() {
+  return collective_seconds_;
+}
 
 CollectiveTimer::~CollectiveTimer() {
   collective_seconds_ +=
