@@ -61,8 +61,8 @@ Scene box_in_tank(bool convex_corners) {
     double solid_pnd = 0.0;
     for (const Vec3& q : solid) solid_pnd += w((q - x[i]).norm());
     Vec3 mirror = Vec3::Zero(); // the wall term (one face, no contact at rest)
-    std::array<Vec3, emps::max_faces3> per_face;
-    terms.add_pressure(i, 0.0005, mirror, per_face);
+    emps::WallShares3 shares;
+    terms.add_pressure(i, 0.0005, mirror, shares);
     const double half_space =
         hits[0].feature[i] == TriangleFeature::face
             ? -3.0 / s.n0 * 2.0 * s.P * erp::wall_gradient_sum<3>(hits[0].r[i], l0, r_e, w)
