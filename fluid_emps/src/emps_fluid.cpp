@@ -72,12 +72,11 @@ BasicEmpsFluid<D>::BasicEmpsFluid(const Options& options, const std::vector<Vec>
 }
 
 SpaceWalls::SpaceWalls(const FluidOptions3& options, double n0, const erp::TriangleWallSet& walls,
-                       bool moving, const Particles3& particles,
+                       bool walls_move, const Particles3& particles,
                        const particles::BasicCellGrid<3>& grid)
     : locator(walls, options.r_e()), terms(options, n0, particles, grid, hits, convex),
-      corner_faces(options.wall.corner_faces), convex_corners(options.wall.convex_corners),
-      moving(moving) {
-  if (moving) before.emplace(walls, options.r_e());
+      corner_faces(options.wall.corner_faces), convex_corners(options.wall.convex_corners) {
+  if (walls_move) before.emplace(walls, options.r_e());
   // Not in 3-D yet: the two 2-D-only wall options are refused, not ignored.
   if (options.wall.contact.model == WallContact::viscous)
     throw InputError("fluid.wall_contact: 'viscous' is not available in 3-D yet");
@@ -86,7 +85,7 @@ SpaceWalls::SpaceWalls(const FluidOptions3& options, double n0, const erp::Trian
 }
 
 void SpaceWalls::set_step_start(const erp::TriangleWallNodes& nodes) {
-  if (!moving) return;
+  if (!moving()) return;
   before->walls.nodes() = nodes;
   before->walls.update();
   before->locator.update();
@@ -210,7 +209,7 @@ template <int D> void BasicEmpsFluid<D>::advance(double t, double dt) {
     Timer timer(times_.walls);
     if constexpr (D == 2)
       walls_.locator->update();
-    else if (walls_.moving)
+    else if (walls_.moving())
       walls_.locator.update();
   }
   const Vec g = options_.gravity;

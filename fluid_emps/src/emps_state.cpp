@@ -21,7 +21,7 @@ template <int D> typename BasicEmpsFluid<D>::State BasicEmpsFluid<D>::save() con
   State s{{}, step_, removed_, layout_, gap_dt_, gap_limited_steps_};
   particles_.fields.save(s.particles, owned());
   if constexpr (D == 3)
-    if (walls_.moving) s.walls_before = walls_.before->walls.nodes();
+    if (walls_.moving()) s.walls_before = walls_.before->walls.nodes();
   return s;
 }
 
@@ -81,7 +81,7 @@ void BasicEmpsFluid<D>::write_state(StateArchive& a, const std::string& prefix) 
   }
   if constexpr (D == 2)
     a.put_integer(prefix + "hits/valid", hits);
-  else if (walls_.moving)
+  else if (walls_.moving())
     put_nodes(a, prefix + "walls_before/", walls_.before->walls.nodes()); // the walls at t^n
 }
 
@@ -138,7 +138,7 @@ void BasicEmpsFluid<D>::read_state(const StateArchive& a, const std::string& pre
   bool hits = false;
   if constexpr (D == 2) {
     hits = a.integer(prefix + "hits/valid") != 0;
-  } else if (walls_.moving) {
+  } else if (walls_.moving()) {
     erp::TriangleWallNodes before = walls_.before->walls.nodes(); // sized as the walls
     read_nodes(a, prefix + "walls_before/", before);
     walls_.set_step_start(before);

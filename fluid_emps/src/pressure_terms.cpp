@@ -94,7 +94,8 @@ template <int D> void BasicEmpsFluid<D>::pressure_gradient(double dt) {
     walls_.forces.resize(n);
     for (std::size_t k = 0; k < erp::max_faces; ++k) f_wall[k] = components(walls_.viscous[k]);
   } else {
-    for (TriangleForces& f : walls_.forces) f.resize(n);
+    for (std::size_t k = 0; k < wall_slots3; ++k) // the pieces' slots with convex_corners only
+      walls_.forces[k].resize(k < max_faces3 || walls_.convex_corners ? n : 0);
   }
   parallel_for_balanced(n, [&](std::size_t i) {
     VecD<D> grad;
@@ -131,16 +132,9 @@ template <int D> void BasicEmpsFluid<D>::pressure_gradient(double dt) {
     } else { // 3-D: the wall terms over the faces (SpaceWallTerms::add_pressure)
       const VecSum<D> fluid = fluid_gradient(i, nullptr);
       for (int a = 0; a < D; ++a) grad[a] = c_grad * fluid[static_cast<std::size_t>(a)];
-      std::array<Vec3, max_faces3> wall;
+      WallShares3 wall;
       walls_.terms.add_pressure(i, dt, grad, wall);
-      // eq. 52 without the viscous mirror term: f_wall = -V (R_ref <grad p>_i' + f_rep), per face
-      for (std::size_t k = 0; k < max_faces3; ++k) {
-        TriangleForces& f = walls_.forces[k];
-        const erp::TriangleHits& h = walls_.hits[k];
-        f.triangle[i] = h.triangle[i];
-        f.bary[i] = h.triangle[i] >= 0 ? h.bary[i] : Vec3::Zero();
-        f.f[i] = h.triangle[i] >= 0 ? Vec3(-V * wall[k]) : Vec3::Zero();
-      }
+      walls_.terms.record_forces(i, wall, V, walls_.forces); // eq. 52, per face and piece
     }
     const VecD<D> dv = -dt * inv_rho * grad;
     for (std::size_t a = 0; a < D; ++a) {

@@ -14,6 +14,8 @@ void ConvexFaces::resize(std::size_t n_points) {
   pieces.resize(n_points);
   for (std::size_t q = 0; q < max_pieces; ++q) {
     face[q].resize(n_points);
+    seed[q].resize(n_points);
+    bary[q].resize(n_points);
     end[q].resize(n_points);
   }
   for (std::size_t k = 0; k < max_planes; ++k) {
@@ -116,8 +118,10 @@ void TriangleLocator::convex_faces(std::span<const double> x, std::span<const do
     // The acting faces' planes (a node and the normal), each a seed.
     std::array<Vec3, 3> acting_x, acting_n;
     std::size_t acting = 0, m = 0, q = 0;
-    const auto add_piece = [&](int face, std::size_t end) {
+    const auto add_piece = [&](int face, int seed, const Vec3& bary, std::size_t end) {
       convex.face[q][i] = static_cast<signed char>(face);
+      convex.seed[q][i] = seed;
+      convex.bary[q][i] = bary;
       convex.end[q][i] = static_cast<unsigned char>(end);
       ++q, m = end;
     };
@@ -128,12 +132,14 @@ void TriangleLocator::convex_faces(std::span<const double> x, std::span<const do
           nodes[static_cast<std::size_t>(walls_->triangles().node[static_cast<std::size_t>(t)][0])];
       acting_n[acting++] = walls_->face_normal(t);
       const std::size_t end = convex_piece(p, t, convex, i, m);
-      if (end > m + 1 && q < ConvexFaces::max_pieces) add_piece(static_cast<int>(k), end);
+      if (end > m + 1 && q < ConvexFaces::max_pieces)
+        add_piece(static_cast<int>(k), t, faces[k].bary[i], end);
     }
     // Seeds of their own: the solids standing on the acting faces.
     while (q < ConvexFaces::max_pieces && m + 1 < ConvexFaces::max_planes) {
       double best = r_e_ * r_e_;
       int best_id = -1;
+      Vec3 best_bary = Vec3::Zero();
       for_each_near(p, [&](const TriangleGeometry& g) {
         const Vec3& nt = walls_->face_normal(g.id);
         if ((p - g.a).dot(nt) <= tol || !turned(nt, std::span<const Vec3>(acting_n.data(), acting)))
@@ -142,14 +148,15 @@ void TriangleLocator::convex_faces(std::span<const double> x, std::span<const do
           if (convex.n[k][i].dot(nt) >= corner_face_max_cos) return;
         for (std::size_t k = 0; k < acting; ++k)
           if (!before_plane(g, acting_x[k], acting_n[k], tol)) return;
-        const double d2 = (p - triangle_point(closest_on_triangle(p, g.a, g.b, g.c), g.a, g.b, g.c))
-                              .squaredNorm();
-        if (d2 < best || (d2 == best && best_id >= 0 && g.id < best_id)) best = d2, best_id = g.id;
+        const TrianglePoint foot = closest_on_triangle(p, g.a, g.b, g.c);
+        const double d2 = (p - triangle_point(foot, g.a, g.b, g.c)).squaredNorm();
+        if (d2 < best || (d2 == best && best_id >= 0 && g.id < best_id))
+          best = d2, best_id = g.id, best_bary = Vec3(1.0 - foot.v - foot.w, foot.v, foot.w);
       });
       if (best_id < 0) break;
       const std::size_t end = convex_piece(p, best_id, convex, i, m);
       if (end == m + 1) break;
-      add_piece(-1, end);
+      add_piece(-1, best_id, best_bary, end);
     }
     convex.pieces[i] = static_cast<unsigned char>(q);
   });

@@ -61,8 +61,8 @@ Scene box_in_tank(bool convex_corners) {
     double solid_pnd = 0.0;
     for (const Vec3& q : solid) solid_pnd += w((q - x[i]).norm());
     Vec3 mirror = Vec3::Zero(); // the wall term (one face, no contact at rest)
-    std::array<Vec3, emps::max_faces3> per_face;
-    terms.add_pressure(i, 0.0005, mirror, per_face);
+    emps::WallShares3 shares;
+    terms.add_pressure(i, 0.0005, mirror, shares);
     const double half_space =
         hits[0].feature[i] == TriangleFeature::face
             ? -3.0 / s.n0 * 2.0 * s.P * erp::wall_gradient_sum<3>(hits[0].r[i], l0, r_e, w)
@@ -131,4 +131,63 @@ TEST_CASE("emps 3-D walls: the convex wedge takes solid away from pnd and weaken
   }
   CHECK(corrected > 0);
   CHECK(pushed > 0);
+}
+
+TEST_CASE("emps 3-D walls: between two boxes each convex piece's share is its own lattice sum, "
+          "recorded on its own box",
+          "[emps][walls3d][convex]") {
+  // Two 4 l0 boxes 2 l0 apart along x in the 18 l0 tank, the lattice outside them at rest under
+  // P: between them a particle's nearest face and the facing one (a corner face) both seed a
+  // piece, of two solids, so the pieces are disjoint (their intersection empty) and each share
+  // (ConvexPart::share) is that piece's region_lattice_sum3 alone (no other acting face: no
+  // images).
+  const double l0 = 0.01, P = 1000.0 * 9.81 * 0.18;
+  emps::test::CubeTank tank(l0, true);
+  const std::array<Vec3, 2> lo{l0 * Vec3(4, 7, 7), l0 * Vec3(10, 7, 7)};
+  const std::array<Vec3, 2> hi{l0 * Vec3(8, 11, 11), l0 * Vec3(14, 11, 11)};
+  const erp::TriangleRange a = erp::add_box_obstacle(tank.walls, lo[0], hi[0], 1);
+  erp::add_box_obstacle(tank.walls, lo[1], hi[1], 2);
+  const auto box_of = [&](int t) { return t < a.first_triangle + a.triangle_count ? 0 : 1; };
+  std::vector<Vec3> x;
+  for (const Vec3& q : emps::test::block(18, 18, 18, l0)) {
+    bool inside = false;
+    for (std::size_t b = 0; b < 2; ++b)
+      inside = inside || ((q.array() > lo[b].array()).all() && (q.array() < hi[b].array()).all());
+    if (!inside) x.push_back(q);
+  }
+  const erp::TriangleLocator locator(tank.walls, tank.r_e);
+  const emps::test::AtRest rest(tank.o, x, P, locator);
+  const emps::SpaceWallTerms terms = rest.terms(tank.o, tank.n0);
+  const erp::ConvexFaces& convex = rest.convex;
+  emps::WallForces3 forces;
+  for (emps::TriangleForces& f : forces) f.resize(x.size());
+  int between = 0, into_own_box = 0;
+  double worst = 0.0;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    Vec3 grad = Vec3::Zero();
+    emps::WallShares3 shares;
+    terms.add_pressure(i, 5e-4, grad, shares);
+    terms.record_forces(i, shares, tank.o.volume(), forces);
+    if (convex.pieces[i] != 2 || rest.hits[2].triangle[i] >= 0 || convex.face[0][i] < 0 ||
+        convex.face[1][i] < 0 || box_of(convex.seed[0][i]) == box_of(convex.seed[1][i]))
+      continue;
+    ++between;
+    const emps::SpaceWallTerms::ConvexPart part = terms.convex_part(i);
+    for (std::size_t q = 0; q < 2; ++q) {
+      std::vector<erp::HalfSpace3> piece;
+      for (std::size_t k = convex.begin(q, i); k < convex.end[q][i]; ++k)
+        piece.push_back({convex.n[k][i], convex.s[k][i]});
+      const auto own = erp::region_lattice_sum3(piece, l0, tank.r_e, tank.w);
+      REQUIRE(own);
+      worst = std::max(worst, (part.share[q] - own->gradient).norm() / own->gradient.norm());
+      const int b = box_of(forces[emps::max_faces3 + q].triangle[i]);
+      const Vec3 load = -forces[emps::max_faces3 + q].f[i];
+      into_own_box += load.dot(0.5 * (lo[b] + hi[b]) - x[i]) > 0.0;
+    }
+  }
+  INFO(between << " particles with a piece of each box; worst |share - own sum| / |own sum| "
+               << worst << ", loads into their own box " << into_own_box);
+  CHECK(between > 0);
+  CHECK(worst <= 1e-12);
+  CHECK(into_own_box == 2 * between);
 }

@@ -25,7 +25,7 @@ struct Sample {
   bool seeded;      ///< one of them seeded by no acting face
   double pnd_error; ///< pnd minus the reference
   Vec3 gradient;    ///< eq. 10 at uniform P: the fluid's sum plus the wall terms
-  Vec3 faces_sum;   ///< the wall term's shares on the faces (eq. 52) summed
+  Vec3 faces_sum;   ///< the wall term's shares on the faces and pieces (eq. 52) summed
   Vec3 wall;        ///< the wall term
   Vec3 convex;      ///< the pieces' term
   Vec3 to_box;      ///< from the particle to the box's nearest point
@@ -81,14 +81,15 @@ Scene box_on_floor(bool convex_corners) {
     double solid_pnd = 0.0;
     for (const Vec3& q : solid) solid_pnd += w((q - x[i]).norm());
     Vec3 wall = Vec3::Zero();
-    std::array<Vec3, emps::max_faces3> per_face;
-    terms.add_pressure(i, 0.0005, wall, per_face);
+    emps::WallShares3 shares;
+    terms.add_pressure(i, 0.0005, wall, shares);
     const emps::SpaceWallTerms::ConvexPart part = terms.convex_part(i);
     bool seeded = false;
     for (std::size_t q = 0; q < convex.pieces[i]; ++q) seeded = seeded || convex.face[q][i] < 0;
     Vec3 faces_sum = Vec3::Zero();
     for (std::size_t k = 0; k < emps::max_faces3; ++k)
-      if (hits[k].triangle[i] >= 0) faces_sum += per_face[k];
+      if (hits[k].triangle[i] >= 0) faces_sum += shares[k];
+    for (std::size_t q = 0; q < convex.pieces[i]; ++q) faces_sum += shares[emps::max_faces3 + q];
     s.samples.push_back({zone, convex.pieces[i], seeded,
                          terms.pnd(i, fluid_pnd) - (fluid_pnd + solid_pnd),
                          3.0 / s.n0 * fluid + wall, faces_sum, wall, terms.convex_pressure(i, part),
@@ -135,7 +136,7 @@ TEST_CASE("emps 3-D walls: at the foot of a box standing on the floor pnd at res
     CHECK(pnd_with[z] < 1e-12);
     CHECK(grad_with[z] < 1e-12);
   }
-  INFO("the faces' shares against the wall term: " << split);
+  INFO("the faces' and pieces' shares against the wall term: " << split);
   CHECK(split < 1e-12);
   CHECK(seeded[edge_foot] > 0); // no face of the box acts there (the floor nearest)
   // Without: the box missing beyond its vertical edges' feet, the half-spaces beside them.

@@ -153,7 +153,8 @@ void check3(const Scene& scene, Section& s, std::vector<Section>& probes) {
 // Bytes per fluid particle in 3-D, as emps_plugin.cpp counts 2-D: the registered particle
 // arrays, the lattice positions, neighbour rows of `capacity` (EmpsFluid3's) with the build
 // positions, the cell grid, three faces of erp::TriangleHits (137 B) and of TriangleForces
-// (52 B), with convex_corners the convex pieces' planes (erp::ConvexFaces, 263 B), the scratch
+// (52 B), with convex_corners the convex pieces (erp::ConvexFaces, their seeds and planes, 347 B)
+// and their three slots of TriangleForces, the scratch
 // and keep arrays and the output buffers; coupled, the particle arrays once more (the state
 // TriangleAdapter saves for iterative coupling).
 Footprint footprint3(const Scene& scene) {
@@ -163,9 +164,10 @@ Footprint footprint3(const Scene& scene) {
   const double capacity = std::ceil(2.0 * 4.0 / 3.0 * std::numbers::pi * std::pow(reach, 3)) + 16;
   const auto particle = static_cast<double>(emps::Particles3().fields.bytes_per_particle());
   const double saved_state = scene.structures.empty() ? 0.0 : particle;
-  using Convex = erp::ConvexFaces; // pieces, face and end of each piece, n and s of each plane
+  using Convex = erp::ConvexFaces; // pieces; face, end, seed and bary of each piece; n, s a plane
   const double convex = o.wall.convex_corners
-                            ? 1 + 2 * Convex::max_pieces + Convex::max_planes * (sizeof(Vec3) + 8)
+                            ? 1 + Convex::max_pieces * (2 + sizeof(int) + sizeof(Vec3) + 52) +
+                                  Convex::max_planes * (sizeof(Vec3) + 8)
                             : 0.0;
   const double per_particle = particle + saved_state + 24 + (capacity * 4 + 4 + 24) + 8 + 3 * 137 +
                               3 * 52 + convex + 24 + 1 + (24 + 24 + 8);

@@ -102,34 +102,18 @@ struct PlaneWalls {
   long hits_layout = -1; ///< the fluid's layout when `hits` were computed (-1: stale)
 };
 
-/// The 3-D wall force of the last step on face k of each particle (eq. 52 without the viscous
-/// mirror term yet: the pressure mirror, the images behind two or three walls and the contact
-/// term, times V_i): the wall receives -f at the point of `triangle` with barycentric coordinates
-/// `bary` (x_wall = bary[0] x_a + bary[1] x_b + bary[2] x_c); triangle = -1 where the particle has
-/// no such face. The images behind several walls are split over those faces along their normals
-/// (split_corner_term); f summed over the faces is what the walls add to the particle's momentum.
-struct TriangleForces {
-  std::vector<int> triangle;
-  std::vector<Vec3> bary, f;
-  void resize(std::size_t n) {
-    triangle.resize(n);
-    bary.resize(n);
-    f.resize(n);
-  }
-};
-using WallForces3 = std::array<TriangleForces, max_faces3>;
-
-/// The 3-D fluid's walls: triangles (static or moved by the caller, as `moving` says from the
+/// The 3-D fluid's walls: triangles (static or moved by the caller, as `walls_move` says from the
 /// start), their index, the hits of up to three faces (the nearest triangle, the other planes of
-/// a concave edge or corner) and the wall terms.
+/// a concave edge or corner), the convex pieces, the wall terms and the wall forces (eq. 52, per
+/// face and piece: wall_slots3).
 struct SpaceWalls {
   SpaceWalls(const FluidOptions3& options, double n0, const erp::TriangleWallSet& walls,
-             bool moving, const Particles3& particles, const particles::BasicCellGrid<3>& grid);
+             bool walls_move, const Particles3& particles, const particles::BasicCellGrid<3>& grid);
   SpaceWalls(const SpaceWalls&) = delete; // before's locator points at its walls
   SpaceWalls& operator=(const SpaceWalls&) = delete;
   /// The walls as the step starts (t^n), for the viscous stage at x^n (2-D reuses the last x*
   /// hits, taken with the walls at t^n): `before`'s when the walls move, else `locator`.
-  const erp::TriangleLocator& at_step_start() const { return moving ? before->locator : locator; }
+  const erp::TriangleLocator& at_step_start() const { return moving() ? before->locator : locator; }
   /// Moving walls: sets `before` to `nodes` (the next step's t^n, restore, a checkpoint) and
   /// refits its index; static walls: nothing (the walls are their own t^n).
   void set_step_start(const erp::TriangleWallNodes& nodes);
@@ -142,12 +126,13 @@ struct SpaceWalls {
   };
   erp::TriangleLocator locator;
   std::optional<StepStart> before; ///< moving walls only
+  /// The caller moves the walls' nodes (refit every step), else never.
+  bool moving() const { return before.has_value(); }
   SpaceHits hits;
   erp::ConvexFaces convex; ///< the convex edges' and corners' planes (with convex_corners)
   SpaceWallTerms terms;
   WallForces3 forces;
   bool corner_faces, convex_corners;
-  bool moving; ///< the caller moves the walls' nodes (refit every step), else never
 };
 
 template <int D> using EmpsWalls = std::conditional_t<D == 2, PlaneWalls, SpaceWalls>;

@@ -6,9 +6,9 @@
 // space_wall_pnd.cpp, space_mirror_pressure.cpp, space_corner_mirror_pressure.cpp,
 // space_corner_split.cpp (split_corner_term), space_mirror_viscous.cpp, space_wall_contact.cpp,
 // space_wall_gap.cpp, space_convex_part.cpp (the convex edges' and corners' pieces),
-// space_wall_pressure.cpp (the pressure terms summed). Not in 3-D yet: the viscous mirror's
-// images behind two and three walls, WallContact::viscous and WallPressure::neighbours (the fluid
-// refuses the last two).
+// space_wall_pressure.cpp (the pressure terms summed), space_wall_forces.cpp (eq. 52's
+// mapping). Not in 3-D yet: the viscous mirror's images behind two and three walls,
+// WallContact::viscous and WallPressure::neighbours (the fluid refuses the last two).
 #include "fluid_emps/options.hpp"
 #include "fluid_emps/particles.hpp"
 #include "geometry_erp/convex_wedge3.hpp"
@@ -26,6 +26,28 @@ namespace fsi::emps {
 /// Faces that can act on a particle in 3-D: the nearest wall, and two more at a concave corner.
 inline constexpr std::size_t max_faces3 = 3;
 using SpaceHits = std::array<erp::TriangleHits, max_faces3>;
+/// The slots of a particle's wall force in 3-D (eq. 52): slot k < max_faces3 acting face k
+/// (hits[k]), slot max_faces3 + q convex piece q (erp::ConvexFaces) on its seed triangle.
+inline constexpr std::size_t wall_slots3 = max_faces3 + erp::ConvexFaces::max_pieces;
+using WallShares3 = std::array<Vec3, wall_slots3>;
+
+/// The 3-D wall force of the last step in one slot of each particle (eq. 52 without the viscous
+/// mirror term yet: the pressure mirror, the images behind two or three walls and the contact
+/// term, or a convex piece's term, times V_i): the wall receives -f at the point of `triangle`
+/// with barycentric coordinates `bary` (x_wall = bary[0] x_a + bary[1] x_b + bary[2] x_c);
+/// triangle = -1 where the particle has no such face or piece. f summed over the slots is what
+/// the walls add to the particle's momentum. The pieces' slots are empty (size 0) without
+/// WallOptions::convex_corners.
+struct TriangleForces {
+  std::vector<int> triangle;
+  std::vector<Vec3> bary, f;
+  void resize(std::size_t n) {
+    triangle.resize(n);
+    bary.resize(n);
+    f.resize(n);
+  }
+};
+using WallForces3 = std::array<TriangleForces, wall_slots3>;
 
 /// The images' term c behind two or three walls (SpaceWallTerms::corner_mirror_pressure) split
 /// over the faces that make it: c = sum_k c_k n_k by least squares over the faces' normals, share
@@ -52,11 +74,15 @@ public:
   /// half-space, z or mirror of its own.
   struct ConvexPart {
     unsigned replaced = 0;    ///< bit k: acting face k seeds a piece
-    std::size_t owner = 0;    ///< the face whose wall force records the pieces' term (eq. 52)
     erp::LatticeSum3 lattice; ///< the pieces' lattice in front of the other faces (eqs. 20, 10)
     /// eq. 10's geometric sum over that lattice reflected across the other faces (each, each pair,
     /// the three): where their mirrors find no fluid to image, the pieces being solid.
     Vec3 images = Vec3::Zero();
+    /// Piece q's share of lattice.gradient + images, for its force (eq. 52): each term of the
+    /// inclusion-exclusion shared equally among the pieces it intersects, so that a lattice
+    /// point in t pieces gives 1/t to each (a point in one piece, all of it); the shares sum to
+    /// the whole to round-off.
+    std::array<Vec3, erp::ConvexFaces::max_pieces> share{Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
   };
   /// Empty without convex_corners, without pieces, or where a plane is not a box's.
   ConvexPart convex_part(std::size_t i) const;
@@ -69,16 +95,23 @@ public:
   /// The pieces' pressure term: virtual particles at p_i (eq. 26) on their lattice and its
   /// images, (d/n0) 2 p_i (lattice.gradient + images) (space_convex_part.cpp).
   Vec3 convex_pressure(std::size_t i, const ConvexPart& part) const;
+  /// Piece q's part of it, (d/n0) 2 p_i share[q] (space_convex_part.cpp).
+  Vec3 piece_pressure(std::size_t i, const ConvexPart& part, std::size_t q) const;
   /// The pressure term of the lattice behind two walls (each pair of acting faces not in
   /// `replaced`) and three (a corner), which no single face's mirror images: eqs. 25-26 across
   /// several planes (space_corner_mirror_pressure.cpp). Zero with fewer than two faces.
   Vec3 corner_mirror_pressure(std::size_t i, unsigned replaced = 0) const;
   /// Adds the wall part of <grad p>_i to grad (space_wall_pressure.cpp): each acting face's mirror
   /// pressure (unless it seeds a convex piece) and contact terms (eqs. 25-27), the images behind
-  /// two or three faces once, the convex pieces' term; `per_face` its share on each face for eq. 52
-  /// (the images split by split_corner_term, the pieces' term on ConvexPart::owner).
-  void add_pressure(std::size_t i, double dt, Vec3& grad,
-                    std::array<Vec3, max_faces3>& per_face) const;
+  /// two or three faces once, the convex pieces' term; `shares` its share in each slot for eq. 52
+  /// (wall_slots3: the images split over the faces by split_corner_term, each piece's term,
+  /// ConvexPart::share, in its own slot).
+  void add_pressure(std::size_t i, double dt, Vec3& grad, WallShares3& shares) const;
+  /// Eq. 52's mapping: particle i's shares as the forces f = -V share in each slot, on the slot's
+  /// triangle at its wall point (a face's x_wall, a piece's nearest point on its seed triangle;
+  /// triangle -1 in an empty slot; the pieces' slots, sized only with convex_corners, left alone
+  /// without) (space_wall_forces.cpp).
+  void record_forces(std::size_t i, const WallShares3& shares, double V, WallForces3& forces) const;
   /// The viscous mirror sums on face k (eq. 24; `approach`: the approach viscosity's too)
   /// (space_mirror_viscous.cpp).
   MirrorViscous3 mirror_viscous(std::size_t i, std::size_t k, bool approach) const;

@@ -26,13 +26,17 @@ erp::HalfSpace3 reflected(const erp::HalfSpace3& h, const Vec3& m, double r) {
 // pair and the three, added here as `images`, weighted as corner_mirror_pressure weighs its
 // images (turn_share: 1 at right angles; planes that are not a box's make region_lattice_sum3
 // refuse, and the part is empty: the faces' half-spaces as without convex_corners).
+// The union's sum is not each piece's own sum added up where pieces overlap (two seeds of one
+// solid): the term of a set of s pieces goes 1/s to each (ConvexPart::share). A point in t pieces
+// then gives piece q sum over the sets S of them holding q of (-1)^(|S|+1)/|S| = 1/t (as
+// C(t-1, s-1)/s = C(t, s)/t); disjoint pieces (other solids) have empty intersections, and each
+// its own sum.
 SpaceWallTerms::ConvexPart SpaceWallTerms::convex_part(std::size_t i) const {
   if (!o_.convex_corners || convex_.pieces[i] == 0) return {};
   const std::size_t pieces = convex_.pieces[i];
   ConvexPart part;
   for (std::size_t q = 0; q < pieces; ++q)
     if (convex_.face[q][i] >= 0) part.replaced |= 1u << convex_.face[q][i];
-  part.owner = part.replaced != 0 ? static_cast<std::size_t>(std::countr_zero(part.replaced)) : 0;
   std::array<std::size_t, max_faces3> on{};
   const std::size_t faces = acting_faces(i, on, part.replaced);
   constexpr std::size_t most = erp::ConvexFaces::max_planes + max_faces3;
@@ -50,6 +54,7 @@ SpaceWallTerms::ConvexPart SpaceWallTerms::convex_part(std::size_t i) const {
     if (!lattice) return {};
     part.lattice.weight += sign * lattice->weight;
     part.lattice.gradient += sign * lattice->gradient;
+    Vec3 images = Vec3::Zero(); // this set's images, for the pieces' shares
     for (unsigned across = 1; across < 1u << faces; ++across) {
       std::array<erp::HalfSpace3, most> image = region;
       double weight = 1.0;
@@ -63,13 +68,21 @@ SpaceWallTerms::ConvexPart SpaceWallTerms::convex_part(std::size_t i) const {
       const auto mirrored = erp::region_lattice_sum3(std::span(image.data(), m), l0_, r_e_, w_e_);
       if (!mirrored) return {};
       part.images += sign * weight * mirrored->gradient;
+      images += weight * mirrored->gradient;
     }
+    const Vec3 each = sign / std::popcount(set) * (lattice->gradient + images);
+    for (std::size_t q = 0; q < pieces; ++q)
+      if (set >> q & 1u) part.share[q] += each;
   }
   return part;
 }
 
 Vec3 SpaceWallTerms::convex_pressure(std::size_t i, const ConvexPart& part) const {
   return 3.0 / n0_ * ((2.0 * p_.p[i]) * (part.lattice.gradient + part.images));
+}
+
+Vec3 SpaceWallTerms::piece_pressure(std::size_t i, const ConvexPart& part, std::size_t q) const {
+  return 3.0 / n0_ * ((2.0 * p_.p[i]) * part.share[q]);
 }
 
 } // namespace fsi::emps

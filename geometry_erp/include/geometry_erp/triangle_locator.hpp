@@ -74,11 +74,15 @@ struct TriangleHits {
 /// list: piece q has planes begin(q) .. end[q] - 1, the first its seed's, the others its convex
 /// faces'; unit normal n (into the fluid) and the particle's signed distance s from the plane
 /// (> 0 in front). face[q]: the acting face k (faces[k] of the query) that seeds it, -1 for a seed
-/// of its own.
+/// of its own; seed[q] its seed triangle and bary[q] the barycentric coordinates on it of the
+/// particle's nearest point there (an acting face's x_wall), where eq. 52 records the piece's
+/// force.
 struct ConvexFaces {
   static constexpr std::size_t max_pieces = 3, max_planes = 8;
   std::vector<unsigned char> pieces;
   std::array<std::vector<signed char>, max_pieces> face;
+  std::array<std::vector<int>, max_pieces> seed;
+  std::array<std::vector<Vec3>, max_pieces> bary;
   std::array<std::vector<unsigned char>, max_pieces> end;
   std::array<std::vector<Vec3>, max_planes> n;
   std::array<std::vector<double>, max_planes> s;
