@@ -328,6 +328,11 @@ for name, old, new, names in [  # the scene file named
      ["fluid.wall_contact", "not available in 3-D yet"]),
     ("water_height_no_point", "quantity: particles", "quantity: water_height",
      ["output.probes[7].point", "required key missing"]),
+    ("wall_pressure_off_wall", "quantity: particles",
+     "quantity: wall_pressure\n      point: [0.1, 0.05, 0.1]",
+     ["output.probes[7].point", "from the nearest wall triangle"]),
+    ("pnd_fraction_not_a_gauge", "quantity: particles", "quantity: particles\n      pnd_fraction: 0.25",
+     ["output.probes[7].pnd_fraction", "only a water_height probe"]),
 ]:
     scene_case("e3d_" + name, edit(E3, old, new), names)
 # A plate under part of the tank's floor: a tank triangle partly covered is refused (issue 46).

@@ -63,7 +63,10 @@ ProbeSpec read_probe(Section s) {
                "N/m, of the last step; (3-D, type emps) particles, their count, wall_gap, "
                "the smallest distance of a particle centre to its nearest wall, m, and "
                "water_height, a wave gauge at point: the top (centre + l0/2) of the highest "
-               "particle with pnd >= n0/2 within l0 of the vertical through point, above it, m");
+               "particle with pnd >= n0/2 (pnd_fraction) within l0 of the vertical through "
+               "point, above it, m, and wall_pressure, the pressure the wall sees at point (on a "
+               "wall triangle): the particles' wall force on the point's plane per area, "
+               "Wendland-weighted within radius, Pa");
   p.structure = s.text("structure", "", "structure name, for displacement probes");
   p.node = s.optional_integer("node", Range::non_negative(), "FE node index (or give point)");
   const std::string point_doc = "reference position of the FE node or the TL-SPH point, or the "
@@ -89,6 +92,14 @@ ProbeSpec read_probe(Section s) {
                             "the particles' displacements (linear correction, reference "
                             "configuration); false: the particle nearest to point (type fem: "
                             "the node at point either way, the FE interpolation there)");
+  p.radius = s.optional_real("radius", Range::positive(),
+                             "wall_pressure: radius of the wall patch averaged over, m "
+                             "(absent: the fluid's r_e)");
+  const auto pnd_fraction =
+      s.optional_real("pnd_fraction", Range::left_open(0.0, 1.0),
+                      "water_height: a particle counts when its pnd >= pnd_fraction n0 "
+                      "(absent: 0.5, the bulk, not the spray nor a front's thin tip)");
+  p.pnd_fraction = pnd_fraction.value_or(0.5);
   if (!s.context().documenting()) {
     const bool ok_name = !p.name.empty() && std::all_of(p.name.begin(), p.name.end(), [](char c) {
       return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
@@ -106,7 +117,11 @@ ProbeSpec read_probe(Section s) {
         s.context().dimension != 3)
       s.fail("quantity", p.quantity + " needs a 3-D scene (dimension: 3)");
     const bool at_point = p.quantity == "pressure" || p.quantity == "water_height" ||
-                          p.quantity.starts_with("velocity_");
+                          p.quantity == "wall_pressure" || p.quantity.starts_with("velocity_");
+    if (p.radius && p.quantity != "wall_pressure")
+      s.fail("radius", "only a wall_pressure probe has a radius");
+    if (pnd_fraction && p.quantity != "water_height")
+      s.fail("pnd_fraction", "only a water_height probe has a pnd_fraction");
     if (at_point && !p.point && !p.point3) s.fail("point", "required key missing");
     if (p.quantity == "mean_pressure") {
       if (!p.box_min && !p.box3_min) s.fail("min", "required key missing");

@@ -32,6 +32,8 @@ struct ProbeSpec {
   std::optional<Vec3> box3_min, box3_max; ///< the same in a 3-D scene
   std::string part = "total";             ///< wall_force: total|pressure|repulsive|viscous
   bool interpolate = false;               ///< tlsph: kernel interpolation at point, not nearest
+  std::optional<double> radius;           ///< wall_pressure: the wall patch's radius, m
+  double pnd_fraction = 0.5;              ///< water_height: counts pnd >= pnd_fraction n0
   int line = 0;                           ///< scene line, for late messages
   std::string key;                        ///< its path in messages, `output.probes[2]`
 };

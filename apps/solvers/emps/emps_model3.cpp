@@ -2,6 +2,7 @@
 
 #include "emps/emps_report.hpp"
 #include "emps/tank_cover.hpp"
+#include "emps/wall_point_pressure.hpp"
 
 #include "fsi/core/error.hpp"
 #include "fsi/core/format.hpp"
@@ -202,6 +203,7 @@ void validate3(const Scene& scene, const std::vector<InterfaceMesh3>& interfaces
   check_open_edges(scene, f, x);
   std::vector<erp::InterfaceTriangles> triangles;
   const std::unique_ptr<erp::TriangleWallSet> walls = fluid_walls(scene, interfaces, triangles);
+  WallPointProbes(scene, *walls, f.options.r_e(), f.tank_motion || !interfaces.empty());
   if (walls->triangles().size() == 0) return;
   if (const auto motion = tank_motion(f, *walls)) motion->move(*walls, 0.0); // the fill at t = 0
   const erp::TriangleLocator locator(*walls, f.options.r_e());
@@ -246,6 +248,7 @@ EmpsModel3::EmpsModel3(const Scene& scene, const std::vector<InterfaceMesh3>& in
     fail_at(scene, scene.fluid->line, "fluid", e.what());
   }
   adapter_ = std::make_unique<TriangleAdapter>(*fluid_, *walls_, interfaces_);
+  wall_points_ = std::make_unique<WallPointProbes>(scene, *walls_, f.options.r_e(), false);
 }
 
 coupling::FluidSolver& EmpsModel3::coupling_solver() {
@@ -269,7 +272,8 @@ bool EmpsModel3::decompose(const Ranks& ranks) {
 void EmpsModel3::gather_frame() {
   if (!ranks_.decomposed()) return;
   gathered_.gather(ranks_, fluid_->particles(), fluid_->owned());
-  kinetic_energy_ = fluid_->kinetic_energy(); // collective
+  kinetic_energy_ = fluid_->kinetic_energy();              // collective
+  wall_points_->gather(fluid_->triangle_forces(), ranks_); // collective
   if (ranks_.rows())
     ranks_.evaluate_probes(probes_, [&](const ProbeSpec& p) { return evaluate(p); });
 }
@@ -334,11 +338,13 @@ std::optional<double> EmpsModel3::evaluate(const ProbeSpec& probe) const {
     for (std::size_t i = 0; i < n; ++i) {
       const Vec3 d = x(i) - *probe.point3;
       const double h = d.dot(up);
-      if (p.pnd[i] >= 0.5 * fluid_->n0() && (d - h * up).norm() < o.l0)
+      if (p.pnd[i] >= probe.pnd_fraction * fluid_->n0() && (d - h * up).norm() < o.l0)
         top = std::max(top, h + 0.5 * o.l0);
     }
     return ranks_.frame_max(top);
   }
+  if (probe.quantity == "wall_pressure") // the wall's own (wall_point_pressure.hpp)
+    return wall_points_->value(probe, fluid_->triangle_forces(), ranks_.decomposed());
   if (probe.quantity == "particles") return ranks_.frame_sum(static_cast<double>(n));
   if (probe.quantity == "wall_gap") {
     locator_->update(); // the interfaces' triangles move

@@ -9,6 +9,7 @@
 #include "emps/emps_spec.hpp"
 #include "emps/frame_particles.hpp"
 #include "emps/triangle_adapter.hpp"
+#include "emps/wall_point_pressure.hpp"
 #include "fluid_emps/emps_fluid.hpp"
 #include "fsi_app/solver_plugin.hpp"
 #include "geometry_erp/motion3.hpp"
@@ -44,8 +45,9 @@ public:
   /// particles: the count; wall_gap: the smallest distance of a particle centre to its nearest
   /// triangle within r_e (negative behind it; +inf with none near), m; water_height: a wave
   /// gauge, the top (centre + l0/2 against gravity) of the highest bulk particle (pnd >= n0/2)
-  /// within l0 of the vertical through the point, above the point, m (0: none); the 2-D
-  /// probes' others.
+  /// within l0 of the vertical through the point, above the point, m (0: none; the bulk's
+  /// threshold is the probe's pnd_fraction); wall_pressure: WallPointPressure's p at the
+  /// probe's point, Pa; the 2-D probes' others.
   std::optional<double> probe(const ProbeSpec& probe) const override;
   /// The grid "particles" (3-D points): velocity, pressure, pnd, free_surface.
   void write_frame(FieldsFile& file, const std::vector<std::string>& fields) const override;
@@ -87,9 +89,10 @@ private:
   mutable erp::TriangleHits hits_;
   std::size_t initial_count_ = 0;
   std::vector<ProbeSpec> probes_; // the scene's, evaluated by gather_frame on every rank's rows
-  mutable std::vector<double> xyz_, v_, flag_; // output buffers
-  GatheredParticles<3> gathered_;              // on rank 0, in id order
-  double kinetic_energy_ = 0.0;                // decomposed: at the last gather, J
+  mutable std::vector<double> xyz_, v_, flag_;   // output buffers
+  GatheredParticles<3> gathered_;                // on rank 0, in id order
+  double kinetic_energy_ = 0.0;                  // decomposed: at the last gather, J
+  std::unique_ptr<WallPointProbes> wall_points_; // the scene's wall_pressure probes
 };
 
 /// The fluid particles of a 3-D scene's regions (EmpsModel3's fill).

@@ -54,7 +54,7 @@ void check(const Scene& scene, Section& s, std::vector<Section>& probes) {
                   {o.domain_min, o.domain_max});
   for (std::size_t i = 0; i < scene.output.probes.size(); ++i) {
     const std::string& q = scene.output.probes[i].quantity;
-    if (q == "particles" || q == "wall_gap" || q == "water_height")
+    if (q == "particles" || q == "wall_gap" || q == "water_height" || q == "wall_pressure")
       probes[i].fail("quantity", q + " is a probe of 3-D scenes (dimension: 3) for type emps");
   }
 }
@@ -85,7 +85,7 @@ FluidPlugin plugin() {
           footprint,
           {"velocity", "pressure", "pnd", "free_surface"},
           {"surge_front", "pressure", "mean_pressure", "mean_speed", "kinetic_energy", "particles",
-           "wall_gap", "water_height", "wall_force_x", "wall_force_y"},
+           "wall_gap", "water_height", "wall_pressure", "wall_force_x", "wall_force_y"},
           [](const Scene& scene,
              const std::vector<InterfaceMesh3>& interfaces) -> std::unique_ptr<FluidPart> {
             return std::make_unique<EmpsModel3>(scene, interfaces);
