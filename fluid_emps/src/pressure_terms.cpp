@@ -78,7 +78,8 @@ template <int D> VecSum<D> BasicEmpsFluid<D>::fluid_gradient(std::size_t i, doub
 }
 
 // v^{n+1} = v* - dt/rho <grad p>^ERP, x^{n+1} = x* + dt (v^{n+1} - v*) (eqs. 10, 14, 25-27),
-// and the wall force of eq. 52 on each face (in 3-D without the viscous mirror term yet).
+// and the wall force of eq. 52 on each face (the viscous part: the viscous stage's, in 2-D added
+// to it here, in 3-D in slots of its own).
 template <int D> void BasicEmpsFluid<D>::pressure_gradient(double dt) {
   Timer timer(times_.pressure_gradient);
   ParticleSet& p = particles_;
@@ -94,7 +95,7 @@ template <int D> void BasicEmpsFluid<D>::pressure_gradient(double dt) {
     walls_.forces.resize(n);
     for (std::size_t k = 0; k < erp::max_faces; ++k) f_wall[k] = components(walls_.viscous[k]);
   } else {
-    for (std::size_t k = 0; k < wall_slots3; ++k) // the pieces' slots with convex_corners only
+    for (std::size_t k = 0; k < pressure_slots3; ++k) // the pieces' with convex_corners only
       walls_.forces[k].resize(k < max_faces3 || walls_.convex_corners ? n : 0);
   }
   parallel_for_balanced(n, [&](std::size_t i) {

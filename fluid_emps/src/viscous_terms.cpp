@@ -37,8 +37,12 @@ template <int D> void BasicEmpsFluid<D>::viscosity() {
   scratch_.resize(D * n);
   double* out = scratch_.data();
   std::array<std::array<double*, 2>, erp::max_faces> f_wall{}; // walls_.viscous (2-D)
+  const bool viscous_walls = nu > 0 || approach;
   if constexpr (D == 2)
     for (std::size_t k = 0; k < erp::max_faces; ++k) f_wall[k] = components(walls_.viscous[k]);
+  else // the viscous slots of eq. 52, empty without a viscous wall term
+    for (std::size_t k = 0; k < max_faces3; ++k)
+      walls_.forces[viscous_slot3 + k].resize(viscous_walls ? n : 0);
   // The closing-pair sum only when alpha > 0.
   // near_wall: its part on pairs with a particle within r_e of a wall (WallContact::viscous).
   const auto sweep = [&](auto artificial, auto near_wall) {
@@ -80,20 +84,21 @@ template <int D> void BasicEmpsFluid<D>::viscosity() {
         m.fill(Vec2::Zero());
         a_wall.fill(Vec2::Zero());
         for (std::size_t k = 0; k < erp::max_faces; ++k) {
-          if (!((nu > 0 || approach) && walls_.hits.face[k].segment[i] >= 0)) continue;
+          if (!(viscous_walls && walls_.hits.face[k].segment[i] >= 0)) continue;
           const MirrorViscous mirror = walls_.terms.mirror_viscous(i, k, approach);
           m[k] = c_lap * mirror.laplacian;
           a_wall[k] = nu_approach * c_lap * mirror.approach;
         }
         for (const Vec2& mk : m) lap[0] += mk.x(), lap[1] += mk.y();
-      } else { // 3-D: each face's eq. 24 term and approach viscosity, added to the particle
-        for (std::size_t k = 0; k < max_faces3; ++k) {
-          if (!((nu > 0 || approach) && walls_.hits[k].triangle[i] >= 0)) continue;
-          const MirrorViscous3 mirror = walls_.terms.mirror_viscous(i, k, approach);
-          for (std::size_t a = 0; a < D; ++a) {
-            lap[a] += c_lap * mirror.laplacian[static_cast<Eigen::Index>(a)];
-            a_wall3[a] += nu_approach * c_lap * mirror.approach[static_cast<Eigen::Index>(a)];
+      } else if (viscous_walls) { // 3-D: each face's eq. 24 term and approach viscosity, added
+        for (std::size_t k = 0; k < max_faces3; ++k) { // to the particle, its force recorded
+          Vec3 a_k = Vec3::Zero();
+          if (walls_.hits[k].triangle[i] >= 0) {
+            const MirrorViscous3 mirror = walls_.terms.mirror_viscous(i, k, approach);
+            a_k = c_lap * (nu * mirror.laplacian + nu_approach * mirror.approach);
+            for (std::size_t a = 0; a < D; ++a) a_wall3[a] += a_k[static_cast<Eigen::Index>(a)];
           }
+          walls_.terms.record_viscous(i, k, rho_V * a_k, walls_.forces); // eq. 52
         }
       }
       for (std::size_t a = 0; a < D; ++a) {

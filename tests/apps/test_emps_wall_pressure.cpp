@@ -51,7 +51,7 @@ TEST_CASE("EMPS 3-D wall pressure: the weight's integral over a whole disc and o
 // weighs rho g H l0^2), the force pushing the floor out of the fluid (along -z).
 TEST_CASE("EMPS 3-D wall pressure: still water's floor at its centre is rho g H, pushed out of "
           "the fluid",
-          "[apps][emps][3d]") {
+          "[apps][emps][3d][long]") {
   const double l0 = 0.02, g = 9.81, dt = 5e-4;
   const int n = 10;
   const double L = n * l0, H = n * l0;

@@ -14,8 +14,8 @@
 // Written once for D = 2 and 3 (docs/architecture.md, "Two and three dimensions"): the
 // fluid-fluid terms, the time integration, the diagnostics and the state are D-generic; the ERP
 // walls are segments (WallSet, WallTerms) in 2-D and triangles (TriangleWallSet, SpaceWallTerms)
-// in 3-D (their nodes moved by the caller, as 2-D's); the 3-D wall forces of eq. 52 without the
-// viscous mirror term yet.
+// in 3-D (their nodes moved by the caller, as 2-D's); the 3-D wall forces of eq. 52 in slots per
+// face, convex piece and viscous face (WallForces3).
 #include "fluid_emps/options.hpp"
 #include "fluid_emps/pair_sums.hpp"
 #include "fluid_emps/particles.hpp"

@@ -27,17 +27,24 @@ namespace fsi::emps {
 inline constexpr std::size_t max_faces3 = 3;
 using SpaceHits = std::array<erp::TriangleHits, max_faces3>;
 /// The slots of a particle's wall force in 3-D (eq. 52): slot k < max_faces3 acting face k
-/// (hits[k]), slot max_faces3 + q convex piece q (erp::ConvexFaces) on its seed triangle.
-inline constexpr std::size_t wall_slots3 = max_faces3 + erp::ConvexFaces::max_pieces;
-using WallShares3 = std::array<Vec3, wall_slots3>;
+/// (hits[k]), slot max_faces3 + q convex piece q (erp::ConvexFaces) on its seed triangle (the
+/// pressure stage's, pressure_slots3), slot viscous_slot3 + k face k's viscous mirror term at the
+/// viscous stage's hits (x^n).
+inline constexpr std::size_t pressure_slots3 = max_faces3 + erp::ConvexFaces::max_pieces;
+inline constexpr std::size_t viscous_slot3 = pressure_slots3;
+inline constexpr std::size_t wall_slots3 = pressure_slots3 + max_faces3;
+using WallShares3 = std::array<Vec3, pressure_slots3>;
 
-/// The 3-D wall force of the last step in one slot of each particle (eq. 52 without the viscous
-/// mirror term yet: the pressure mirror, the images behind two or three walls and the contact
-/// term, or a convex piece's term, times V_i): the wall receives -f at the point of `triangle`
-/// with barycentric coordinates `bary` (x_wall = bary[0] x_a + bary[1] x_b + bary[2] x_c);
-/// triangle = -1 where the particle has no such face or piece. f summed over the slots is what
-/// the walls add to the particle's momentum. The pieces' slots are empty (size 0) without
-/// WallOptions::convex_corners.
+/// The 3-D wall force of the last step in one slot of each particle (eq. 52: the pressure
+/// mirror, the images behind two or three walls and the contact term, or a convex piece's term,
+/// times V_i; or a face's viscous mirror term and approach viscosity, times rho V_i): the wall
+/// receives -f at the point of `triangle` with barycentric coordinates `bary` (x_wall = bary[0]
+/// x_a + bary[1] x_b + bary[2] x_c); triangle = -1 where the particle has no such face or piece.
+/// f summed over the slots is what the walls add to the particle's momentum. The pieces' slots
+/// are empty (size 0) without WallOptions::convex_corners, the viscous ones when no viscous wall
+/// term runs (viscosity and approach viscosity 0). The viscous slots are filled at the viscous
+/// stage: entry i there is the particle that was i then (a slot's entries need not follow a
+/// reordering; loads sum over them).
 struct TriangleForces {
   std::vector<int> triangle;
   std::vector<Vec3> bary, f;
@@ -112,6 +119,9 @@ public:
   /// triangle -1 in an empty slot; the pieces' slots, sized only with convex_corners, left alone
   /// without) (space_wall_forces.cpp).
   void record_forces(std::size_t i, const WallShares3& shares, double V, WallForces3& forces) const;
+  /// Face k's viscous wall force f on particle i in slot viscous_slot3 + k, at the hit of face k
+  /// (the viscous stage's) (space_wall_forces.cpp).
+  void record_viscous(std::size_t i, std::size_t k, const Vec3& f, WallForces3& forces) const;
   /// The viscous mirror sums on face k (eq. 24; `approach`: the approach viscosity's too)
   /// (space_mirror_viscous.cpp).
   MirrorViscous3 mirror_viscous(std::size_t i, std::size_t k, bool approach) const;
