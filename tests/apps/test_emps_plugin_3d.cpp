@@ -376,6 +376,11 @@ TEST_CASE("apps: a 3-D EMPS fluid region given as a closed surface (fluid.region
     const Footprint without = emps_plugin::footprint3(load_scene(
         kScene, {"fluid.regions=[]", "fluid.region_file=" + stl, "fluid.convex_corners=false"}));
     CHECK_THAT(with.bytes - without.bytes, Catch::Matchers::WithinRel(503.0 * with.count, 1e-12));
+    // The viscous wall terms' three slots of 52 B, counted only where a viscous wall term runs.
+    const Footprint inviscid = emps_plugin::footprint3(
+        load_scene(kScene, {"fluid.regions=[]", "fluid.region_file=" + stl, "fluid.viscosity=0",
+                            "fluid.wall_approach_viscosity=0"}));
+    CHECK_THAT(with.bytes - inviscid.bytes, Catch::Matchers::WithinRel(156.0 * with.count, 1e-12));
   }
   SECTION("beside the box of water: 1,080 particles, four steps with none lost") {
     emps_plugin::EmpsModel3 model(load_scene(kScene, {"fluid.region_file=" + stl}));

@@ -155,7 +155,8 @@ void check3(const Scene& scene, Section& s, std::vector<Section>& probes) {
 // arrays, the lattice positions, neighbour rows of `capacity` (EmpsFluid3's) with the build
 // positions, the cell grid, three faces of erp::TriangleHits (137 B) and of TriangleForces
 // (52 B), with convex_corners the convex pieces (erp::ConvexFaces, their seeds and planes, 347 B)
-// and their three slots of TriangleForces, the scratch
+// and their three slots of TriangleForces, with a viscous wall term (viscosity or approach
+// viscosity) three more slots (the viscous faces'), the scratch
 // and keep arrays and the output buffers; coupled, the particle arrays once more (the state
 // TriangleAdapter saves for iterative coupling).
 Footprint footprint3(const Scene& scene) {
@@ -170,8 +171,9 @@ Footprint footprint3(const Scene& scene) {
                             ? 1 + Convex::max_pieces * (2 + sizeof(int) + sizeof(Vec3) + 52) +
                                   Convex::max_planes * (sizeof(Vec3) + 8)
                             : 0.0;
+  const bool viscous_walls = o.viscosity > 0 || o.wall.mirror.approach_viscosity > 0;
   const double per_particle = particle + saved_state + 24 + (capacity * 4 + 4 + 24) + 8 + 3 * 137 +
-                              3 * 52 + convex + 24 + 1 + (24 + 24 + 8);
+                              (viscous_walls ? 6 : 3) * 52 + convex + 24 + 1 + (24 + 24 + 8);
   Footprint e;
   for (const Box& r : f.regions) e.count += (r.max - r.min).prod() / std::pow(o.l0, 3);
   if (f.region_surface) e.count += enclosed_volume(*f.region_surface) / std::pow(o.l0, 3);
