@@ -10,6 +10,7 @@
 // acoustic steps per second; wall_s_per_sim_s = wall-clock seconds of the timed loop per
 // simulated second; rss_MB = the process's resident set after the warm-up; rss_B_per_particle
 // its growth from before the fluid was built, per fluid particle (wall dummies included in it).
+#include "common/rss.hpp"
 #include "dam_break_options.hpp"
 #include "fluid_sph/sph_fluid.hpp"
 #include "fsi/core/parallel.hpp"
@@ -18,26 +19,11 @@
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
-#include <string>
 
 using namespace fsi;
+using fsi::bench::rss_bytes;
 
 namespace {
-
-double rss_bytes() {
-  std::ifstream in("/proc/self/status");
-  std::string key;
-  while (in >> key) {
-    if (key == "VmRSS:") {
-      double kb = 0.0;
-      in >> kb;
-      return kb * 1024.0;
-    }
-    std::getline(in, key);
-  }
-  return 0.0;
-}
 
 // The column's speed scales: c0 = 10 sqrt(2 g H), u_ref = 2 sqrt(g H), H = 2 m.
 const double kC0 = 10.0 * std::sqrt(2.0 * 9.81 * 2.0), kURef = 2.0 * std::sqrt(9.81 * 2.0);
