@@ -34,6 +34,9 @@ public:
   std::size_t global(std::size_t local) const;
   /// A sum over every rank when decomposed.
   double sum(double local) const { return hook_ ? hook_->sum(local) : local; }
+  /// The least and the largest of `local` over every rank when decomposed (collective).
+  double min(double local) const { return hook_ ? hook_->min(local) : local; }
+  double max(double local) const { return hook_ ? hook_->max(local) : local; }
   /// Bytes every rank has sent for ghosts so far (halo builds and updates), summed (collective).
   double halo_bytes() const { return hook_ ? hook_->sum(hook_->halo_bytes()) : 0.0; }
   /// Collective, decomposed: the spread over the ranks of their owned particles and of the wall

@@ -132,7 +132,7 @@ template <int D> void BasicEmpsFluid<D>::damp(double t, double dt) {
 template <int D>
 void BasicEmpsFluid<D>::refresh_neighbours(const particles::FieldList& changed, bool allow_reorder,
                                            long step, double t) {
-  Timer timer(times_.neighbours);
+  Timer<D> timer(times_.neighbours, times_, *decomposition_);
   ParticleSet& p = particles_;
   decomposition_->update_ghosts(p.fields, changed);
   const bool valid = neighbours_.valid(p.position.coords(), p.size(), 0.5 * options_.skin * r_e_);
@@ -161,7 +161,7 @@ void BasicEmpsFluid<D>::refresh_neighbours(const particles::FieldList& changed, 
 }
 
 template <int D> void BasicEmpsFluid<D>::query_walls([[maybe_unused]] bool step_start) {
-  Timer timer(times_.walls);
+  Timer<D> timer(times_.walls, times_, *decomposition_);
   if constexpr (D == 2) {
     walls_.locator->query(std::span<const double>(particles_.x),
                           std::span<const double>(particles_.y), walls_.hits);
@@ -206,7 +206,7 @@ template <int D> void BasicEmpsFluid<D>::check_crossed(long step, double t) cons
 template <int D> void BasicEmpsFluid<D>::advance(double t, double dt) {
   ParticleSet& p = particles_;
   {
-    Timer timer(times_.walls);
+    Timer<D> timer(times_.walls, times_, *decomposition_);
     if constexpr (D == 2)
       walls_.locator->update();
     else if (walls_.moving())
@@ -241,7 +241,7 @@ template <int D> void BasicEmpsFluid<D>::advance(double t, double dt) {
     viscosity();
   }
   {
-    Timer timer(times_.other);
+    Timer<D> timer(times_.other, times_, *decomposition_);
     const std::array<double*, D> x = components(p.position), v = components(p.velocity);
     const double* visc = scratch_.data();
     parallel_for(n, [&](std::size_t i) { // v* = v + dt (nu <lap v> + g), x* = x + dt v* (eq. 13)
@@ -265,7 +265,7 @@ template <int D> void BasicEmpsFluid<D>::advance(double t, double dt) {
   ++step_;
   if constexpr (D == 3)
     if (viscous) walls_.set_step_start(walls_.locator.walls().nodes()); // t^n of the next step
-  Timer timer(times_.other);
+  Timer<D> timer(times_.other, times_, *decomposition_);
   damp(t, dt);
   check_finite(step_, t + dt);
   remove_outside();

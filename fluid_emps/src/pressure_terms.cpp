@@ -12,7 +12,7 @@ namespace fsi::emps {
 // n*_i = sum_j w_ij + the wall part (eqs. 9, 20; WallTerms::pnd, SpaceWallTerms::pnd); p_i = c^2
 // rho/n0 (n*_i - n0), 0 on the free surface n*_i < beta n0 (eqs. 15, 17).
 template <int D> void BasicEmpsFluid<D>::density_and_pressure() {
-  Timer timer(times_.density);
+  Timer<D> timer(times_.density, times_, *decomposition_);
   ParticleSet& p = particles_;
   const std::size_t n = owned();
   const double stiffness = options_.sound_speed * options_.sound_speed * options_.density / n0_;
@@ -81,7 +81,7 @@ template <int D> VecSum<D> BasicEmpsFluid<D>::fluid_gradient(std::size_t i, doub
 // and the wall force of eq. 52 on each face (the viscous part: the viscous stage's, in 2-D added
 // to it here, in 3-D in slots of its own).
 template <int D> void BasicEmpsFluid<D>::pressure_gradient(double dt) {
-  Timer timer(times_.pressure_gradient);
+  Timer<D> timer(times_.pressure_gradient, times_, *decomposition_);
   ParticleSet& p = particles_;
   const std::size_t n = owned();
   const double c_grad = D / n0_;

@@ -19,7 +19,7 @@ namespace fsi::emps {
 // restricted to their line of centres (Monaghan's artificial viscosity in MPS form; not in the
 // paper, pairwise antisymmetric so momentum is kept).
 template <int D> void BasicEmpsFluid<D>::viscosity() {
-  Timer timer(times_.viscosity);
+  Timer<D> timer(times_.viscosity, times_, *decomposition_);
   ParticleSet& p = particles_;
   const std::size_t n = owned();
   const double c_lap = 2.0 * D / (lambda0_ * n0_);

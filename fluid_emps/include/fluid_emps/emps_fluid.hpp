@@ -82,9 +82,15 @@ struct WallForceParts {
   Vec2 total() const { return pressure + repulsive + viscous; }
 };
 
-/// Work counters of the last step, for benchmarks and run.json.
+/// Wall seconds of each part of the step so far, for benchmarks and run.json: each part net of
+/// the waits in MPI collectives within it, which are summed in `waited` (0 on one process).
 struct StepTimes {
   double neighbours = 0, walls = 0, viscosity = 0, density = 0, pressure_gradient = 0, other = 0;
+  double waited = 0;
+  /// This process's own work: every part, its waits left out.
+  double busy() const {
+    return neighbours + walls + viscosity + density + pressure_gradient + other;
+  }
 };
 
 /// The 2-D fluid's walls: the wall index, its hits, the wall terms and the wall forces.
