@@ -58,7 +58,7 @@ emps::FluidOptions3 water(double l0, double hi) {
   return o;
 }
 
-std::vector<Vec3> block(int nx, int nz, double l0) {
+std::vector<Vec3> square_column_lattice(int nx, int nz, double l0) {
   std::vector<Vec3> x;
   for (int k = 0; k < nz; ++k)
     for (int j = 0; j < nx; ++j)
@@ -97,7 +97,7 @@ TEST_CASE("EMPS 3-D wall forces: the walls' forces are the particles' momentum c
   PlateTank tank(L, h, 3);
   emps::FluidOptions3 o = water(l0, 2.5 * h);
   o.wall.contact.alpha_rep = 1e5; // the contact term in the forces too; no viscous loop
-  emps::EmpsFluid3 fluid(o, block(6, 6, l0), tank.walls);
+  emps::EmpsFluid3 fluid(o, square_column_lattice(6, 6, l0), tank.walls);
   const double m = o.density * o.volume();
   const double M = m * static_cast<double>(fluid.particles().size());
   const int first = tank.plate->first_triangle(), last = first + tank.plate->triangle_count();
@@ -182,7 +182,7 @@ TEST_CASE("EMPS 3-D wall forces: report: a still water column's load on a plate"
   o.viscosity = 1e-6;
   o.wall.contact.alpha_rep = 1e5;
   o.damping_time = 0.5;
-  emps::EmpsFluid3 fluid(o, block(10, 6, l0), tank.walls);
+  emps::EmpsFluid3 fluid(o, square_column_lattice(10, 6, l0), tank.walls);
   const double weight = o.density * g * h * L * L; // rho g h A, the column's weight
   const int first = tank.plate->first_triangle();  // the side walls come before the plate
   fsi::coupling::InterfaceLoads3 loads;

@@ -20,7 +20,7 @@ using fsi::app::emps_plugin::WallPointPressure;
 
 namespace {
 
-std::vector<Vec3> block(int nx, int ny, int nz, double l0) {
+std::vector<Vec3> box_lattice(int nx, int ny, int nz, double l0) {
   std::vector<Vec3> x;
   for (int k = 0; k < nz; ++k)
     for (int j = 0; j < ny; ++j)
@@ -68,7 +68,7 @@ TEST_CASE("EMPS 3-D wall pressure: still water's floor at its centre is rho g H,
   o.viscosity = 1e-6;
   o.wall.contact.alpha_rep = 1e5;
   o.damping_time = 0.5;
-  emps::EmpsFluid3 fluid(o, block(n, n, n, l0), walls);
+  emps::EmpsFluid3 fluid(o, box_lattice(n, n, n, l0), walls);
   const double R = 3 * l0;
   const WallPointPressure floor(walls, Vec3(L / 2, L / 2, 0.0), R);
   const WallPointPressure side(walls, Vec3(0.0, L / 2, H / 2), R); // mid-depth on x = 0

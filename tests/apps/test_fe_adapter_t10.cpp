@@ -37,8 +37,8 @@ StructureT10Options clamped_at_x_min() {
 /// The loads a fluid would hand over for the pressure p(X) [Pa] on the interface: the point
 /// load -p N dA at each point of the degree-4 rule of each face (N dA = dX/dxi x dX/deta dxi
 /// deta, out of the solid), projected with the face shape functions (eq. 58).
-fsi::coupling::InterfaceLoads3 pressure_loads(const FeInterface3& fi,
-                                              const std::function<double(const Vec3&)>& p) {
+fsi::coupling::InterfaceLoads3
+face_rule_pressure_loads(const FeInterface3& fi, const std::function<double(const Vec3&)>& p) {
   std::vector<fsi::coupling::PointLoad3> points;
   const auto& X = fi.mesh.X0;
   for (std::size_t f = 0; f < fi.mesh.faces.size(); ++f)
@@ -77,7 +77,7 @@ TEST_CASE("FE adapter T10: a uniform pressure gives its force and no moment",
   const FeInterface3 fi = interface_of(structure.mesh(), {"z_max"});
   FeAdapterT10 adapter(structure, fi);
   const double p = 2.5e3, area = 1.0 * 0.1;
-  adapter.set_interface_loads(pressure_loads(fi, [p](const Vec3&) { return p; }));
+  adapter.set_interface_loads(face_rule_pressure_loads(fi, [p](const Vec3&) { return p; }));
   const Vector& f = structure.external_forces();
   const Vec3 centre(0.5, 0.05, 0.1); // of the face z = 0.1
   Vec3 force = Vec3::Zero(), moment = Vec3::Zero();
@@ -105,7 +105,7 @@ TEST_CASE("FE adapter T10: a cantilever loaded through the adapter bends as unde
   StructureT10 coupled(make_box_mesh(beam), clamped_at_x_min());
   const FeInterface3 fi = interface_of(coupled.mesh(), {"z_max"});
   FeAdapterT10 adapter(coupled, fi);
-  adapter.set_interface_loads(pressure_loads(fi, p));
+  adapter.set_interface_loads(face_rule_pressure_loads(fi, p));
   const auto [force_difference, force] =
       largest_difference(coupled.external_forces(), own.external_forces());
   coupled.solve_static();

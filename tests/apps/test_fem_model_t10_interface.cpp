@@ -42,7 +42,8 @@ std::unique_ptr<StructurePart> build(const std::string& text) {
 /// The loads of a pressure p on the interface as the 3-D EMPS fluid hands them over: on each flat
 /// triangle the force -p n A at the three points of the degree-2 rule (A/3 each, exact for the
 /// face's quadratic shape functions on the triangle), shared by InterfaceTriangles::load_weights.
-fsi::coupling::InterfaceLoads3 pressure_loads(const fsi::InterfaceMesh3& mesh, double p) {
+fsi::coupling::InterfaceLoads3 triangle_wall_pressure_loads(const fsi::InterfaceMesh3& mesh,
+                                                            double p) {
   fsi::erp::TriangleWallSet walls;
   const fsi::erp::InterfaceTriangles wet(walls, mesh, 0);
   walls.update();
@@ -72,7 +73,7 @@ TEST_CASE("FemModelT10: a pressure through the interface's flat triangles is the
   auto& coupled = dynamic_cast<fem_plugin::FemModelT10&>(*coupled_part);
   const fsi::fem::FeInterface3& fi = coupled.interface();
   REQUIRE(fi.mesh.faces.size() == 2 * 4 * 4);
-  const auto loads = pressure_loads(fi.mesh, p);
+  const auto loads = triangle_wall_pressure_loads(fi.mesh, p);
   Vec3 sum = Vec3::Zero();
   for (const Vec3& f : loads.f) sum += f;
   coupled.coupling_solver3().set_interface_loads(loads);

@@ -2,6 +2,7 @@
 // the run's finite-value guard covers walls and structure nodes as well as particles.
 #include "fsi_app/cli.hpp"
 #include "fsi_app/finite_guard.hpp"
+#include "test_data.hpp"
 
 #include <catch2/catch.hpp>
 #include <filesystem>
@@ -11,13 +12,9 @@
 
 using namespace fsi::app;
 
-namespace {
-const std::string data = FSI_TEST_DATA "/";
-}
-
 TEST_CASE("apps: a sinusoid period that makes the motion non-finite is refused", "[apps][guards]") {
   std::ostringstream out, err;
-  const std::string scene = data + "tiny_fluid.yaml";
+  const std::string scene = test::data_dir + "tiny_fluid.yaml";
   CHECK(run_cli({"check", scene, "--set", "walls[2].motion.period=5e-324"}, out, err, false) == 2);
   CHECK(err.str() == scene + ": --set walls[2].motion.period=5e-324: walls[2].motion.period: "
                              "4.94066e-324 s with amplitude 0.05: the motion's acceleration "
@@ -42,10 +39,11 @@ TEST_CASE("apps: a wall gone non-finite stops the run with exit 3 naming the wal
   std::filesystem::create_directories(dir);
   std::ofstream(dir / "t.csv") << "time,value\n0,0\n1,10\n";
   std::ostringstream out, err;
-  CHECK(run_cli({"run", data + "tiny_fluid.yaml", "--out", (dir / "out").string(), "--set",
-                 "walls[2].motion={kind: table, table: " + (dir / "t.csv").string() +
-                     ", scale: 1e308}"},
-                out, err, false) == 3);
+  CHECK(
+      run_cli(
+          {"run", test::data_dir + "tiny_fluid.yaml", "--out", (dir / "out").string(), "--set",
+           "walls[2].motion={kind: table, table: " + (dir / "t.csv").string() + ", scale: 1e308}"},
+          out, err, false) == 3);
   CHECK(err.str().find("run stopped: wall 'paddle' node 4 at (") != std::string::npos);
   CHECK(err.str().find("is not finite after step 1, t = ") != std::string::npos);
   std::ifstream json(dir / "out" / "run.json");

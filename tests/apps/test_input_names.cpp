@@ -2,6 +2,7 @@
 // structure named `particles` or holding a path character) and fluid probe points outside the
 // fluid's domain are input errors of `fsi check`, naming the key.
 #include "fsi_app/cli.hpp"
+#include "test_data.hpp"
 
 #include <catch2/catch.hpp>
 #include <sstream>
@@ -9,8 +10,6 @@
 using namespace fsi::app;
 
 namespace {
-
-const std::string data = FSI_TEST_DATA "/";
 
 /// `fsi check FILE --set OVERRIDE`: the exit status and stderr.
 std::pair<int, std::string> check(const std::string& file, const std::string& override) {
@@ -22,7 +21,7 @@ std::pair<int, std::string> check(const std::string& file, const std::string& ov
 } // namespace
 
 TEST_CASE("apps: a probe named time is refused naming the key", "[apps][scene][names]") {
-  const std::string scene = data + "tiny_fluid.yaml";
+  const std::string scene = test::data_dir + "tiny_fluid.yaml";
   const auto [status, err] = check(scene, "output.probes[1].name=time");
   CHECK(status == 2);
   CHECK(err == scene + ": --set output.probes[1].name=time: output.probes[1].name: 'time' is "
@@ -31,7 +30,7 @@ TEST_CASE("apps: a probe named time is refused naming the key", "[apps][scene][n
 
 TEST_CASE("apps: structure names that are output groups or paths are refused",
           "[apps][scene][names]") {
-  const std::string scene = data + "valid_structure.yaml";
+  const std::string scene = test::data_dir + "valid_structure.yaml";
   for (const std::string name : {"a/b", "a.b", "a b", "..", "x\\\\y"}) {
     INFO(name);
     const auto [status, err] = check(scene, "structures[0].name=" + name);
@@ -52,7 +51,7 @@ TEST_CASE("apps: a fluid probe point outside the fluid domain is refused, for ei
   for (const auto& [file, probe] :
        {std::pair<std::string, std::string>{"tiny_fluid.yaml", "1"}, {"sph_column.yaml", "0"}}) {
     INFO(file);
-    const std::string scene = data + file, key = "output.probes[" + probe + "].point";
+    const std::string scene = test::data_dir + file, key = "output.probes[" + probe + "].point";
     const auto [status, err] = check(scene, key + "=[1e308, 1e308]");
     CHECK(status == 2);
     CHECK(err == scene + ": --set " + key + "=[1e308, 1e308]: " + key +
@@ -64,7 +63,8 @@ TEST_CASE("apps: a fluid region outside fluid.domain is refused, for either flui
           "[apps][scene][names]") {
   for (const std::string type : {"emps", "sph"}) {
     INFO(type);
-    const std::string scene = data + (type == "emps" ? "tiny_fluid.yaml" : "sph_column.yaml");
+    const std::string scene =
+        test::data_dir + (type == "emps" ? "tiny_fluid.yaml" : "sph_column.yaml");
     const auto [status, err] = check(scene, "fluid.domain={min: [1, 1], max: [2, 2]}");
     CHECK(status == 2);
     CHECK(err == scene + ": --set fluid.domain={min: [1, 1], max: [2, 2]}: fluid.domain: fluid "
@@ -75,7 +75,7 @@ TEST_CASE("apps: a fluid region outside fluid.domain is refused, for either flui
 TEST_CASE("apps: more frames than a run may write are refused before step 0",
           "[apps][scene][names]") {
   // Issue 41 item 5: output.interval 1e-12 s with Courant stepping filled the disk for ever.
-  const std::string scene = data + "tiny_fluid.yaml";
+  const std::string scene = test::data_dir + "tiny_fluid.yaml";
   const auto [status, err] = check(scene, "output.interval=1e-12");
   CHECK(status == 2);
   CHECK(err == scene + ": --set output.interval=1e-12: output.interval: time.end / "

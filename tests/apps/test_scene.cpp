@@ -6,6 +6,7 @@
 #include "fsi_app/cli.hpp"
 #include "fsi_app/scene.hpp"
 #include "sph/sph_spec.hpp"
+#include "test_data.hpp"
 #include "tlsph/tlsph_spec.hpp"
 
 #include <catch2/catch.hpp>
@@ -17,8 +18,6 @@
 using namespace fsi::app;
 
 namespace {
-
-const std::string data = FSI_TEST_DATA "/";
 
 struct CliResult {
   int status;
@@ -34,7 +33,7 @@ CliResult cli(std::vector<std::string> args) {
 } // namespace
 
 TEST_CASE("apps: a valid scene reads back its values", "[apps][scene]") {
-  const Scene s = load_scene(data + "valid_structure.yaml", {});
+  const Scene s = load_scene(test::data_dir + "valid_structure.yaml", {});
   CHECK(s.name == "valid_structure");
   CHECK(s.gravity.y() == -10.0);
   CHECK(s.time.end == 0.01);
@@ -65,7 +64,7 @@ TEST_CASE("apps: a valid scene reads back its values", "[apps][scene]") {
 
 TEST_CASE("apps: overrides replace entries before validation", "[apps][scene]") {
   const Scene s = load_scene(
-      data + "valid_structure.yaml",
+      test::data_dir + "valid_structure.yaml",
       {"time.end=0.5", "structures[0].material.density=2000", "structures[0].linear_solver=cg"});
   CHECK(s.time.end == 0.5);
   const auto& b = s.structures[0].as<fem_plugin::StructureSpec>();
@@ -77,7 +76,7 @@ TEST_CASE("apps: a denormal or tiny structure density is refused by its range", 
   // Issue 41 item 11: 5e-324 passed "> 0" and the mass matrix failed to factorise mid-run.
   for (const std::string value : {"5e-324", "1e-300", "1e-4"}) {
     INFO(value);
-    const auto r = cli({"check", data + "valid_structure.yaml", "--set",
+    const auto r = cli({"check", test::data_dir + "valid_structure.yaml", "--set",
                         "structures[0].material.density=" + value});
     CHECK(r.status == 2);
     CHECK(r.err.find(": structures[0].material.density: must be in [0.001, 1e+06], got ") !=
@@ -96,7 +95,7 @@ TEST_CASE("apps: a mesh path that is a folder, FIFO or device says what it is", 
         {fifo.string(), fifo.string() + " is not a regular file (a FIFO, device or socket)"},
         {"/dev/zero", "/dev/zero is not a regular file (a FIFO, device or socket)"}}) {
     INFO(path);
-    const auto r = cli({"check", data + "valid_structure.yaml", "--set",
+    const auto r = cli({"check", test::data_dir + "valid_structure.yaml", "--set",
                         "structures[0].mesh={kind: gmsh, file: " + path + "}"});
     CHECK(r.status == 2);
     CHECK(r.err.find(": structures[0].mesh.file: " + what) != std::string::npos);
@@ -106,7 +105,7 @@ TEST_CASE("apps: a mesh path that is a folder, FIFO or device says what it is", 
 
 TEST_CASE("apps: a closed wall polyline whose last point is its first is refused naming it",
           "[apps][scene]") {
-  const std::string scene = data + "tiny_fluid.yaml";
+  const std::string scene = test::data_dir + "tiny_fluid.yaml";
   const auto r = cli({"check", scene, "--set",
                       "walls[2]={name: box, closed: true, polyline: [[0.3, 0.0], [0.4, 0.0], "
                       "[0.4, 0.1], [0.3, 0.0]]}"});
@@ -152,9 +151,9 @@ TEST_CASE("apps: each class of bad input names file, line and key, exit status 2
   };
   for (const auto& c : cases) {
     INFO(c.file);
-    const auto r = cli({"check", data + c.file});
+    const auto r = cli({"check", test::data_dir + c.file});
     CHECK(r.status == 2);
-    CHECK(r.err.rfind(data + c.file + c.prefix, 0) == 0);
+    CHECK(r.err.rfind(test::data_dir + c.file + c.prefix, 0) == 0);
     CHECK(r.err.find(c.what) != std::string::npos);
     CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
     CHECK(r.out.empty());
@@ -164,7 +163,7 @@ TEST_CASE("apps: each class of bad input names file, line and key, exit status 2
 TEST_CASE("apps: a structure's key is spelt as --set spells it in late messages too",
           "[apps][scene]") {
   // Mesh problems found while building the model name structures[i], not structures.<name>.
-  const std::string scene = data + "valid_structure.yaml";
+  const std::string scene = test::data_dir + "valid_structure.yaml";
   auto r = cli({"check", scene, "--set", "structures[0].mesh.width=1e300"});
   CHECK(r.status == 2);
   CHECK(r.err.rfind(scene + ":14: structures[0].mesh: rectangle mesh: ", 0) == 0);
@@ -176,7 +175,7 @@ TEST_CASE("apps: a structure's key is spelt as --set spells it in late messages 
 }
 
 TEST_CASE("apps: a bad override fails like a bad scene entry", "[apps][scene]") {
-  const std::string scene = data + "valid_structure.yaml";
+  const std::string scene = test::data_dir + "valid_structure.yaml";
   auto r = cli({"check", scene, "--set", "structures[0].material.density=abc"});
   CHECK(r.status == 2);
   CHECK(r.err == scene + ": --set structures[0].material.density=abc: "
@@ -194,7 +193,7 @@ TEST_CASE("apps: a bad override fails like a bad scene entry", "[apps][scene]") 
 
 TEST_CASE("apps: a block named after a solver type holds its keys: any pair by two overrides",
           "[apps][scene]") {
-  const std::string scene = data + "tiny_any_pair.yaml";
+  const std::string scene = test::data_dir + "tiny_any_pair.yaml";
   for (const std::string fluid : {"emps", "sph"})
     for (const std::string structure : {"fem", "tlsph"}) {
       INFO(fluid + " + " + structure);

@@ -17,7 +17,7 @@ using namespace fsi::app;
 namespace {
 
 // A 2 x 1 x 1 box of cells (12 T10) clamped on its left face, a probe at its tip.
-const std::string box_scene = R"(dimension: 3
+const std::string t10_box_scene = R"(dimension: 3
 gravity: [0.0, -9.81, 0.0]
 time: {end: 0.002, dt: 0.001}
 output:
@@ -34,7 +34,7 @@ structures:
 )";
 
 Scene parsed(const std::vector<std::string>& overrides = {}) {
-  return parse_scene(box_scene, "b.yaml", overrides);
+  return parse_scene(t10_box_scene, "b.yaml", overrides);
 }
 
 } // namespace
@@ -145,7 +145,7 @@ TEST_CASE("apps: sliding faces of a 3-D scene hold the displacement along their 
   // geometric nonlinearity of St. Venant-Kirchhoff is about 1e-7 of u.
   const double t = 1.0, E = 1e7, nu = 0.3, W = 0.3, H = 0.5, D = 0.2;
   const Scene s = parse_scene(
-      box_scene, "b.yaml",
+      t10_box_scene, "b.yaml",
       {"gravity=[0, 0, 0]", "structures[0].mesh.width=0.3", "structures[0].mesh.height=0.5",
        "structures[0].mesh.depth=0.2", "structures[0].mesh.elements_y=3",
        "structures[0].mesh.elements_z=2", "structures[0].clamped=[]",
@@ -165,7 +165,7 @@ TEST_CASE("apps: sliding faces of a 3-D scene hold the displacement along their 
   }
   CHECK(error < 1e-5 * t / E * H);
   // A face off the coordinate planes cannot slide by one component; an unknown tag is named.
-  CHECK_THROWS_WITH(parse_scene(box_scene, "b.yaml", {"structures[0].sliding=[lid]"}),
+  CHECK_THROWS_WITH(parse_scene(t10_box_scene, "b.yaml", {"structures[0].sliding=[lid]"}),
                     Catch::Contains("sliding: unknown boundary tag 'lid'"));
 }
 
@@ -177,7 +177,7 @@ TEST_CASE("apps: a 3-D scene's clamped_rigid_motion turns the body rigidly, stre
   // about +y carries the tip to -z. Then one step from t = 0.5 s: the clamped nodes' v and a are
   // the central differences of their prescribed u.
   const Scene s = parse_scene(
-      box_scene, "b.yaml",
+      t10_box_scene, "b.yaml",
       {"gravity=[0, 0, 0]", "structures[0].loads=[]",
        "structures[0].clamped_rigid_motion={kind: sinusoid, axis: [0, 2, 0], pivot: [0, "
        "0.05, 0.05], amplitude: 1.0, period: 4.0}",
@@ -225,23 +225,23 @@ TEST_CASE("apps: a 3-D scene's clamped_rigid_motion turns the body rigidly, stre
 
   // Bad input, one line each: a zero axis; the 2-D wall key in 3-D; no clamp to turn.
   CHECK_THROWS_WITH(
-      parse_scene(box_scene +
+      parse_scene(t10_box_scene +
                       "    clamped_rigid_motion: {kind: sinusoid, axis: [0, 0, 0], amplitude: "
                       "1, period: 1}\n",
                   "b.yaml", {}),
       "b.yaml:15: structures[0].clamped_rigid_motion.axis: is zero");
-  CHECK_THROWS_WITH(parse_scene(box_scene, "b.yaml", {"structures[0].clamped_motion=tank"}),
+  CHECK_THROWS_WITH(parse_scene(t10_box_scene, "b.yaml", {"structures[0].clamped_motion=tank"}),
                     Catch::Contains("structures[0].clamped_motion: names a 2-D wall; 3-D scenes "
                                     "have none: move the clamp with clamped_rigid_motion"));
   CHECK_THROWS_WITH(
-      parse_scene(box_scene, "b.yaml",
+      parse_scene(t10_box_scene, "b.yaml",
                   {"structures[0].clamped=[]",
                    "structures[0].clamped_rigid_motion={kind: sinusoid, axis: "
                    "[0, 1, 0], amplitude: 1, period: 1}"}),
       Catch::Contains("structures[0].clamped_rigid_motion: needs clamped boundary tags to move"));
   // A TL-SPH solid made from the entry (--set type=tlsph) would drop the turn: refused.
   CHECK_THROWS_WITH(
-      parse_scene(box_scene, "b.yaml",
+      parse_scene(t10_box_scene, "b.yaml",
                   {"structures[0].loads=[]", "structures[0].type=tlsph",
                    "structures[0].clamped_rigid_motion={kind: sinusoid, axis: [0, 1, 0], "
                    "amplitude: 1, period: 1}"}),

@@ -31,7 +31,7 @@ fluid:
   tank: {min: [0.0, 0.0, 0.0], max: [0.4, 0.5, 0.4]}
   regions:
     - {min: [0.0, 0.0, 0.0], max: [0.4, 0.3, 0.4]}
-)" + test::plate_floor_3d();
+)" + fsi::test::plate_floor_3d();
 
 const sph::SphFluid3& fluid_of(CoupledModel3& model) {
   return dynamic_cast<sph_plugin::SphModel3&>(model.fluid()).fluid();
@@ -58,7 +58,7 @@ TEST_CASE("apps: a T10 plate as the 3-D SPH tank's floor, F's loads its points' 
   // The still column settles for 40 acoustic steps, then one coupler step of one acoustic step:
   // the nodal loads sum to the points' forces of that step.
   coupling::FluidSolver3& F = model.coupling_solver3();
-  F.set_interface_motion(test::at_rest(mesh));
+  F.set_interface_motion(fsi::test::at_rest(mesh));
   for (int k = 0; k < 40; ++k) F.advance(f.time(), f.next_dt());
   F.advance(f.time(), f.next_dt());
   Vec3 loads = Vec3::Zero(), points = Vec3::Zero();
@@ -70,6 +70,7 @@ TEST_CASE("apps: a T10 plate as the 3-D SPH tank's floor, F's loads its points' 
 }
 
 TEST_CASE("apps: the coupled 3-D SPH + T10 model restarts bitwise", "[apps][sph][3d][coupled]") {
+  namespace test = fsi::test; // not fsi::app::test, in reach in the unity build
   test::check_restart_bitwise(parse_scene(column, "column.yaml", {}),
                               [](CoupledModel3& whole, CoupledModel3& resumed) {
                                 const auto& a = fluid_of(whole).particles();

@@ -7,6 +7,7 @@
 #include "fsi/core/error.hpp"
 #include "fsi_app/run.hpp"
 #include "fsi_app/scene.hpp"
+#include "scene_error.hpp"
 #include "scene_probes.hpp"
 #include "tlsph/tlsph_model.hpp"
 
@@ -21,24 +22,6 @@ using Catch::Contains;
 namespace {
 
 const std::string cantilever = FSI_SOURCE_DIR "/data/scenes/cantilever.yaml";
-
-std::string error_of(const std::string& file, const std::vector<std::string>& overrides) {
-  try {
-    load_scene(file, overrides);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
-
-std::string error_of_text(const std::string& text) {
-  try {
-    parse_scene(text, "scene.yaml", {});
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
 
 /// tip_y of the cantilever after each 0.01 s up to 0.35 s (the first swing's lowest point is
 /// near 0.3 s), with the structure of the given type.
@@ -131,13 +114,13 @@ TEST_CASE("apps: a TL-SPH rectangle with a clamp strip as an FE rectangle", "[ap
   // A box that is no side's strip, and a polygon, do not translate.
   std::string off = text;
   off.replace(off.find("max: [0.02, 0.0]"), 16, "max: [0.01, 0.0]");
-  CHECK_THAT(error_of_text(off),
+  CHECK_THAT(test::scene_text_error(off),
              Contains("scene.yaml:11: structures[0].tlsph.clamped: box 0 (0, -0.008) - (0.01, "
                       "0) is not the strip of one side of the region"));
   std::string polygon = text;
   polygon.replace(polygon.find("{min: [0.0, -0.008], max: [0.02, 0.04]}"), 39,
                   "{polygon: [[0.0, -0.008], [0.02, -0.008], [0.02, 0.04], [0.0, 0.04]]}");
-  CHECK_THAT(error_of_text(polygon),
+  CHECK_THAT(test::scene_text_error(polygon),
              Contains("scene.yaml:10: structures[0].tlsph.region: a TL-SPH polygon does not "
                       "translate to an FE mesh"));
 }
@@ -156,27 +139,31 @@ TEST_CASE("apps: a 3-D TL-SPH solid of a T10 box as FE: the box, its tlsph block
   CHECK(fe.mesh.elements_z == 2);
   CHECK(fe.clamped == std::vector<std::string>{"left"});
   // The set-aside block is still checked: a bad TL-SPH key in it is refused by name.
-  CHECK_THAT(error_of(file, {"structures[0].type=fem", "structures[0].tlsph.dp=-1"}),
+  CHECK_THAT(test::scene_file_error(file, {"structures[0].type=fem", "structures[0].tlsph.dp=-1"}),
              Contains("structures[0].tlsph.dp"));
 }
 
 TEST_CASE("apps: what does not translate between the structure types is refused naming the key",
           "[apps][tlsph]") {
   // Loads: TL-SPH has none.
-  CHECK_THAT(error_of(cantilever, {"structures[0].type=tlsph",
-                                   "structures[0].loads=[{boundary: right, force: [0, -1]}]"}),
+  CHECK_THAT(test::scene_file_error(cantilever,
+                                    {"structures[0].type=tlsph",
+                                     "structures[0].loads=[{boundary: right, force: [0, -1]}]"}),
              Contains("structures[0].loads: a TL-SPH solid takes no constant loads"));
   // 3-D: TL-SPH has no sliding faces and fixed clamps (the slab's sides would be dropped).
   const std::string cantilever_3d = FSI_SOURCE_DIR "/data/scenes/cantilever_3d.yaml";
-  CHECK_THAT(error_of(cantilever_3d, {"structures[0].type=tlsph", "structures[0].sliding=[back]"}),
+  CHECK_THAT(test::scene_file_error(cantilever_3d,
+                                    {"structures[0].type=tlsph", "structures[0].sliding=[back]"}),
              Contains("structures[0].sliding: a TL-SPH solid has no sliding faces"));
-  CHECK_THAT(error_of(cantilever_3d,
-                      {"structures[0].type=tlsph",
-                       "structures[0].clamped_rigid_motion={kind: sinusoid, axis: [0, 1, 0], "
-                       "pivot: [0, 0, 0], amplitude: 0.1, period: 1}"}),
-             Contains("structures[0].clamped_rigid_motion: a 3-D TL-SPH solid's clamps are fixed"));
+  CHECK_THAT(
+      test::scene_file_error(
+          cantilever_3d, {"structures[0].type=tlsph",
+                          "structures[0].clamped_rigid_motion={kind: sinusoid, axis: [0, 1, 0], "
+                          "pivot: [0, 0, 0], amplitude: 0.1, period: 1}"}),
+      Contains("structures[0].clamped_rigid_motion: a 3-D TL-SPH solid's clamps are fixed"));
   // A clamped tag the rectangle does not have.
-  CHECK_THAT(error_of(cantilever, {"structures[0].type=tlsph", "structures[0].clamped=[side]"}),
+  CHECK_THAT(test::scene_file_error(cantilever,
+                                    {"structures[0].type=tlsph", "structures[0].clamped=[side]"}),
              Contains("structures[0].clamped: no side of the mesh is tagged 'side'"));
   // A Gmsh mesh whose clamped side is not along an axis (the trapezoid's slope).
   const std::string mesh = FSI_TEST_DATA "/tlsph_mesh/trapezoid.msh";
@@ -185,7 +172,7 @@ TEST_CASE("apps: what does not translate between the structure types is refused 
       "structures:\n  - name: block\n    type: tlsph\n    material: {youngs_modulus: 1.0e6, "
       "poisson_ratio: 0.3, density: 1000.0}\n    mesh: {kind: gmsh, file: " +
       mesh + "}\n    clamped: [slope]\n";
-  CHECK_THAT(error_of_text(text),
+  CHECK_THAT(test::scene_text_error(text),
              Contains("scene.yaml:9: structures[0].clamped: the side 'slope' from") &&
                  Contains("is not parallel to an axis"));
   // A Gmsh rectangle clamped at its bottom: 4 rows below y = 0 clamped, as many columns as the

@@ -8,6 +8,7 @@
 #include "fsi/core/error.hpp"
 #include "fsi_app/run.hpp"
 #include "fsi_app/scene.hpp"
+#include "scene_error.hpp"
 #include "tlsph/tlsph_model.hpp"
 
 #include <catch2/catch.hpp>
@@ -30,15 +31,6 @@ std::string scene_with(const std::string& region, const std::string& interface) 
 }
 
 const std::string mesh_dir = FSI_TEST_DATA "/tlsph_mesh/";
-
-std::string error_of(const std::string& text) {
-  try {
-    parse_scene(text, "scene.yaml", {});
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
 
 } // namespace
 
@@ -86,15 +78,15 @@ TEST_CASE("tlsph plug-in: a trapezoid holds its lattice points, its interface on
 
 TEST_CASE("tlsph plug-in: bad polygon regions are one-line errors naming the key",
           "[apps][tlsph]") {
-  const std::string clockwise = error_of(
+  const std::string clockwise = test::scene_text_error(
       scene_with("{polygon: [[0.0, 0.0], [0.0, 0.02], [0.04, 0.02], [0.04, 0.0]]}", "[boundary]"));
   CHECK(clockwise.find("scene.yaml:") == 0);
   CHECK(clockwise.find("structures[0].region.polygon: must be counter-clockwise") !=
         std::string::npos);
-  const std::string tags = error_of(
+  const std::string tags = test::scene_text_error(
       scene_with("{polygon: [[0.0, 0.0], [0.04, 0.0], [0.0, 0.02]], tags: [a, b]}", "[a]"));
   CHECK(tags.find("structures[0].region.tags: 2 tags for 3 polygon edges") != std::string::npos);
-  const std::string unknown = error_of(
+  const std::string unknown = test::scene_text_error(
       scene_with("{polygon: [[0.0, 0.0], [0.04, 0.0], [0.0, 0.02]], tags: [a, b, c]}", "[left]"));
   CHECK(unknown.find("structures[0].interface: no region edge is tagged 'left'") !=
         std::string::npos);
@@ -198,8 +190,9 @@ TEST_CASE("tlsph plug-in: interpolate is refused where it has no meaning", "[app
   // A fluid quantity does not interpolate; an FE probe reads its node either way (the FE
   // interpolation at a node: a scene's probes hold for either structure type).
   text.replace(text.find("displacement_x, structure: block,"), 33, "mean_speed,");
-  CHECK(error_of(text).find("scene.yaml:6: output.probes[0].interpolate: only a structure's "
-                            "displacement probes interpolate") == 0);
+  CHECK(test::scene_text_error(text).find(
+            "scene.yaml:6: output.probes[0].interpolate: only a structure's "
+            "displacement probes interpolate") == 0);
   const std::string fem = FSI_TEST_DATA "/valid_structure.yaml";
   const Scene nodal = load_scene(fem, {}),
               interpolated = load_scene(fem, {"output.probes[0].interpolate=true"});
@@ -256,6 +249,7 @@ TEST_CASE("tlsph plug-in: a tank-frame probe needs a clamped_motion", "[apps][tl
   text.replace(text.find("output: {interval: 0.001}\n"), 26,
                "output:\n  interval: 0.001\n  probes:\n    - {name: tx, quantity: "
                "displacement_x_tank, structure: block, point: [0.01, 0.03]}\n");
-  CHECK(error_of(text) == "scene.yaml:6: output.probes[0].quantity: 'displacement_x_tank' needs "
-                          "structure 'block' to have a clamped_motion");
+  CHECK(test::scene_text_error(text) ==
+        "scene.yaml:6: output.probes[0].quantity: 'displacement_x_tank' needs "
+        "structure 'block' to have a clamped_motion");
 }

@@ -3,6 +3,7 @@
 // kClampRows dp outwards); what is 2-D only refused naming file, line and key.
 #include "fsi/core/error.hpp"
 #include "fsi_app/scene.hpp"
+#include "scene_error.hpp"
 #include "structure_geometry.hpp"
 #include "tlsph/tlsph_model3.hpp"
 #include "tlsph/tlsph_spec.hpp"
@@ -18,7 +19,7 @@ using namespace fsi::app;
 namespace {
 
 // The FE cantilever box of data/scenes/cantilever_3d.yaml, coarser, with a tip probe.
-const std::string box_scene = R"(dimension: 3
+const std::string cantilever_box_scene = R"(dimension: 3
 gravity: [0.0, -9.81, 0.0]
 time: {end: 1.0e-4, dt: 1.0e-4}
 output:
@@ -35,20 +36,11 @@ structures:
     clamped: [left]
 )";
 
-std::string error_of(const std::string& text, const std::vector<std::string>& sets) {
-  try {
-    parse_scene(text, "b.yaml", sets);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
-
 } // namespace
 
 TEST_CASE("tlsph 3-D scene: the FE box is the TL-SPH box, its clamped side a support",
           "[apps][tlsph][3d]") {
-  const Scene s = parse_scene(box_scene, "b.yaml", {});
+  const Scene s = parse_scene(cantilever_box_scene, "b.yaml", {});
   const auto& t = s.structures[0].as<tlsph_plugin::TlsphSpec>();
   const double dp = 0.025; // the T10 node spacing: height / (2 elements_y)
   CHECK(t.options.dp == dp);
@@ -61,7 +53,7 @@ TEST_CASE("tlsph 3-D scene: the FE box is the TL-SPH box, its clamped side a sup
 
 TEST_CASE("tlsph 3-D scene: the tip falls freely until the clamp's wave reaches it",
           "[apps][tlsph][3d]") {
-  const Scene s = parse_scene(box_scene, "b.yaml", {});
+  const Scene s = parse_scene(cantilever_box_scene, "b.yaml", {});
   tlsph_plugin::TlsphModel3 model(s, s.structures[0]);
   const double t = 1.0e-4; // the wave from the clamp (c_s = 289 m/s) travels 0.03 m, 1.2 dp
   model.advance(0.0, t);
@@ -84,24 +76,26 @@ TEST_CASE("tlsph 3-D scene: what is 2-D only is refused naming the key", "[apps]
   };
   for (const auto& [set, what] : cases) {
     INFO(set);
-    CHECK(error_of(box_scene, {set}) == "b.yaml: --set " + set + ": " + what);
+    CHECK(test::scene_text_error(cantilever_box_scene, "b.yaml", {set}) ==
+          "b.yaml: --set " + set + ": " + what);
   }
-  std::string region = box_scene.substr(0, box_scene.find("    mesh:")) +
+  std::string region = cantilever_box_scene.substr(0, cantilever_box_scene.find("    mesh:")) +
                        "    region: {polygon: [[0, 0], [1, 0], [1, 1]]}\n    dp: 0.025\n"
                        "    material: {youngs_modulus: 1.0e8, poisson_ratio: 0.3, density: "
                        "1000.0}\n";
-  CHECK(error_of(region, {}) ==
+  CHECK(test::scene_text_error(region, "b.yaml", {}) ==
         "b.yaml:12: structures[0].region.polygon: is 2-D only (a 3-D region is a box: min, max)");
-  CHECK(error_of(box_scene + "    interface: [front, up]\n", {}) ==
-        "b.yaml:16: structures[0].interface: no face of the box is named 'up' (left, right, "
-        "bottom, top, back, front)");
+  CHECK(
+      test::scene_text_error(cantilever_box_scene + "    interface: [front, up]\n", "b.yaml", {}) ==
+      "b.yaml:16: structures[0].interface: no face of the box is named 'up' (left, right, "
+      "bottom, top, back, front)");
 }
 
 TEST_CASE("tlsph 3-D scene: interface names the box's faces as the fem type does",
           "[apps][tlsph][3d]") {
   // The beam's faces x = 1 (right) and y = 0.1 (top) over 44 x 4 x 4 particles (the box continued
   // 4 dp into the clamp at x < 0): 6 x 6 nodes on the one, 46 x 6 on the other, 6 shared.
-  const Scene s = parse_scene(box_scene + "    interface: [right, top]\n", "b.yaml", {});
+  const Scene s = parse_scene(cantilever_box_scene + "    interface: [right, top]\n", "b.yaml", {});
   tlsph_plugin::TlsphModel3 model(s, s.structures[0]);
   const InterfaceMesh3& mesh = model.interface_mesh3();
   CHECK(mesh.node_count() == 6 * 6 + 46 * 6 - 6);

@@ -33,7 +33,8 @@ struct RunResult {
   bool blew_up = false;
 };
 
-RunResult run(const model::Parameters& p, const CouplingOptions& o, double dt, int steps) {
+RunResult run_against_monolithic(const model::Parameters& p, const CouplingOptions& o, double dt,
+                                 int steps) {
   model::AddedMassFluid fluid(p);
   model::SpringStructure structure(p);
   model::Monolithic mono(p);
@@ -89,7 +90,7 @@ TEST_CASE("BGS converges to the monolithic solution", "[coupling][model]") {
     p.ma = mu * p.m;
     for (const std::string acc : {"aitken", "iqn-ils"}) {
       INFO("m_a/m = " << mu << ", acceleration " << acc);
-      const RunResult r = run(p, bgs(acc, 1e-6), dt, 1000);
+      const RunResult r = run_against_monolithic(p, bgs(acc, 1e-6), dt, 1000);
       CHECK_FALSE(r.blew_up);
       CHECK(r.unconverged == 0);
       CHECK(r.max_error_monolithic < 1e-8);
@@ -99,7 +100,7 @@ TEST_CASE("BGS converges to the monolithic solution", "[coupling][model]") {
   p.ma = 0.5 * p.m;
   for (const std::string acc : {"none", "constant"}) {
     INFO("acceleration " << acc);
-    const RunResult r = run(p, bgs(acc, 1e-6), dt, 300);
+    const RunResult r = run_against_monolithic(p, bgs(acc, 1e-6), dt, 300);
     CHECK(r.unconverged == 0);
     CHECK(r.max_error_monolithic < 1e-8);
   }
@@ -111,13 +112,13 @@ TEST_CASE("BGS with velocity measure and with the absolute measure", "[coupling]
   p.f = [](double t) { return Vec2(5.0 * std::sin(3.0 * t), 0.0); };
   CouplingOptions o = bgs("iqn-ils", 1e-6);
   o.converge_velocities = true;
-  RunResult r = run(p, o, 1e-3, 500);
+  RunResult r = run_against_monolithic(p, o, 1e-3, 500);
   CHECK(r.unconverged == 0);
   CHECK(r.max_error_monolithic < 1e-8);
   o = bgs("aitken");
   o.convergence = "absolute";
   o.tolerance = 1e-13; // [m]
-  r = run(p, o, 1e-3, 500);
+  r = run_against_monolithic(p, o, 1e-3, 500);
   CHECK(r.unconverged == 0);
   CHECK(r.max_error_monolithic < 1e-9);
 }
@@ -127,10 +128,10 @@ TEST_CASE("plain BGS diverges above m_a/m = 1 + k dt^2/4m", "[coupling][model]")
   p.ma = 1.2 * p.m;
   CouplingOptions o = bgs("none");
   o.max_iterations = 30;
-  const RunResult r = run(p, o, 1e-3, 1);
+  const RunResult r = run_against_monolithic(p, o, 1e-3, 1);
   CHECK(r.unconverged == 1);
   p.ma = 0.5 * p.m; // factor 0.5: 0.5^30 < 1e-4
-  CHECK(run(p, o, 1e-3, 1).unconverged == 0);
+  CHECK(run_against_monolithic(p, o, 1e-3, 1).unconverged == 0);
 }
 
 TEST_CASE("CSS error is first order in dt", "[coupling][model][convergence]") {
@@ -175,7 +176,7 @@ bool css_unstable(double mu, int steps) {
   model::Parameters p;
   p.ma = mu * p.m;
   CouplingOptions o; // css
-  return run(p, o, 1e-3, steps).blew_up;
+  return run_against_monolithic(p, o, 1e-3, steps).blew_up;
 }
 
 } // namespace
@@ -210,7 +211,7 @@ TEST_CASE("CSS goes unstable above m_a/m = 1 while accelerated BGS stays stable"
       model::Parameters p;
       p.ma = m * p.m;
       INFO("acceleration " << acc << ", m_a/m = " << m);
-      const RunResult r = run(p, bgs(acc), 1e-3, 2000);
+      const RunResult r = run_against_monolithic(p, bgs(acc), 1e-3, 2000);
       CHECK_FALSE(r.blew_up);
       CHECK(r.unconverged == 0);
       CHECK(r.max_amplitude <= p.u0.norm() * (1.0 + 1e-6)); // trapezoidal rule: no growth
@@ -228,7 +229,7 @@ TEST_CASE("Aitken and IQN-ILS need fewer iterations than constant relaxation",
     p.ma = mu * p.m;
     std::map<std::string, double> mean;
     for (const std::string acc : {"constant", "aitken", "iqn-ils"}) {
-      const RunResult r = run(p, bgs(acc), 1e-3, 1000);
+      const RunResult r = run_against_monolithic(p, bgs(acc), 1e-3, 1000);
       REQUIRE(r.unconverged == 0);
       mean[acc] = r.mean_iterations;
     }
@@ -251,7 +252,7 @@ TEST_CASE("report: iteration counts on the model problem", "[.report]") {
     for (const std::string acc : {"none", "constant", "aitken", "iqn-ils", "iqn0"}) {
       CouplingOptions o = bgs(acc == "iqn0" ? "iqn-ils" : acc);
       if (acc == "iqn0") o.reuse = 0;
-      const RunResult r = run(p, o, 1e-3, 1000);
+      const RunResult r = run_against_monolithic(p, o, 1e-3, 1000);
       if (r.unconverged > 0 || r.blew_up)
         std::printf(" %10s", "diverges");
       else

@@ -43,7 +43,8 @@ fsi::InterfaceMesh random_chain(std::mt19937& rng, std::size_t n_edges, int orde
   return c;
 }
 
-void check_conservation(std::size_t n_edges, std::size_t n_loads, unsigned seed, int order = 2) {
+void check_chain_conservation(std::size_t n_edges, std::size_t n_loads, unsigned seed,
+                              int order = 2) {
   std::mt19937 rng(seed);
   const fsi::InterfaceMesh c = random_chain(rng, n_edges, order);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
@@ -95,13 +96,13 @@ TEST_CASE("projection conserves total force and moment on curved quadratic edges
           "[coupling][projection]") {
   // The load point is the isoparametric x(xi), where moment conservation is exact.
   SECTION("few loads (sequential path)") {
-    check_conservation(7, 200, 1u);
+    check_chain_conservation(7, 200, 1u);
   }
   SECTION("many loads (chunked parallel path)") {
-    check_conservation(13, 50000, 2u);
+    check_chain_conservation(13, 50000, 2u);
   }
   SECTION("straight order-1 edges (a TL-SPH surface)") {
-    check_conservation(11, 300, 4u, 1);
+    check_chain_conservation(11, 300, 4u, 1);
   }
 }
 

@@ -70,7 +70,7 @@ fsi::InterfaceMesh3 sphere_patch(int n, int order) {
 
 /// Projects n_loads random point loads at isoparametric points x(xi, eta) and checks the nodal
 /// forces' total force and moment about a random pivot against the loads' own.
-void check_conservation(int order, std::size_t n_loads, unsigned seed) {
+void check_patch_conservation(int order, std::size_t n_loads, unsigned seed) {
   std::mt19937 rng(seed);
   const fsi::InterfaceMesh3 mesh = sphere_patch(4, order);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
@@ -160,16 +160,16 @@ TEST_CASE("3-D projection conserves total force and moment", "[coupling][project
   // The load point is the isoparametric x(xi, eta): sum_k N_k = 1 makes the force exact and
   // sum_k N_k x_k = x(xi, eta) the moment sum_k x_k x f_k = x(xi, eta) x f.
   SECTION("curved quadratic faces, few loads (sequential path)") {
-    check_conservation(2, 300, 1u);
+    check_patch_conservation(2, 300, 1u);
   }
   SECTION("curved quadratic faces, many loads (chunked parallel path)") {
-    check_conservation(2, 50000, 2u);
+    check_patch_conservation(2, 50000, 2u);
   }
   SECTION("flat linear faces (a TL-SPH surface)") {
-    check_conservation(1, 300, 3u);
+    check_patch_conservation(1, 300, 3u);
   }
   SECTION("flat linear faces, many loads") {
-    check_conservation(1, 20000, 4u);
+    check_patch_conservation(1, 20000, 4u);
   }
 }
 

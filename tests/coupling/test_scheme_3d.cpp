@@ -55,7 +55,8 @@ template <int D> struct Run {
 
 /// `steps` steps of `o` on `p`, compared with the closed form (the monolithic step for an
 /// implicit scheme, the CSS recursion for css).
-template <int D> Run<D> run(const toy::Problem<D>& p, const CouplingOptions& o, int steps) {
+template <int D>
+Run<D> run_against_closed_form(const toy::Problem<D>& p, const CouplingOptions& o, int steps) {
   toy::Fluid<D> fluid(p);
   toy::Structure<D> structure(p);
   auto scheme = make_scheme(o, fluid, structure);
@@ -82,11 +83,11 @@ template <int D> Run<D> run(const toy::Problem<D>& p, const CouplingOptions& o, 
 TEST_CASE("3-D CSS, BGS with Aitken and with IQN-ILS reach the closed-form interface state",
           "[coupling][scheme][3d]") {
   // CSS is stable for m_a < m only (test_model_problem.cpp): m_a = 0.5 m; BGS at m_a = 2 m.
-  const Run<3> css = run(anisotropic(0.5), options("css", "none"), 300);
+  const Run<3> css = run_against_closed_form(anisotropic(0.5), options("css", "none"), 300);
   CHECK(css.max_error < 1e-13); // measured 0: the same operations
   for (const std::string acc : {"aitken", "iqn-ils"}) {
     INFO("acceleration " << acc);
-    const Run<3> bgs = run(anisotropic(2.0), options("bgs", acc), 300);
+    const Run<3> bgs = run_against_closed_form(anisotropic(2.0), options("bgs", acc), 300);
     CHECK(bgs.max_error < 1e-10); // measured 4e-12 (aitken), 1e-11 (iqn-ils)
     for (int it : bgs.iterations) CHECK(it < 20);
   }
@@ -125,8 +126,8 @@ TEST_CASE("3-D BGS on a rotated 2-D problem: the 2-D iterations and the rotated 
       // rounding-level margin, so the counts part from step 14 on even for z = 0 (measured).
       CouplingOptions o = options("bgs", acc);
       o.reuse = 0;
-      const Run<2> r2 = run(p2, o, 200);
-      const Run<3> r3 = run(p3, o, 200);
+      const Run<2> r2 = run_against_closed_form(p2, o, 200);
+      const Run<3> r3 = run_against_closed_form(p3, o, 200);
       CHECK(r3.iterations == r2.iterations);
       double worst = 0.0;
       for (std::size_t n = 0; n < r2.x.size(); ++n)

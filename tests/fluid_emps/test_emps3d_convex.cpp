@@ -20,20 +20,20 @@ namespace {
 /// 10's sum at uniform pressure P (fluid plus wall terms; zero for the full lattice), the wall term
 /// and face 0's n_wall, and the half-space's term there, -(3/n0) 2 P wall_gradient_sum(r) n_wall,
 /// where its nearest point lies inside a face (not on an edge or vertex; else -inf).
-struct Sample {
+struct ConvexSample {
   int convex;
   double pnd_error;
   Vec3 gradient, mirror, n_face;
   double half_space;
 };
 
-using Scene = emps::test::LatticeScene<Sample>;
+using ConvexScene = emps::test::LatticeScene<ConvexSample>;
 
 /// An 18 l0 cube tank holding a 4 l0 box at [7 l0, 11 l0]^3 (narrower than 2 r_e: every particle
 /// within r_e of it has convex faces, opposite ones included), the lattice l0/2 + k l0 outside
 /// the box at rest under a uniform pressure P.
-Scene box_in_tank(bool convex_corners) {
-  Scene s;
+ConvexScene box_in_tank(bool convex_corners) {
+  ConvexScene s;
   const double l0 = s.l0;
   const Vec3 lo = Vec3::Constant(7 * l0), hi = Vec3::Constant(11 * l0);
   emps::test::CubeTank tank(l0, convex_corners);
@@ -80,12 +80,12 @@ TEST_CASE("emps 3-D walls: beside a box obstacle's convex edges and corners pnd 
           "the lattice filling the box counted directly, and the wall pressure term balances a "
           "uniform pressure, only with convex_corners",
           "[emps][walls3d][convex]") {
-  const Scene with = box_in_tank(true), without = box_in_tank(false);
+  const ConvexScene with = box_in_tank(true), without = box_in_tank(false);
   REQUIRE(with.samples.size() == without.samples.size());
   std::array<double, 3> pnd_with{}, pnd_without{}, grad_with{}, grad_without{};
   std::array<int, 3> count{};
   for (std::size_t k = 0; k < with.samples.size(); ++k) {
-    const Sample &a = with.samples[k], &b = without.samples[k];
+    const ConvexSample &a = with.samples[k], &b = without.samples[k];
     const auto c = static_cast<std::size_t>(std::min(a.convex, 2));
     ++count[c];
     pnd_with[c] = std::max(pnd_with[c], std::abs(a.pnd_error) / with.n0);
@@ -115,10 +115,10 @@ TEST_CASE("emps 3-D walls: beside a box obstacle's convex edges and corners pnd 
 TEST_CASE("emps 3-D walls: the convex wedge takes solid away from pnd and weakens face 0's push "
           "without turning it",
           "[emps][walls3d][convex]") {
-  const Scene with = box_in_tank(true), without = box_in_tank(false);
+  const ConvexScene with = box_in_tank(true), without = box_in_tank(false);
   int corrected = 0, pushed = 0;
   for (std::size_t k = 0; k < with.samples.size(); ++k) {
-    const Sample &a = with.samples[k], &b = without.samples[k];
+    const ConvexSample &a = with.samples[k], &b = without.samples[k];
     // pnd: the wedge is a part of the half-space, never more.
     CHECK(a.pnd_error <= b.pnd_error + 1e-12 * with.n0);
     if (a.convex == 0) continue;

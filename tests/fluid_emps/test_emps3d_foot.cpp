@@ -19,7 +19,7 @@ namespace {
 /// x or z) or beyond a vertical edge, near the floor (its foot) or above it.
 enum Zone { face_foot, edge_foot, face_above, edge_above, zones };
 
-struct Sample {
+struct FootSample {
   Zone zone;
   int pieces;       ///< convex pieces (TriangleLocator::convex_faces)
   bool seeded;      ///< one of them seeded by no acting face
@@ -32,13 +32,13 @@ struct Sample {
   double pnd;
 };
 
-using Scene = emps::test::LatticeScene<Sample>;
+using FootScene = emps::test::LatticeScene<FootSample>;
 
 /// A 4 l0 box [7 l0, 11 l0] x [0, 4 l0] x [7 l0, 11 l0] standing on the floor y = 0 of an 18 l0
 /// cube tank: its top and four sides, normals out of it, no bottom (as scripts/tank_with_box_stl
 /// writes it). The lattice l0/2 + k l0 outside the box at rest under a uniform pressure P.
-Scene box_on_floor(bool convex_corners) {
-  Scene s;
+FootScene box_on_floor(bool convex_corners) {
+  FootScene s;
   const double l0 = s.l0;
   const Vec3 lo(7 * l0, 0.0, 7 * l0), hi(11 * l0, 4 * l0, 11 * l0);
   emps::test::CubeTank tank(l0, convex_corners);
@@ -110,13 +110,13 @@ TEST_CASE("emps 3-D walls: at the foot of a box standing on the floor pnd at res
           "lattice of floor and box counted directly, and the wall pressure term balances a "
           "uniform pressure, with convex_corners",
           "[emps][walls3d][convex][foot]") {
-  const Scene with = box_on_floor(true), without = box_on_floor(false);
+  const FootScene with = box_on_floor(true), without = box_on_floor(false);
   REQUIRE(with.samples.size() == without.samples.size());
   std::array<double, zones> pnd_with{}, pnd_without{}, grad_with{}, grad_without{};
   std::array<int, zones> count{}, seeded{};
   double split = 0.0;
   for (std::size_t k = 0; k < with.samples.size(); ++k) {
-    const Sample &a = with.samples[k], &b = without.samples[k];
+    const FootSample &a = with.samples[k], &b = without.samples[k];
     const auto z = static_cast<std::size_t>(a.zone);
     ++count[z];
     seeded[z] += a.seeded;
@@ -147,10 +147,10 @@ TEST_CASE("emps 3-D walls: at the foot of a box standing on the floor pnd at res
 TEST_CASE("emps 3-D walls: beyond the foot of a box's vertical edge the box's own piece raises pnd "
           "and pushes the particle away from the box",
           "[emps][walls3d][convex][foot]") {
-  const Scene with = box_on_floor(true), without = box_on_floor(false);
+  const FootScene with = box_on_floor(true), without = box_on_floor(false);
   int raised = 0, pushed = 0, own = 0;
   for (std::size_t k = 0; k < with.samples.size(); ++k) {
-    const Sample &a = with.samples[k], &b = without.samples[k];
+    const FootSample &a = with.samples[k], &b = without.samples[k];
     if (!a.seeded) continue;
     ++own;
     // Without it the floor's half-space alone: the box's lattice adds to pnd, never takes away.

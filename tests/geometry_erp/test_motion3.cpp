@@ -13,11 +13,11 @@ using namespace fsi::erp;
 
 namespace {
 
-struct FdErrors {
+struct FdErrors3 {
   double v, a;
 };
 
-FdErrors fd_errors(const RigidMotion3& m, const Vec3& X, double t, double h) {
+FdErrors3 fd_errors3(const RigidMotion3& m, const Vec3& X, double t, double h) {
   const auto x = [&](double s) { return m.at(s, X).x; };
   const NodeState3 exact = m.at(t, X);
   const Vec3 v_fd = (x(t + h) - x(t - h)) / (2.0 * h);
@@ -42,7 +42,7 @@ TEST_CASE("erp: 3-D rigid motions: positions exact, v and a the derivatives of x
     const double s = 0.05 * std::sin(2.0 * std::numbers::pi * t / 0.9 + 0.4);
     CHECK((translation.at(t, X).x - (X + s * Vec3(0.0, 0.6, 0.8))).norm() < 1e-15);
     for (const RigidMotion3* m : {&rotation, &translation}) {
-      const FdErrors coarse = fd_errors(*m, X, t, 1e-2), fine = fd_errors(*m, X, t, 5e-3);
+      const FdErrors3 coarse = fd_errors3(*m, X, t, 1e-2), fine = fd_errors3(*m, X, t, 5e-3);
       CHECK(coarse.v > 1e-9);
       CHECK(coarse.a > 1e-9);
       CHECK_THAT(coarse.v / fine.v, Catch::Matchers::WithinAbs(4.0, 0.05));

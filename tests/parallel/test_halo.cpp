@@ -17,7 +17,7 @@ using namespace fsi::parallel::test;
 
 namespace {
 
-constexpr std::uint32_t N = 3000;
+constexpr std::uint32_t halo_cloud_size = 3000;
 
 /// Distance from p to the box [lo, hi], written out (not Box::distance).
 template <int D> double box_distance(const Box<D>& b, const VecD<D>& p) {
@@ -43,7 +43,7 @@ TEMPLATE_TEST_CASE("Halo particles are exactly the other ranks' particles near t
   const double r_halo = D == 2 ? 0.06 : 0.1; // interaction radius + skin
   const Communicator comm;
   const auto me = static_cast<std::size_t>(comm.rank());
-  Cloud<D> c(N, comm.rank(), comm.size());
+  Cloud<D> c(halo_cloud_size, comm.rank(), comm.size());
   RcbPartition<D> rcb(comm);
   Migration migration;
   Halo<D> halo;
@@ -51,7 +51,7 @@ TEMPLATE_TEST_CASE("Halo particles are exactly the other ranks' particles near t
   rcb.partition(c.x.coords(), c.size(), dest);
   migration.migrate(comm, c.fields, dest);
   const std::size_t owned = c.size();
-  const auto owner = owners_of(comm, c.id, owned, N);
+  const auto owner = owners_of(comm, c.id, owned, halo_cloud_size);
 
   halo.build(comm, c.fields, c.x, rcb.boxes(), r_halo);
   CHECK(halo.owned() == owned);
@@ -60,16 +60,17 @@ TEMPLATE_TEST_CASE("Halo particles are exactly the other ranks' particles near t
   // Brute force: every particle (its reference position) of another rank near my box.
   const Box<D>& mine = rcb.boxes()[me];
   std::vector<std::uint32_t> expected;
-  for (std::uint32_t g = 0; g < N; ++g) {
+  for (std::uint32_t g = 0; g < halo_cloud_size; ++g) {
     VecD<D> p;
     for (int a = 0; a < D; ++a) p[a] = position<D>(g, a);
     if (owner[g] != comm.rank() && box_distance(mine, p) <= r_halo) expected.push_back(g);
   }
   std::vector<std::uint32_t> got(c.id.begin() + static_cast<std::ptrdiff_t>(owned), c.id.end());
   // Ordered by owner rank, then by the index on the owner.
-  std::vector<int> index_on_owner(N, 0);
+  std::vector<int> index_on_owner(halo_cloud_size, 0);
   for (std::size_t i = 0; i < owned; ++i) index_on_owner[c.id[i]] = static_cast<int>(i);
-  MPI_Allreduce(MPI_IN_PLACE, index_on_owner.data(), N, MPI_INT, MPI_SUM, comm.comm());
+  MPI_Allreduce(MPI_IN_PLACE, index_on_owner.data(), halo_cloud_size, MPI_INT, MPI_SUM,
+                comm.comm());
   bool ordered = true;
   for (std::size_t k = 1; k < got.size(); ++k) {
     const std::uint32_t a = got[k - 1], b = got[k];
@@ -104,9 +105,10 @@ TEMPLATE_TEST_CASE("Halo particles are exactly the other ranks' particles near t
   CHECK(comm.sum(static_cast<std::int64_t>(halo.sent())) == ghosts);
   if (comm.rank() == 0)
     std::printf("halo D=%d np=%d: r_halo %.2f, %lld ghosts for %u particles (%.1f %%)\n", D,
-                comm.size(), r_halo, static_cast<long long>(ghosts), N, 100.0 * ghosts / N);
+                comm.size(), r_halo, static_cast<long long>(ghosts), halo_cloud_size,
+                100.0 * ghosts / halo_cloud_size);
 
   // Ghosts dropped, the owned set migrates as before.
   halo.drop(c.fields);
-  CHECK(comm.sum(static_cast<std::int64_t>(c.size())) == N);
+  CHECK(comm.sum(static_cast<std::int64_t>(c.size())) == halo_cloud_size);
 }

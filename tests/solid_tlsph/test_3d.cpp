@@ -25,7 +25,7 @@ const char* name(GradientCorrection c) {
 }
 
 /// A 6 x 5 x 4 block at dp = 0.01, optionally every particle moved by up to 0.15 dp per axis.
-TlsphSolid3 block(GradientCorrection c, double jitter) {
+TlsphSolid3 jittered_block(GradientCorrection c, double jitter) {
   TlsphOptions3 o;
   o.dp = 0.01;
   o.gradient_correction = c;
@@ -53,7 +53,7 @@ TEST_CASE("tlsph 3-D: F of an affine motion is A to round-off on a perturbed lat
           "[solid_tlsph][3d]") {
   const Vec3 b(0.3, -0.2, 0.1);
   for (const GradientCorrection c : both) {
-    TlsphSolid3 s = block(c, 0.15);
+    TlsphSolid3 s = jittered_block(c, 0.15);
     deform(s, [&](const Vec3& X) { return Vec3(A * X + b); });
     double err = 0.0;
     for (std::size_t i = 0; i < s.size(); ++i)
@@ -79,7 +79,7 @@ TEST_CASE("tlsph 3-D: the quadratic correction's F is exact for a quadratic fiel
   };
   double err[2] = {0.0, 0.0};
   for (const GradientCorrection c : both) {
-    TlsphSolid3 s = block(c, 0.15);
+    TlsphSolid3 s = jittered_block(c, 0.15);
     deform(s, phi);
     double& e = err[c == GradientCorrection::quadratic];
     for (std::size_t i = 0; i < s.size(); ++i)
@@ -98,7 +98,7 @@ TEST_CASE("tlsph 3-D: a stretched block's forces restore it, conserve momentum a
   const Vec3 centre(0.03, 0.025, 0.02);
   const Mat3 R = Eigen::AngleAxisd(0.7, Vec3(1.0, 2.0, 3.0).normalized()).toRotationMatrix();
   for (const GradientCorrection c : both) {
-    TlsphSolid3 s = block(c, 0.0);
+    TlsphSolid3 s = jittered_block(c, 0.0);
     // Uniaxial stretch along x about the centre, then a rigid rotation R and a shift.
     deform(s, [&](const Vec3& X) {
       Vec3 d = X - centre;

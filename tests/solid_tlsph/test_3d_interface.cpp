@@ -21,7 +21,7 @@ using namespace fsi::tlsph;
 constexpr double a = 0.06, b = 0.05, c = 0.04;
 
 /// A free a x b x c block at dp = 0.01, no gravity, its interface on the faces `tags` (all: {}).
-TlsphSolid3 block(std::vector<std::string> tags) {
+TlsphSolid3 interface_block(std::vector<std::string> tags) {
   TlsphOptions3 o;
   o.dp = 0.01;
   o.material = {1.0e6, 0.3, 1000.0, fsi::materials::PlaneModel::plane_strain};
@@ -40,7 +40,7 @@ Vec3 area(const fsi::InterfaceMesh3& m, const std::vector<Vec3>& x, std::size_t 
 
 TEST_CASE("tlsph 3-D: the interface closes the box's surface, oriented outwards",
           "[solid_tlsph][3d][interface]") {
-  const TlsphSolid3 s = block({});
+  const TlsphSolid3 s = interface_block({});
   const fsi::InterfaceMesh3 m = s.interface_mesh();
   REQUIRE(m.order == 1);
   // Per face (ni + 2) x (nj + 2) nodes; the box's edges and corners shared.
@@ -60,7 +60,7 @@ TEST_CASE("tlsph 3-D: the interface closes the box's surface, oriented outwards"
     CHECK((s.reference_position(s.interface_particles()[k]) - m.X0[k]).norm() <
           std::sqrt(3.0) * 0.005 + 1e-12);
   // One tagged face: its area, its outward normal.
-  const TlsphSolid3 top = block({"z+"});
+  const TlsphSolid3 top = interface_block({"z+"});
   const fsi::InterfaceMesh3 t = top.interface_mesh();
   Vec3 sum = Vec3::Zero();
   for (std::size_t f = 0; f < t.faces.size(); ++f) sum += area(t, t.X0, f);
@@ -69,7 +69,7 @@ TEST_CASE("tlsph 3-D: the interface closes the box's surface, oriented outwards"
 
 TEST_CASE("tlsph 3-D: interface nodes and normals follow an affine motion exactly",
           "[solid_tlsph][3d][interface]") {
-  TlsphSolid3 s = block({});
+  TlsphSolid3 s = interface_block({});
   const std::vector<Vec3> n0 = s.interface_normals(); // F = I: the reference normals
   const Mat3 A =
       (Mat3() << 1.02, 0.013, -0.007, -0.011, 0.985, 0.021, 0.004, -0.016, 1.01).finished();
@@ -99,7 +99,7 @@ TEST_CASE("tlsph 3-D: interface nodes and normals follow an affine motion exactl
 
 TEST_CASE("tlsph 3-D: the total force on the solid equals the total interface load",
           "[solid_tlsph][3d][interface]") {
-  TlsphSolid3 s = block({});
+  TlsphSolid3 s = interface_block({});
   const std::size_t nodes = s.interface_mesh().node_count();
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> u(-1.0, 1.0);

@@ -13,7 +13,7 @@ using namespace tlsph_test;
 namespace {
 
 /// 30 x 12 particles on [0, 0.3] x [0, 0.12], no clamp, the quadratic correction.
-std::unique_ptr<TlsphSolid> free_block(double hourglass) {
+std::unique_ptr<TlsphSolid> hourglass_block(double hourglass) {
   TlsphOptions o;
   o.dp = 0.01;
   o.hourglass = hourglass;
@@ -65,7 +65,7 @@ double zigzag(const std::vector<double>& u) {
 TEST_CASE("tlsph hourglass: no penalty for quadratic fields and rigid motions, -dPi/dx for the "
           "row-alternating mode",
           "[solid_tlsph][hourglass]") {
-  auto on = free_block(TlsphOptions{}.hourglass), off = free_block(0.0);
+  auto on = hourglass_block(TlsphOptions{}.hourglass), off = hourglass_block(0.0);
   const auto quadratic = [](const Vec2& X) {
     return Vec2(0.013 * X.x() - 0.021 * X.y() + 0.04 * X.x() * X.y() + 0.02 * X.y() * X.y(),
                 0.007 * X.x() + 0.017 * X.y() + 0.03 * X.x() * X.x() - 0.01 * X.x() * X.y());

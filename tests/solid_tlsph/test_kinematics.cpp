@@ -14,7 +14,7 @@ using Catch::Matchers::Contains;
 namespace {
 
 /// 30 x 12 particles on [0, 0.3] x [0, 0.12], no clamp; the paper's B0 (eq. 14) or B0 = I.
-TlsphSolid free_block(bool correction) {
+TlsphSolid kernel_correction_block(bool correction) {
   TlsphOptions o;
   o.dp = 0.01;
   o.gradient_correction = GradientCorrection::linear;
@@ -51,7 +51,7 @@ PatchErrors patch(TlsphSolid& s) {
 
 TEST_CASE("tlsph: linear displacement gives the exact F at every particle with B0",
           "[solid_tlsph][patch]") {
-  TlsphSolid s = free_block(true);
+  TlsphSolid s = kernel_correction_block(true);
   const PatchErrors e = patch(s);
   INFO("corrected: interior " << e.interior << ", surface " << e.surface);
   CHECK(e.interior < 1e-12);
@@ -60,7 +60,7 @@ TEST_CASE("tlsph: linear displacement gives the exact F at every particle with B
 
 TEST_CASE("tlsph: without the correction the surface F is measurably wrong",
           "[solid_tlsph][patch]") {
-  TlsphSolid s = free_block(false);
+  TlsphSolid s = kernel_correction_block(false);
   const PatchErrors e = patch(s);
   INFO("uncorrected: interior " << e.interior << ", surface " << e.surface);
   // |A| ~ 0.02: a truncated kernel support loses about half the moment at the surface.

@@ -17,8 +17,8 @@ using namespace fsi::fem;
 
 namespace {
 
-constexpr double a = 1.0, h = 0.1, E = 2.0e11, nu = 0.3, q = 1.0e5; // a/h = 10
-const double D = E * h * h * h / (12.0 * (1.0 - nu * nu));          // flexural rigidity
+constexpr double a = 1.0, h = 0.1, E_plate = 2.0e11, nu_plate = 0.3, q = 1.0e5; // a/h = 10
+const double D = E_plate * h * h * h / (12.0 * (1.0 - nu_plate * nu_plate));    // flexural rigidity
 /// Centre deflection w D / (q a^4) of the clamped square plate, nu = 0.3: Kirchhoff (Timoshenko &
 /// Woinowsky-Krieger, Theory of Plates and Shells, 2nd ed., sec. 44, Table 35), and Mindlin with
 /// k = 5/6 at a/h = 10 (Legendre–Ritz solution of Mindlin's equations,
@@ -31,7 +31,7 @@ constexpr double kirchhoff_coefficient = 0.00126, mindlin_coefficient = 0.001504
 double centre_deflection(int n) {
   const int nz = n / 5;
   const TetMesh mesh = make_box_mesh({{0.0, 0.0, 0.0}, {0.5 * a, 0.5 * a, h}, {n, n, nz}});
-  const auto law = make_material_3d({E, nu, 7800.0});
+  const auto law = make_material_3d({E_plate, nu_plate, 7800.0});
   const DofMap dofs(mesh, {{"x_min", {true, true, true}, {}},
                            {"y_min", {true, true, true}, {}},
                            {"x_max", {true, false, false}, {}},

@@ -65,7 +65,7 @@ double factorial(int n) {
   return n <= 1 ? 1.0 : n * factorial(n - 1);
 }
 
-MaterialOptions steel(MaterialModel model = MaterialModel::saint_venant_kirchhoff) {
+MaterialOptions steel_3d(MaterialModel model = MaterialModel::saint_venant_kirchhoff) {
   return {2.0e11, 0.3, 7800.0, PlaneModel::plane_strain, model};
 }
 
@@ -149,7 +149,7 @@ TEST_CASE("T10: patch test: a homogeneous finite deformation gives the nodal for
   F << 1.08, 0.21, -0.07, -0.12, 0.93, 0.15, 0.05, -0.18, 1.11; // stretch, shear, rotation
   for (const auto model : {MaterialModel::saint_venant_kirchhoff, MaterialModel::neo_hookean}) {
     CAPTURE(static_cast<int>(model));
-    const auto law = make_material_3d(steel(model));
+    const auto law = make_material_3d(steel_3d(model));
     const Mat3 H = F - Mat3::Identity();
     const Mat3 P = F * law->stress(0.5 * (H + H.transpose() + H.transpose() * H));
     Vec30 expected = Vec30::Zero();
@@ -174,14 +174,14 @@ TEST_CASE("T10: a rigid rotation of 60 degrees gives zero internal force", "[str
                      .toRotationMatrix();
   for (const auto model : {MaterialModel::saint_venant_kirchhoff, MaterialModel::neo_hookean}) {
     CAPTURE(static_cast<int>(model));
-    const auto law = make_material_3d(steel(model));
+    const auto law = make_material_3d(steel_3d(model));
     Vec30 f;
     const ElementT10 element(X);
     const double detF =
         element.internal_force(displacement_of(X, R, Vec3(1.0, -2.0, 0.5)), *law, f, nullptr);
     CHECK_THAT(detF, WithinRel(1.0, 1e-13));
     // Scale: the force of a unit strain, E V^(2/3).
-    const double scale = steel().youngs_modulus * std::cbrt(curved_volume() * curved_volume());
+    const double scale = steel_3d().youngs_modulus * std::cbrt(curved_volume() * curved_volume());
     CHECK(f.cwiseAbs().maxCoeff() <= 1e-12 * scale);
   }
 }
@@ -194,7 +194,7 @@ TEST_CASE("T10: the tangent equals central differences of the internal force",
   for (int i = 0; i < 30; ++i) u(i) = 0.08 * std::sin(12.9898 * i + 78.233); // det F > 0
   for (const auto model : {MaterialModel::saint_venant_kirchhoff, MaterialModel::neo_hookean}) {
     CAPTURE(static_cast<int>(model));
-    const auto law = make_material_3d(steel(model));
+    const auto law = make_material_3d(steel_3d(model));
     Vec30 f;
     Mat30 K;
     REQUIRE(element.internal_force(u, *law, f, &K) > 0.5);

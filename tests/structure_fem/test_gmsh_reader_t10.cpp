@@ -132,7 +132,7 @@ std::string message_of_text(const std::string& text, const std::vector<std::stri
   return message_of([&] { read_text(text, groups); });
 }
 
-std::string gmsh_fixture(const std::string& name) {
+std::string gmsh_file(const std::string& name) {
   return std::string(FSI_TEST_DATA) + "/gmsh/" + name;
 }
 
@@ -216,7 +216,7 @@ TEST_CASE("fem: Gmsh T10 reader: two tetrahedra as ASCII 4.1, binary 4.1 and ASC
 TEST_CASE("fem: Gmsh T10 reader: a unit cube from Gmsh in three formats",
           "[structure_fem][gmsh][t10]") {
   const std::vector<std::string> groups = {"clamped", "loaded", "solid"};
-  const TetMesh ascii = read_gmsh_t10(gmsh_fixture("cube_41.msh"), groups);
+  const TetMesh ascii = read_gmsh_t10(gmsh_file("cube_41.msh"), groups);
   CHECK(ascii.num_nodes() == 63);
   CHECK(ascii.num_elements() == 24);
   CHECK(volume(ascii) == Approx(1.0).epsilon(1e-14));
@@ -227,8 +227,8 @@ TEST_CASE("fem: Gmsh T10 reader: a unit cube from Gmsh in three formats",
     for (int k : face.nodes) CHECK(ascii.X[static_cast<std::size_t>(k)].z() == z);
   }
   CHECK(check_faces(ascii) <= 1e-15);
-  check_same(ascii, read_gmsh_t10(gmsh_fixture("cube_41_bin.msh"), groups));
-  check_same(ascii, read_gmsh_t10(gmsh_fixture("cube_22.msh"), groups));
+  check_same(ascii, read_gmsh_t10(gmsh_file("cube_41_bin.msh"), groups));
+  check_same(ascii, read_gmsh_t10(gmsh_file("cube_22.msh"), groups));
 }
 
 TEST_CASE("fem: Gmsh T10 reader: bad meshes are refused with their file and line",
@@ -294,12 +294,12 @@ TEST_CASE("fem: Gmsh T10 reader: bad meshes are refused with their file and line
   CHECK(message_of_text(ascii41(twice)) ==
         "t.msh:48: node 15: duplicate node (same coordinates as node 1)");
 
-  CHECK(message_of([] { read_gmsh_t10(gmsh_fixture("plate_41.msh")); }) ==
-        gmsh_fixture("plate_41.msh") +
+  CHECK(message_of([] { read_gmsh_t10(gmsh_file("plate_41.msh")); }) ==
+        gmsh_file("plate_41.msh") +
             ": a 2-D mesh (6-node triangles, no 10-node tetrahedra): read it as a 2-D solid, or "
             "mesh the volume with gmsh -3 -order 2");
-  CHECK(message_of([] { read_gmsh_t10(gmsh_fixture("cube_order1.msh")); }) ==
-        gmsh_fixture("cube_order1.msh") +
+  CHECK(message_of([] { read_gmsh_t10(gmsh_file("cube_order1.msh")); }) ==
+        gmsh_file("cube_order1.msh") +
             ":89: element 1: 3-node triangle (type 2): wrong element order, need second-order "
             "6-node triangles (type 9): mesh with gmsh -3 -order 2");
 }

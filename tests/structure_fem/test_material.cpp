@@ -17,7 +17,7 @@ using Catch::Matchers::WithinRel;
 namespace {
 
 /// The coarse sloshing beam's rubber (E' = 2.897e5 Pa, nu = 0.49, plane strain).
-MaterialOptions rubber(MaterialModel model) {
+MaterialOptions sloshing_rubber(MaterialModel model) {
   return {2.897e5, 0.49, 988.9, PlaneModel::plane_strain, model};
 }
 
@@ -53,10 +53,10 @@ int compress(Structure& s, double P, int load_steps) {
   return halvings;
 }
 
-std::unique_ptr<Structure> block(MaterialModel model,
-                                 int max_halvings = NewtonOptions{}.max_halvings) {
+std::unique_ptr<Structure> material_block(MaterialModel model,
+                                          int max_halvings = NewtonOptions{}.max_halvings) {
   StructureOptions o;
-  o.material = rubber(model);
+  o.material = sloshing_rubber(model);
   o.clamped = {{"left", true, false, {}, {}}, {"bottom", false, true, {}, {}}};
   o.newton.max_halvings = max_halvings;
   o.linear_solver.kind = LinearSolverKind::umfpack; // a trial tangent may be indefinite
@@ -67,7 +67,7 @@ std::unique_ptr<Structure> block(MaterialModel model,
 
 TEST_CASE("fem: neo-Hookean stress and tangent are the derivatives of its energy",
           "[structure_fem][material]") {
-  const auto nh = make_material(rubber(MaterialModel::neo_hookean));
+  const auto nh = make_material(sloshing_rubber(MaterialModel::neo_hookean));
   fsi::Mat2 E;
   E << -0.21, 0.13, 0.13, 0.34; // large strain with shear, det C > 0
   const double h = 1e-6;
@@ -91,14 +91,14 @@ TEST_CASE("fem: neo-Hookean stress and tangent are the derivatives of its energy
     for (int b = 0; b < 3; ++b) CHECK_THAT(D(b, a), WithinAbs(dS_voigt[b], 1e-6 * D.norm()));
   }
   // At E = 0 both laws have the linear-elastic tangent; the stress is zero.
-  const auto svk = make_material(rubber(MaterialModel::saint_venant_kirchhoff));
+  const auto svk = make_material(sloshing_rubber(MaterialModel::saint_venant_kirchhoff));
   CHECK((nh->tangent(fsi::Mat2::Zero()) - svk->tangent(fsi::Mat2::Zero())).norm() <
         1e-12 * svk->tangent(fsi::Mat2::Zero()).norm());
   CHECK(nh->stress(fsi::Mat2::Zero()).norm() == 0.0);
 }
 
 TEST_CASE("fem: neo-Hookean with plane stress is refused", "[structure_fem][material]") {
-  MaterialOptions o = rubber(MaterialModel::neo_hookean);
+  MaterialOptions o = sloshing_rubber(MaterialModel::neo_hookean);
   o.plane = PlaneModel::plane_stress;
   CHECK_THROWS_AS(validate(o), fsi::InputError);
 }
@@ -106,17 +106,17 @@ TEST_CASE("fem: neo-Hookean with plane stress is refused", "[structure_fem][mate
 TEST_CASE("fem: uniaxial compression past the SVK limit load: SVK crushes, neo-Hookean reaches "
           "the analytic stretch",
           "[structure_fem][material]") {
-  const Lame m = lame(rubber(MaterialModel::neo_hookean));
+  const Lame m = lame(sloshing_rubber(MaterialModel::neo_hookean));
   const double l1 = 0.4; // the stretch the neo-Hookean block must reach
   const Uniaxial exact = neo_hookean_uniaxial(m, l1);
   // SVK under S22 = 0: P11 = E* l1 (l1^2 - 1) / 2 with E* = 4 mu (lambda + mu) / (lambda + 2 mu),
   // whose largest compression is E* / (3 sqrt 3) at l1 = 1 / sqrt 3: no equilibrium beyond it.
   const double E_star = 4.0 * m.mu * (m.lambda + m.mu) / (m.lambda + 2.0 * m.mu);
   REQUIRE(-exact.P > 2.0 * E_star / (3.0 * std::sqrt(3.0)));
-  CHECK_THROWS_AS(compress(*block(MaterialModel::saint_venant_kirchhoff), exact.P, 40),
+  CHECK_THROWS_AS(compress(*material_block(MaterialModel::saint_venant_kirchhoff), exact.P, 40),
                   fsi::RunError);
 
-  const auto s = block(MaterialModel::neo_hookean);
+  const auto s = material_block(MaterialModel::neo_hookean);
   compress(*s, exact.P, 10);
   const auto& X = s->mesh().X;
   const Vector& u = s->displacement();
@@ -129,14 +129,14 @@ TEST_CASE("fem: uniaxial compression past the SVK limit load: SVK crushes, neo-H
 
 TEST_CASE("fem: Newton halves an increment that inverts an element and converges",
           "[structure_fem][material][newton]") {
-  const Lame m = lame(rubber(MaterialModel::neo_hookean));
+  const Lame m = lame(sloshing_rubber(MaterialModel::neo_hookean));
   const double l1 = 0.4;
   const Uniaxial exact = neo_hookean_uniaxial(m, l1);
   // In one load step the first Newton increment (the linear solution, u_x = P / E* at the
   // right edge, beyond -1) inverts every element.
-  CHECK_THROWS_WITH(compress(*block(MaterialModel::neo_hookean, 0), exact.P, 1),
+  CHECK_THROWS_WITH(compress(*material_block(MaterialModel::neo_hookean, 0), exact.P, 1),
                     Catch::Contains("inverted element"));
-  const auto s = block(MaterialModel::neo_hookean);
+  const auto s = material_block(MaterialModel::neo_hookean);
   CHECK(compress(*s, exact.P, 1) > 0);
   CHECK_THAT(s->displacement()[2 * 4], WithinAbs(l1 - 1.0, 1e-9));            // node 4: (1, 0)
   CHECK_THAT(s->displacement()[2 * 20 + 1], WithinAbs(exact.l2 - 1.0, 1e-9)); // node 20: (0, 1)

@@ -14,7 +14,7 @@ using fsi::materials::voigt_pairs;
 
 namespace {
 
-MaterialOptions rubber(MaterialModel model) {
+MaterialOptions rubber_3d(MaterialModel model) {
   return {2.897e5, 0.45, 988.9, PlaneModel::plane_strain, model};
 }
 
@@ -65,7 +65,7 @@ TEST_CASE("materials 3-D: S = dW/dE and the tangent = dS/dE at a finite deformat
           "[structure_fem][material][3d]") {
   for (const auto model : {MaterialModel::saint_venant_kirchhoff, MaterialModel::neo_hookean}) {
     CAPTURE(static_cast<int>(model));
-    const auto law = make_material_3d(rubber(model));
+    const auto law = make_material_3d(rubber_3d(model));
     const Mat3 E = random_strain();
     const Eigen::Matrix<double, 6, 1> S = voigt(law->stress(E));
     const Mat6 C = law->tangent(E);
@@ -88,7 +88,7 @@ TEST_CASE("materials 3-D: stress-free reference and the small-strain limit is li
           "[structure_fem][material][3d]") {
   for (const auto model : {MaterialModel::saint_venant_kirchhoff, MaterialModel::neo_hookean}) {
     CAPTURE(static_cast<int>(model));
-    const MaterialOptions o = rubber(model);
+    const MaterialOptions o = rubber_3d(model);
     const auto law = make_material_3d(o);
     CHECK(law->energy(Mat3::Zero()) == 0.0);
     CHECK(law->stress(Mat3::Zero()).norm() == 0.0);
@@ -114,7 +114,7 @@ TEST_CASE("materials 3-D: stress-free reference and the small-strain limit is li
 TEST_CASE("materials 3-D: a hydrostatic stretch gives the closed-form neo-Hookean stress",
           "[structure_fem][material][3d]") {
   // F = s I: C = s^2 I, J = s^3, S = (mu (1 - 1/s^2) + lambda 3 ln s / s^2) I.
-  const MaterialOptions o = rubber(MaterialModel::neo_hookean);
+  const MaterialOptions o = rubber_3d(MaterialModel::neo_hookean);
   const double mu = o.youngs_modulus / (2.0 * (1.0 + o.poisson_ratio));
   const double lambda = o.youngs_modulus / (3.0 * (1.0 - 2.0 * o.poisson_ratio)) - 2.0 * mu / 3.0;
   const double s = 0.8;

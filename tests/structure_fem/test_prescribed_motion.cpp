@@ -16,14 +16,14 @@ using namespace fsi::fem;
 
 namespace {
 
-Mesh block() {
+Mesh strip_mesh() {
   RectangleMeshOptions r;
   r.origin = {0.2, 0.1};
   r.width = 0.5, r.height = 0.1, r.elements_x = 10, r.elements_y = 2;
   return make_rectangle_mesh(r);
 }
 
-StructureOptions rubber() {
+StructureOptions rubber_strip() {
   StructureOptions o;
   o.material.youngs_modulus = 3.3e6;
   o.material.poisson_ratio = 0.3;
@@ -45,12 +45,12 @@ TEST_CASE("fem: a body whose clamped edge falls freely falls with it, stress-fre
   // and Newmark integrates a constant acceleration exactly for any beta, gamma.
   const fem_test::Sequential sequential;
   const Vec2 g(0.3, -9.81);
-  StructureOptions o = rubber();
+  StructureOptions o = rubber_strip();
   o.gravity = g;
   o.clamped = {{"left", true, true, {}, [g](const Vec2&, double t) {
                   return PrescribedKinematics{0.5 * t * t * g, t * g, g};
                 }}};
-  Structure s(block(), o);
+  Structure s(strip_mesh(), o);
   const double dt = 2e-3;
   for (int i = 0; i < 50; ++i) s.advance(dt);
   const double t = s.time();
@@ -72,10 +72,10 @@ TEST_CASE("fem: without the clamped inertia a falling body would strain (the tes
   // Same fall, but the edge is held in place: the body hangs and strains. Guards the test above
   // against passing trivially.
   const fem_test::Sequential sequential;
-  StructureOptions o = rubber();
+  StructureOptions o = rubber_strip();
   o.gravity = {0.3, -9.81};
   o.clamped = {{"left", true, true, {}}};
-  Structure s(block(), o);
+  Structure s(strip_mesh(), o);
   for (int i = 0; i < 50; ++i) s.advance(2e-3);
   CHECK(max_abs(s.von_mises()) > 1e3);
 }
@@ -92,13 +92,13 @@ TEST_CASE("fem: a large rigid rotation prescribed on the clamped edge turns the 
     R << std::cos(theta), -std::sin(theta), std::sin(theta), std::cos(theta);
     return R;
   };
-  StructureOptions o = rubber();
+  StructureOptions o = rubber_strip();
   o.clamped = {{"left", true, true, {}, [&](const Vec2& X, double t) {
                   return PrescribedKinematics{(rotation(theta_end * t) - Mat2::Identity()) *
                                                   (X - c),
                                               Vec2::Zero(), Vec2::Zero()};
                 }}};
-  Structure s(block(), o);
+  Structure s(strip_mesh(), o);
   StaticOptions so;
   so.load_steps = 6;
   so.time = 1.0;
@@ -117,14 +117,14 @@ TEST_CASE("fem: clamped dofs carry the prescribed u, v, a after each step and in
   // A roller (x only) on the left edge oscillating in x; y stays free there.
   const fem_test::Sequential sequential;
   const double A = 0.01, w = 2.0 * std::numbers::pi / 0.4;
-  StructureOptions o = rubber();
+  StructureOptions o = rubber_strip();
   o.gravity = {0.0, -9.81};
   o.clamped = {{"left", true, false, {}, [&](const Vec2&, double t) {
                   return PrescribedKinematics{{A * std::sin(w * t), 7.0},
                                               {A * w * std::cos(w * t), 7.0},
                                               {-A * w * w * std::sin(w * t), 7.0}};
                 }}};
-  Structure s(block(), o);
+  Structure s(strip_mesh(), o);
   const auto left = s.mesh().node_set("left");
   const double dt = 1e-3;
   for (int i = 0; i < 30; ++i) {

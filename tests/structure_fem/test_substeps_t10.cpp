@@ -19,7 +19,7 @@ using namespace fsi::fem;
 namespace {
 
 /// A 1 x 0.2 x 0.2 m rubber cantilever (4 x 1 x 1 cells) clamped on x_min, neo-Hookean.
-std::unique_ptr<StructureT10> cantilever(int max_substep_levels) {
+std::unique_ptr<StructureT10> cantilever_t10(int max_substep_levels) {
   StructureT10Options o;
   o.material = {1.0e6, 0.45, 1000.0, PlaneModel::plane_strain, MaterialModel::neo_hookean};
   o.clamped = {{"x_min", {true, true, true}, {}, {}}};
@@ -29,7 +29,7 @@ std::unique_ptr<StructureT10> cantilever(int max_substep_levels) {
       make_box_mesh({{0.0, 0.0, 0.0}, {1.0, 0.2, 0.2}, {4, 1, 1}}), o);
 }
 
-Vector tip_load(const StructureT10& s, double q) { // q N/m^2 downward on face x_max
+Vector tip_load_t10(const StructureT10& s, double q) { // q N/m^2 downward on face x_max
   return face_traction_forces(s.mesh(), "x_max",
                               [&](const fsi::Vec3&) { return fsi::Vec3(0.0, 0.0, -q); });
 }
@@ -84,27 +84,27 @@ TEST_CASE("T10: save/restore and a checkpoint mid-run continue bit for bit",
   auto run = [&](StructureT10& s, int count) {
     for (int i = 0; i < count; ++i) s.advance(dt);
   };
-  auto reference = cantilever(3);
-  reference->set_external_forces(tip_load(*reference, q));
+  auto reference = cantilever_t10(3);
+  reference->set_external_forces(tip_load_t10(*reference, q));
   run(*reference, steps);
 
   // save, two steps, restore, and the same steps again: the re-run of iterative coupling.
-  auto rerun = cantilever(3);
-  rerun->set_external_forces(tip_load(*rerun, q));
+  auto rerun = cantilever_t10(3);
+  rerun->set_external_forces(tip_load_t10(*rerun, q));
   run(*rerun, middle);
   const StructureState saved = rerun->save();
   run(*rerun, 2);
   rerun->restore(saved);
-  rerun->set_external_forces(tip_load(*rerun, q));
+  rerun->set_external_forces(tip_load_t10(*rerun, q));
   run(*rerun, steps - middle);
 
   // Checkpoint written mid-run and read into a new structure.
-  auto first = cantilever(3);
-  first->set_external_forces(tip_load(*first, q));
+  auto first = cantilever_t10(3);
+  first->set_external_forces(tip_load_t10(*first, q));
   run(*first, middle);
   fsi::StateArchive archive;
   first->write_state(archive, "solid.");
-  auto resumed = cantilever(3);
+  auto resumed = cantilever_t10(3);
   resumed->read_state(archive, "solid.");
   run(*resumed, steps - middle);
 
