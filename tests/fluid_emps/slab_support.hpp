@@ -1,9 +1,12 @@
 #pragma once
 // What the quasi-2-D slab tests share (test_emps3d_slab.cpp, test_emps3d_periodic.cpp): the
 // shipped dam break's water at l0 = 0.01 m (the standard wall preset, slip walls, gravity -y),
-// its 2-D twin and the 2-D lattice ordered as the 3-D block's layers.
+// its 2-D twin, the 2-D lattice ordered as the 3-D block's layers, and a lattice column's range
+// across z.
 #include "test_support.hpp"
 
+#include <algorithm>
+#include <utility>
 #include <vector>
 
 namespace fsi::emps::test {
@@ -40,6 +43,16 @@ inline std::vector<Vec2> block2(int nx, int ny) {
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i) x.emplace_back(l0 * (i + 0.5), l0 * (j + 0.5));
   return x;
+}
+
+/// The smallest and largest of `by_id` (values indexed by the block's lattice id) over the
+/// lattice column c through the nz layers of `layer` particles each.
+inline std::pair<double, double> across_z(const std::vector<double>& by_id, std::size_t c,
+                                          std::size_t layer) {
+  double lo = by_id[c], hi = by_id[c];
+  for (std::size_t k = 1; k < nz; ++k)
+    lo = std::min(lo, by_id[c + k * layer]), hi = std::max(hi, by_id[c + k * layer]);
+  return {lo, hi};
 }
 
 } // namespace fsi::emps::test

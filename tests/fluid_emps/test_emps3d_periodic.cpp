@@ -106,9 +106,7 @@ TEST_CASE("emps 3-D periodic z: a column at rest has the same pnd in every z lay
   for (std::size_t i = 0; i < p.size(); ++i) pnd2[p.id[i]] = p.pnd[i];
   double bulk = 0.0, spread = 0.0, bulk2 = 0.0;
   for (std::size_t c = 0; c < layer; ++c) { // the lattice column (i, j) through every z layer
-    double lo = pnd[c], hi = pnd[c];
-    for (std::size_t k = 1; k < nz; ++k)
-      lo = std::min(lo, pnd[c + k * layer]), hi = std::max(hi, pnd[c + k * layer]);
+    const auto [lo, hi] = across_z(pnd, c, layer);
     spread = std::max(spread, (hi - lo) / slab.n0());
     const double y = l0 * (static_cast<double>(c / nx) + 0.5);
     if (y < H - r_e) {

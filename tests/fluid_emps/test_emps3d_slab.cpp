@@ -42,9 +42,7 @@ TEST_CASE("emps 3-D slab: between slip side walls a column has pnd = n0 below th
   for (std::size_t i = 0; i < s.size(); ++i) pnd[s.id[i]] = s.pnd[i];
   double bulk = 0.0, spread = 0.0, surface = 0.0;
   for (std::size_t c = 0; c < layer; ++c) { // the lattice column (i, j) through every z layer
-    double lo = pnd[c], hi = pnd[c];
-    for (std::size_t k = 1; k < nz; ++k)
-      lo = std::min(lo, pnd[c + k * layer]), hi = std::max(hi, pnd[c + k * layer]);
+    const auto [lo, hi] = across_z(pnd, c, layer);
     const double y = l0 * (static_cast<double>(c / nx) + 0.5);
     if (y < H - r_e) {
       bulk = std::max({bulk, std::abs(hi / slab.n0() - 1), std::abs(lo / slab.n0() - 1)});

@@ -4,7 +4,7 @@
 // particles within `reach` of the two faces, appended after them, so the pair loops, which read
 // ghosts and write owned particles, see the period without a change; migrate() wraps the owned
 // positions back into [lo, lo + L) before each neighbour-list build. One process: the reductions
-// are their argument, as LocalParticles'.
+// are LocalParticles'.
 #include "particles/decomposition.hpp"
 
 #include <cstdint>
@@ -12,7 +12,7 @@
 
 namespace fsi::particles {
 
-template <int D> class PeriodicImages final : public Decomposition<D> {
+template <int D> class PeriodicImages final : public LocalParticles<D> {
 public:
   /// Periodic along `axis` over [lo, lo + period); `x` is the set's position field (its
   /// component along the axis receives the images' shifts). Needs period > 0.
@@ -37,21 +37,6 @@ public:
   /// Image k's owned particle and its shift along the axis (+-L).
   std::uint32_t source(std::size_t k) const { return source_[k]; }
   double shift(std::size_t k) const { return shift_[k]; }
-  int axis() const { return axis_; }
-
-  double halo_bytes() const override { return 0.0; }
-  double waited_seconds() const override { return 0.0; }
-  double sum(double v) const override { return v; }
-  void sum(std::vector<double>&) const override {}
-  double max(double v) const override { return v; }
-  double min(double v) const override { return v; }
-  bool all(bool v) const override { return v; }
-  void fail(const std::string& what) override { throw RunError(what); }
-  void agree() override {}
-  int rank() const override { return 0; }
-  void gather(const std::vector<double>& local, std::vector<double>& all) const override {
-    all = local;
-  }
 
 private:
   int axis_;
