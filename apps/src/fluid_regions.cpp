@@ -183,6 +183,30 @@ void read_box_area(Section& s, double l0, std::vector<BoxRegion>& regions,
     domain = read_box_region(*d, "the domain");
 }
 
+bool read_periodic_z(Section& s) {
+  return s.boolean("periodic_z", false,
+                   "(dimension 3) the fluid and the tank wrap along z over the tank's depth, a "
+                   "whole number of l0: a slab with no walls behind its z faces (quasi-2-D runs); "
+                   "needs tank, and a domain (if given) of the tank's z");
+}
+
+void check_periodic_z(Section& s, const std::optional<BoxRegion>& tank,
+                      const std::optional<BoxRegion>& domain, double l0) {
+  if (!tank) s.fail("periodic_z", "needs a tank (its depth along z is the period)");
+  const double layers = (tank->max.z() - tank->min.z()) / l0;
+  if (std::abs(layers - std::round(layers)) > 1e-9 * layers)
+    s.fail("periodic_z", "the tank's depth " + significant(tank->max.z() - tank->min.z(), 6) +
+                             " m is not a whole number of l0 = " + significant(l0, 6) +
+                             " m (the lattice would not wrap)");
+  if (domain && (domain->min.z() != tank->min.z() || domain->max.z() != tank->max.z()))
+    s.fail("domain", "with periodic_z its z range must be the tank's (the period)");
+}
+
+std::string periodic_refusal(const Section& s, const std::string& key) {
+  return s.message(key, "not yet supported under mpirun (issue 47): a periodic fluid cannot be "
+                        "decomposed; run it without mpirun");
+}
+
 bool inside_box(const Vec3& p, const Vec3& lo, const Vec3& hi) {
   return (p - lo).minCoeff() >= 0.0 && (hi - p).minCoeff() >= 0.0;
 }

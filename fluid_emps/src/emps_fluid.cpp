@@ -42,6 +42,10 @@ template <int D> const BasicFluidOptions<D>& validated(const BasicFluidOptions<D
   auto fail = [](const std::string& what) { throw InputError("fluid: " + what); };
   if (!(o.domain_max.array() > o.domain_min.array()).all()) fail("the domain box is empty");
   if (!(o.skin > 0 && o.skin < 1)) fail("skin must be in (0, 1)");
+  // The images reach one period: the list's reach r_e (1 + skin) must not exceed it.
+  if (o.periodic_z && D != 3) fail("periodic_z is for 3-D fluids");
+  if (o.periodic_z && o.domain_max[D - 1] - o.domain_min[D - 1] < o.r_e() * (1.0 + o.skin))
+    fail("periodic_z: the period (the domain's depth) is shorter than r_e (1 + skin)");
   return options;
 }
 
@@ -111,6 +115,10 @@ template <int D> void BasicEmpsFluid<D>::start(const std::vector<Vec>& positions
   const double sites = D == 2 ? std::numbers::pi * reach * reach
                               : 4.0 / 3.0 * std::numbers::pi * reach * reach * reach;
   capacity_ = static_cast<std::size_t>(std::ceil(2.0 * sites)) + 16;
+  if (options_.periodic_z) // the images of the particles near the period's faces are the ghosts
+    decomposition_ = &periodic_.emplace(D - 1, options_.domain_min[D - 1],
+                                        options_.domain_max[D - 1] - options_.domain_min[D - 1],
+                                        particles_.position);
   remove_outside();
   refresh_neighbours({}, true, 0, 0.0);
   query_walls();
@@ -293,7 +301,7 @@ template <int D> void BasicEmpsFluid<D>::remove_outside() {
       owned(), std::size_t{0},
       [&](std::size_t i) {
         bool in = true;
-        for (int a = 0; a < D; ++a)
+        for (int a = 0; a < D - (options_.periodic_z ? 1 : 0); ++a) // z wraps: never out
           in = in && p.position[a][i] >= lo[a] && p.position[a][i] <= hi[a];
         keep_[i] = in;
         return std::size_t{in ? 0u : 1u};
@@ -320,6 +328,8 @@ template <int D> double BasicEmpsFluid<D>::max_speed() const {
 }
 
 template <int D> void BasicEmpsFluid<D>::decompose(particles::Decomposition<D>& decomposition) {
+  if (periodic_)
+    throw InputError("fluid: periodic_z is not yet supported over processes (issue 47)");
   decomposition_ = &decomposition;
   if (std::exchange(restored_, false)) {         // every process read the whole checkpoint
     if (decomposition.rank() != 0) removed_ = 0; // the checkpoint's count, kept on process 0
@@ -331,9 +341,9 @@ template <int D> void BasicEmpsFluid<D>::decompose(particles::Decomposition<D>& 
 }
 
 template <int D> void BasicEmpsFluid<D>::set_velocities(const std::vector<Vec>& v) {
-  if (v.size() != particles_.size())
+  if (v.size() != owned()) // the images take theirs at the next halo update
     throw InputError("fluid: " + std::to_string(v.size()) + " initial velocities for " +
-                     std::to_string(particles_.size()) + " particles");
+                     std::to_string(owned()) + " particles");
   for (std::size_t i = 0; i < v.size(); ++i)
     for (int a = 0; a < D; ++a) particles_.velocity[a][i] = v[i][a];
 }

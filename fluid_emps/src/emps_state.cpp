@@ -26,13 +26,14 @@ template <int D> typename BasicEmpsFluid<D>::State BasicEmpsFluid<D>::save() con
 }
 
 template <int D> void BasicEmpsFluid<D>::restore(const State& s) {
-  if (decomposed()) decomposition_->drop_ghosts(particles_.fields);
+  const bool ghosts = decomposition_ != &local_; // processes' or periodic images
+  if (ghosts) decomposition_->drop_ghosts(particles_.fields);
   particles_.fields.restore(s.particles);
   step_ = s.step;
   removed_ = s.removed;
   gap_dt_ = s.gap_dt;
   gap_limited_steps_ = s.gap_limited_steps;
-  if (s.layout != layout_ || decomposed()) {
+  if (s.layout != layout_ || ghosts) {
     layout_ = s.layout;
     neighbours_.invalidate();
   }
@@ -149,8 +150,9 @@ void BasicEmpsFluid<D>::read_state(const StateArchive& a, const std::string& pre
 
 template <int D>
 void BasicEmpsFluid<D>::read_rows(const StateArchive& a, const std::string& prefix, bool hits) {
+  if (periodic_) periodic_->drop_ghosts(particles_.fields);
   particles_.fields.read_state(a, prefix);
-  const std::size_t n = particles_.size();
+  std::size_t n = particles_.size();
   std::array<std::vector<double>, D> build;
   build[0] = a.reals(prefix + "neighbours/" + build_key(0));
   for (int axis = 1; axis < D; ++axis)
@@ -161,6 +163,7 @@ void BasicEmpsFluid<D>::read_rows(const StateArchive& a, const std::string& pref
     if (build[0].size() != n)
       throw InputError("checkpoint: '" + prefix +
                        "neighbours/x_build' does not match the particles");
+    if (periodic_) n = restore_images(build);
     particles::Coords<D> xb;
     for (std::size_t axis = 0; axis < D; ++axis) xb[axis] = build[axis].data();
     grid_.bin(xb, n);
@@ -192,6 +195,22 @@ void BasicEmpsFluid<D>::read_hits(const StateArchive& a,
     f.v_wall = unflatten(a.reals(h + face_key("v_wall", k), 2 * m));
   }
   walls_.hits_layout = layout_;
+}
+
+// periodic_z: the images the run that wrote the checkpoint built at its last list build (those
+// of the particles within reach of a face at their build positions), their current values and
+// their build positions (the owner's, shifted), so the list is rebuilt as it was.
+template <int D>
+std::size_t BasicEmpsFluid<D>::restore_images(std::array<std::vector<double>, D>& build) {
+  const std::size_t n = particles_.size();
+  periodic_->build_images(particles_.fields, build[D - 1].data(), r_e_ * (1.0 + options_.skin));
+  for (std::size_t axis = 0; axis < D; ++axis) {
+    std::vector<double>& b = build[axis];
+    b.resize(particles_.size());
+    for (std::size_t k = 0; k < periodic_->ghosts(); ++k)
+      b[n + k] = b[periodic_->source(k)] + (axis == D - 1 ? periodic_->shift(k) : 0.0);
+  }
+  return particles_.size();
 }
 
 // A restart under mpirun (issue 47): every process read the whole checkpoint (read_state).

@@ -8,9 +8,9 @@
 namespace fsi::erp {
 
 namespace {
-/// The faces of [lo, hi] but face `open` of the list below (-1: none), normals into the box (a
-/// tank) or out of it.
-TriangleRange add_box(TriangleWallSet& walls, const Vec3& lo, const Vec3& hi, int open,
+/// The faces of [lo, hi] but those of the list below whose bit is set in `open`, normals into
+/// the box (a tank) or out of it.
+TriangleRange add_box(TriangleWallSet& walls, const Vec3& lo, const Vec3& hi, unsigned open,
                       bool into_box, int group) {
   std::vector<Vec3> corner(8); // corner b: x from bit 0, y from bit 1, z from bit 2
   for (int b = 0; b < 8; ++b)
@@ -23,7 +23,7 @@ TriangleRange add_box(TriangleWallSet& walls, const Vec3& lo, const Vec3& hi, in
                            {0, 2, 6, 4}, {1, 3, 7, 5}, {4, 5, 7, 6}};
   std::vector<std::array<int, 3>> triangles;
   for (int f = 0; f < 6; ++f) {
-    if (f == open) continue;
+    if (open >> f & 1u) continue;
     const int* q = faces[f];
     for (const std::array<int, 3> t : {std::array<int, 3>{q[0], q[1], q[2]}, {q[0], q[2], q[3]}}) {
       const Vec3 &a = corner[static_cast<std::size_t>(t[0])],
@@ -40,7 +40,12 @@ TriangleRange add_box(TriangleWallSet& walls, const Vec3& lo, const Vec3& hi, in
 TriangleRange add_box_tank(TriangleWallSet& walls, const Vec3& lo, const Vec3& hi, bool open_top,
                            int group) {
   if (!(hi.array() > lo.array()).all()) throw InputError("box tank: empty box");
-  return add_box(walls, lo, hi, open_top ? 5 : -1, true, group);
+  return add_box(walls, lo, hi, open_top ? 1u << 5 : 0u, true, group);
+}
+
+TriangleRange add_box_slab(TriangleWallSet& walls, const Vec3& lo, const Vec3& hi, int group) {
+  if (!(hi.array() > lo.array()).all()) throw InputError("box slab: empty box");
+  return add_box(walls, lo, hi, 1u << 0 | 1u << 5, true, group);
 }
 
 TriangleRange add_box_obstacle(TriangleWallSet& walls, const Vec3& lo, const Vec3& hi, int group,
@@ -49,7 +54,8 @@ TriangleRange add_box_obstacle(TriangleWallSet& walls, const Vec3& lo, const Vec
   if (open_bottom < -1 || open_bottom > 2)
     throw InputError("box obstacle: no axis " + std::to_string(open_bottom));
   const int bottom_face[3] = {3, 1, 0}; // the face x = lo.x, y = lo.y, z = lo.z in the list
-  return add_box(walls, lo, hi, open_bottom < 0 ? -1 : bottom_face[open_bottom], false, group);
+  return add_box(walls, lo, hi, open_bottom < 0 ? 0u : 1u << bottom_face[open_bottom], false,
+                 group);
 }
 
 } // namespace fsi::erp

@@ -4,7 +4,7 @@
 // moves as the 2-D one does.
 #include "fluid_emps/emps_fluid.hpp"
 #include "geometry_erp/box_walls.hpp"
-#include "test_support.hpp"
+#include "slab_support.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -13,44 +13,7 @@
 #include <vector>
 
 using namespace fsi;
-
-namespace {
-
-constexpr double l0 = 0.01;
-constexpr int nz = 6; // the slab's depth in l0
-
-/// The shipped dam break's wall (the standard preset) with slip walls, gravity -y.
-emps::FluidOptions3 slab_water() {
-  emps::FluidOptions3 o = emps::test::water<3>(l0, -0.1, 0.3);
-  emps::apply_wall_preset(o, emps::WallModel::standard);
-  o.viscosity = 1e-6;
-  o.wall.contact.alpha_rep = 1e5;
-  o.wall.mirror.condition = emps::WallCondition::slip;
-  o.gravity = Vec3(0, -9.81, 0);
-  return o;
-}
-
-/// The 2-D twin: the same keys, x-y plane.
-emps::FluidOptions plane_water() {
-  const emps::FluidOptions3 s = slab_water();
-  emps::FluidOptions o = emps::test::water<2>(l0, -0.1, 0.3);
-  emps::apply_wall_preset(o, emps::WallModel::standard);
-  o.viscosity = s.viscosity;
-  o.wall.contact.alpha_rep = s.wall.contact.alpha_rep;
-  o.wall.mirror.condition = s.wall.mirror.condition;
-  o.gravity = Vec2(0, -9.81);
-  return o;
-}
-
-/// The lattice of the 2-D block nx x ny, lattice (i, j) at index i + nx j, as block() orders 3-D.
-std::vector<Vec2> block2(int nx, int ny) {
-  std::vector<Vec2> x;
-  for (int j = 0; j < ny; ++j)
-    for (int i = 0; i < nx; ++i) x.emplace_back(l0 * (i + 0.5), l0 * (j + 0.5));
-  return x;
-}
-
-} // namespace
+using namespace fsi::emps::test;
 
 TEST_CASE("emps 3-D slab: between slip side walls a column has pnd = n0 below the surface "
           "layer, the same in every z layer, and settles within 1.5 times the 2-D column's "
@@ -79,9 +42,7 @@ TEST_CASE("emps 3-D slab: between slip side walls a column has pnd = n0 below th
   for (std::size_t i = 0; i < s.size(); ++i) pnd[s.id[i]] = s.pnd[i];
   double bulk = 0.0, spread = 0.0, surface = 0.0;
   for (std::size_t c = 0; c < layer; ++c) { // the lattice column (i, j) through every z layer
-    double lo = pnd[c], hi = pnd[c];
-    for (std::size_t k = 1; k < nz; ++k)
-      lo = std::min(lo, pnd[c + k * layer]), hi = std::max(hi, pnd[c + k * layer]);
+    const auto [lo, hi] = across_z(pnd, c, layer);
     const double y = l0 * (static_cast<double>(c / nx) + 0.5);
     if (y < H - r_e) {
       bulk = std::max({bulk, std::abs(hi / slab.n0() - 1), std::abs(lo / slab.n0() - 1)});

@@ -277,6 +277,15 @@ TEST_CASE("bad input under mpirun: exit 2, the message once", "[mpi]") {
   CHECK(occurrences(slab.output, "dam_break_slab_sph_3d.yaml:26: fluid.periodic_z: not yet "
                                  "supported under mpirun") == 1);
   CHECK(!fs::exists(out / "fields.h5"));
+  // The periodic EMPS slab: the same at its periodic_z line (30).
+  const Outcome emps =
+      fsi(2, "run " + std::string(FSI_SOURCE_DIR) +
+                 "/data/scenes/dam_break_slab_emps_3d_periodic.yaml --out " + out.string());
+  INFO(emps.output);
+  CHECK(emps.status == 2);
+  CHECK(occurrences(emps.output, "dam_break_slab_emps_3d_periodic.yaml:30: fluid.periodic_z: not "
+                                 "yet supported under mpirun") == 1);
+  CHECK(!fs::exists(out / "fields.h5"));
 }
 
 namespace {

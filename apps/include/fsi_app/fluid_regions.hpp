@@ -47,6 +47,16 @@ BoxRegion read_box_region(Section& s, const std::string& what);
 void read_box_area(Section& s, double l0, std::vector<BoxRegion>& regions,
                    std::optional<BoxRegion>& domain, bool other_regions = false);
 
+/// The key periodic_z of a 3-D particle fluid (documented in 2-D too): the fluid and its box tank
+/// wrap along z over the tank's depth.
+bool read_periodic_z(Section& s);
+/// periodic_z's conditions (s.fail): a box `tank` whose depth is a whole number of `l0`, a
+/// `domain` (if given) of the tank's z range.
+void check_periodic_z(Section& s, const std::optional<BoxRegion>& tank,
+                      const std::optional<BoxRegion>& domain, double l0);
+/// The refusal of a periodic fluid under mpirun, naming `key` (the cause of the wrap).
+std::string periodic_refusal(const Section& s, const std::string& key);
+
 /// Whether p lies in the box [lo, hi], its faces included.
 bool inside_box(const Vec3& p, const Vec3& lo, const Vec3& hi);
 

@@ -61,7 +61,9 @@ public:
 
 private:
   /// The particles a frame and the probes read: the fluid's own, or (decomposed) the gathered.
-  FrameParticles<2> frame() const { return gathered_.view(ranks_, fluid_->particles()); }
+  FrameParticles<2> frame() const {
+    return gathered_.view(ranks_, fluid_->particles(), fluid_->owned());
+  }
   /// The probe over frame(); collective when each rank holds its own rows (ranks_.rows()).
   std::optional<double> evaluate(const ProbeSpec& probe) const;
   /// The force on the interfaces' segments (every wall's without one); decomposed: collective,

@@ -91,6 +91,10 @@ emps::FluidOptions3 fluid_options3(const Scene& scene) {
       surfaces.insert(surfaces.end(), (*surface)->points.begin(), (*surface)->points.end());
   std::tie(o.domain_min, o.domain_max) =
       box_domain(f.domain, f.tank, surfaces, f.regions, 4.0 * o.r_e());
+  if (f.periodic_z) { // the period: the tank's depth
+    o.periodic_z = true;
+    o.domain_min.z() = f.tank->min.z(), o.domain_max.z() = f.tank->max.z();
+  }
   return o;
 }
 
@@ -111,7 +115,12 @@ std::unique_ptr<erp::TriangleWallSet> fluid_walls(const Scene& scene,
                                                   std::vector<erp::InterfaceTriangles>& triangles) {
   const FluidSpec3& f = scene.fluid->as<FluidSpec3>();
   erp::TriangleWallSet tank;
-  if (f.tank) erp::add_box_tank(tank, f.tank->min, f.tank->max, false, 0);
+  if (f.tank && f.periodic_z) { // no z faces, 4 r_e longer than the period at each end
+    const Vec3 margin(0.0, 0.0, 4.0 * f.options.r_e());
+    erp::add_box_slab(tank, f.tank->min - margin, f.tank->max + margin, 0);
+  } else if (f.tank) {
+    erp::add_box_tank(tank, f.tank->min, f.tank->max, false, 0);
+  }
   if (f.tank_surface) tank.add_triangles(f.tank_surface->points, f.tank_surface->triangles, 0);
   auto walls = std::make_unique<erp::TriangleWallSet>();
   try {
@@ -194,6 +203,7 @@ void validate3(const Scene& scene, const std::vector<InterfaceMesh3>& interfaces
   if (x.empty())
     fail_at(scene, regions_line(f), f.regions.empty() ? "fluid.region_file" : "fluid.regions",
             "no particle fits");
+  if (f.periodic_z && !scene.structures.empty()) throw InputError(f.periodic_structures);
   if (f.tank_motion) {
     if (!scene.structures.empty())
       fail_at(scene, f.tank_motion_line, "fluid.tank_motion", "not available with structures yet");
@@ -234,6 +244,7 @@ void validate3(const Scene& scene, const std::vector<InterfaceMesh3>& interfaces
 EmpsModel3::EmpsModel3(const Scene& scene, const std::vector<InterfaceMesh3>& interfaces)
     : probes_(scene.output.probes) {
   const FluidSpec3& f = scene.fluid->as<FluidSpec3>();
+  ranks_.refuse(f.periodic);
   validate3(scene, interfaces);
   const std::vector<Vec3> positions = fill_regions3(f);
   initial_count_ = positions.size();

@@ -10,12 +10,14 @@ std::shared_ptr<const SolverSpec> read_fluid(Section& s) {
     FluidSpec3 documented;
     read_tank(s, documented);
     read_region_file(s, documented);
+    read_periodic_z(s);
   } else {
     for (const char* key : {"tank", "tank_file", "tank_motion"})
       if (s.has(key))
         s.fail(key, "is a key of 3-D scenes (dimension: 3); in 2-D the tank is a wall polyline");
     if (s.has("region_file"))
       s.fail("region_file", "is a key of 3-D scenes (dimension: 3); in 2-D regions are polygons");
+    if (s.has("periodic_z")) s.fail("periodic_z", "is a key of 3-D scenes (dimension: 3)");
   }
   auto spec = std::make_shared<FluidSpec>();
   OptionReader reader(s);

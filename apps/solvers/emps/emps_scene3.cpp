@@ -92,6 +92,14 @@ std::shared_ptr<const SolverSpec> read_fluid3(Section& s) {
   read_tank(s, f);
   read_region_file(s, f);
   read_box_area(s, f.options.l0, f.regions, f.domain, f.region_surface.has_value());
+  f.periodic_z = read_periodic_z(s);
+  if (f.periodic_z) {
+    check_periodic_z(s, f.tank, f.domain, f.options.l0);
+    if (f.tank_motion) s.fail("periodic_z", "not available with tank_motion yet");
+    f.periodic = periodic_refusal(s, "periodic_z");
+    f.periodic_structures = s.message("periodic_z", "not available with structures yet (their "
+                                                    "interfaces would not wrap)");
+  }
   return spec;
 }
 

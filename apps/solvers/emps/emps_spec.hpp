@@ -35,6 +35,9 @@ struct FluidSpec3 final : SolverSpec {
   std::string region_path;                       ///< region_file as resolved, for messages
   int region_line = 0;
   std::optional<Box> domain; ///< particles leaving it are removed; absent: walls and regions
+  bool periodic_z = false;   ///< the fluid and the tank wrap along z over the tank's depth
+  std::string periodic;      ///< with periodic_z: `FILE:LINE: fluid.periodic_z: what` (mpirun)
+  std::string periodic_structures; ///< with periodic_z: the same, refusing structures
 };
 
 /// Reads the keys of the fluid block (type excepted) into a FluidSpec (in a 3-D scene, a

@@ -4,9 +4,9 @@ namespace fsi::app::emps_plugin {
 
 namespace {
 
-template <int D> FrameParticles<D> frame_of(const emps::BasicParticles<D>& p) {
+template <int D> FrameParticles<D> frame_of(const emps::BasicParticles<D>& p, std::size_t owned) {
   FrameParticles<D> f;
-  f.n = p.size();
+  f.n = owned;
   for (int a = 0; a < D; ++a) {
     f.x[static_cast<std::size_t>(a)] = p.position[a].data();
     f.v[static_cast<std::size_t>(a)] = p.velocity[a].data();
@@ -33,8 +33,9 @@ void GatheredParticles<D>::gather(DecomposedParticles<D>& ranks, const emps::Bas
 
 template <int D>
 FrameParticles<D> GatheredParticles<D>::view(const DecomposedParticles<D>& ranks,
-                                             const emps::BasicParticles<D>& own) const {
-  if (!ranks.decomposed()) return frame_of(own);
+                                             const emps::BasicParticles<D>& own,
+                                             std::size_t owned) const {
+  if (!ranks.decomposed()) return frame_of(own, owned);
   FrameParticles<D> f;
   f.n = ranks.gathered();
   for (std::size_t a = 0; a < D; ++a)

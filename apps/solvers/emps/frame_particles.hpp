@@ -27,9 +27,10 @@ public:
   /// Collective: the first `owned` particles of `p` on every rank to rank 0, sorted by id.
   void gather(DecomposedParticles<D>& ranks, const emps::BasicParticles<D>& p, std::size_t owned);
   /// The particles a frame and the probes read: decomposed, the last gather's (none on ranks
-  /// other than 0); otherwise every particle of `own`, in its own order.
-  FrameParticles<D> view(const DecomposedParticles<D>& ranks,
-                         const emps::BasicParticles<D>& own) const;
+  /// other than 0); otherwise the first `owned` particles of `own` (not the periodic images
+  /// after them), in their own order.
+  FrameParticles<D> view(const DecomposedParticles<D>& ranks, const emps::BasicParticles<D>& own,
+                         std::size_t owned) const;
 
 private:
   static constexpr std::size_t k = 2 * D + 4; // values a particle: id, x, v, p, pnd, surface

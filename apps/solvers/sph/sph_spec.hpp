@@ -46,9 +46,5 @@ std::shared_ptr<const SolverSpec> read_sph3(Section& s);
 
 /// The `tank` block: documented in either dimension, read in 3-D.
 std::optional<Box3> read_tank(Section& s);
-/// The key `periodic_z` (3-D): the fluid and the tank wrap along z (documented in 2-D too).
-bool read_periodic_z(Section& s);
-/// The refusal of a periodic fluid under mpirun, naming `key` (the cause of the wrap).
-std::string periodic_refusal(const Section& s, const std::string& key);
 
 } // namespace fsi::app::sph_plugin

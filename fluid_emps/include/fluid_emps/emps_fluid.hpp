@@ -30,6 +30,7 @@
 #include "particles/decomposition.hpp"
 #include "particles/kernels.hpp"
 #include "particles/neighbor_list.hpp"
+#include "particles/periodic_images.hpp"
 
 #include <array>
 #include <limits>
@@ -158,13 +159,15 @@ public:
   /// caller never moves them (the fluid neither refits their index nor keeps them at t^n).
   BasicEmpsFluid(const Options& options, const std::vector<Vec>& positions,
                  const erp::TriangleWallSet& walls, bool walls_move = true) requires(D == 3);
-  /// Initial velocities, one per particle in the current order (before the first advance()).
+  /// Initial velocities, one per owned particle in the current order (before the first
+  /// advance()).
   void set_velocities(const std::vector<Vec>& v);
   ~BasicEmpsFluid() = default;
 
   /// Steps from now on decomposed over processes through `decomposition`, which must outlive
   /// the fluid (collective; every process holds the same fluid on entry, see
-  /// parallel::ParticleDecomposition). Without it the fluid is serial (particles::LocalParticles).
+  /// parallel::ParticleDecomposition). Without it the fluid is serial (particles::LocalParticles,
+  /// or with periodic_z particles::PeriodicImages, which refuses decompose(): InputError).
   /// The exchange points of the step are listed in docs/architecture.md "Processes (MPI)".
   /// After read_state (a restart on any process count), the checkpoint is partitioned as its
   /// run was at its last neighbour-list build (scatter_restored). Decomposed, save() keeps the
@@ -228,7 +231,8 @@ public:
   void read_state(const StateArchive& archive, const std::string& prefix);
 
 private:
-  bool decomposed() const { return decomposition_ != &local_; }
+  /// Decomposed over processes (not the periodic images, which are serial).
+  bool decomposed() const { return decomposition_ != &local_ && !periodic_; }
   /// The per-particle part of the checkpoint (owned particles); `listed`: with the list's build
   /// positions, `hits`: with the wall hits (2-D).
   void write_rows(StateArchive& archive, const std::string& prefix, bool listed, bool hits) const;
@@ -236,6 +240,9 @@ private:
   void write_hits(StateArchive& archive, const std::string& prefix, std::size_t n) const
       requires(D == 2);
   void read_hits(const StateArchive& archive, const std::string& prefix) requires(D == 2);
+  /// read_rows with periodic_z: appends the images chosen by the stored build positions
+  /// `build` and their build positions; returns the set's new size (emps_state.cpp).
+  std::size_t restore_images(std::array<std::vector<double>, D>& build);
   /// decompose() after read_state: the partition of a restart (emps_state.cpp).
   void scatter_restored();
   /// Places the particles at `positions` and computes pnd, pressure and the free-surface flags
@@ -279,6 +286,7 @@ private:
                                     r_e_*(1.0 + options_.skin)};
   particles::BasicNeighborList<D> neighbours_;
   particles::LocalParticles<D> local_;
+  std::optional<particles::PeriodicImages<D>> periodic_; ///< with periodic_z
   particles::Decomposition<D>* decomposition_ = &local_; ///< the exchange hook
   EmpsWalls<D> walls_;
   std::vector<double> scratch_; // per-particle work array, D values a particle

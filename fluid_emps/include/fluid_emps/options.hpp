@@ -101,6 +101,9 @@ template <int D> struct BasicFluidOptions {
   VecD<D> gravity = VecD<D>::Zero();
   double damping_time = 0.0; ///< T_d: velocities damped at rate 20/T_d (1 - t/T_d) for t < T_d
   VecD<D> domain_min = VecD<D>::Zero(), domain_max = VecD<D>::Zero(); ///< outside: removed
+  /// (D = 3) The particles wrap along z over the domain's z range, the period (no particle is
+  /// removed along z): particles::PeriodicImages. The caller gives walls that run through it.
+  bool periodic_z = false;
   int reorder_interval = 1;   ///< neighbour-list builds between reorderings of particles by cell
   double skin = 0.15;         ///< neighbour-list margin, fraction of r_e
   bool vector_kernels = true; ///< AVX-512 pair sums and list build where the CPU has them
@@ -126,9 +129,10 @@ using FluidOptions = BasicFluidOptions<2>;
 using FluidOptions3 = BasicFluidOptions<3>;
 
 /// The options a user sets, each once: key, member, range, doc; the member's initial value is the
-/// default (density, l0 and sound_speed have none). Gravity, domain, reordering, the list skin and
-/// the vector kernels are set by the caller. A visitor that changes `wall_model` (a reader) sets
-/// its preset (apply_wall_preset) before it visits the keys the preset covers, which override it.
+/// default (density, l0 and sound_speed have none). Gravity, domain, periodic_z, reordering, the
+/// list skin and the vector kernels are set by the caller. A visitor that changes `wall_model` (a
+/// reader) sets its preset (apply_wall_preset) before it visits the keys the preset covers, which
+/// override it.
 template <int D> void visit_options(BasicFluidOptions<D>& options, OptionVisitor& visitor);
 /// Sets every wall term but alpha_rep, and the artificial viscosity, to the preset `model`'s.
 template <int D> void apply_wall_preset(BasicFluidOptions<D>& options, WallModel model);

@@ -1,7 +1,7 @@
 #pragma once
-// A box of triangles: the six (or, open at the top or bottom, five) faces of [lo, hi], two
-// triangles each, with the fluid inside (a tank, normals into the box) or outside (an obstacle,
-// normals out of it), as TriangleWallSet expects.
+// A box of triangles: the six (or, open at the top or bottom, five; a slab, four) faces of [lo,
+// hi], two triangles each, with the fluid inside (a tank, normals into the box) or outside (an
+// obstacle, normals out of it), as TriangleWallSet expects.
 #include "geometry_erp/triangle_wall_set.hpp"
 
 namespace fsi::erp {
@@ -10,6 +10,12 @@ namespace fsi::erp {
 /// Throws fsi::InputError on an empty box.
 TriangleRange add_box_tank(TriangleWallSet& walls, const Vec3& lo, const Vec3& hi, bool open_top,
                            int group);
+
+/// Adds the four faces of the box [lo, hi] parallel to z (y = lo.y, y = hi.y, x = lo.x,
+/// x = hi.x), normals into it, open at both z faces: the tank of a fluid periodic along z, given
+/// longer than the period so that no particle within r_e of the period sees its open ends.
+/// Throws fsi::InputError on an empty box.
+TriangleRange add_box_slab(TriangleWallSet& walls, const Vec3& lo, const Vec3& hi, int group);
 
 /// Adds a box obstacle, its faces with normals out of the box (its edges and corners convex seen
 /// from the fluid): all six, or with `open_bottom` = a (0, 1, 2) all but the face x_a = lo_a, a

@@ -71,8 +71,9 @@ public:
   virtual void gather(const std::vector<double>& local, std::vector<double>& all) const = 0;
 };
 
-/// One process owns every particle: no ghosts, nothing moves, a reduction is its argument.
-template <int D> class LocalParticles final : public Decomposition<D> {
+/// One process owns every particle: no ghosts, nothing moves, a reduction is its argument
+/// (PeriodicImages adds ghosts to it).
+template <int D> class LocalParticles : public Decomposition<D> {
 public:
   bool migrate(FieldSet&, const VectorField<D>&) override { return false; }
   void build_ghosts(FieldSet&, const VectorField<D>&, double) override {}
