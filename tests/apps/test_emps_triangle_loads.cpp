@@ -143,7 +143,7 @@ TEST_CASE("EMPS 3-D wall forces: the viscous wall terms' forces complete the par
   emps::apply_wall_preset(o, emps::WallModel::standard); // approach viscosity 0.5
   o.viscosity = 1e-3;
   o.wall.contact.alpha_rep = 1e5;
-  emps::EmpsFluid3 fluid(o, block(6, 6, l0), tank.walls);
+  emps::EmpsFluid3 fluid(o, square_column_lattice(6, 6, l0), tank.walls);
   const double m = o.density * o.volume();
   const double M = m * static_cast<double>(fluid.particles().size());
   const int all = static_cast<int>(tank.walls.triangles().node.size());
