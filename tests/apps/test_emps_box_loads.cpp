@@ -67,7 +67,7 @@ TEST_CASE("emps 3-D wall forces: a box obstacle as an interface in still water t
   const double V = o.volume(), dt = 5e-4;
   const std::size_t n = s.x.size();
   emps::WallForces3 forces;
-  for (emps::TriangleForces& f : forces) f.resize(n);
+  for (std::size_t k = 0; k < emps::pressure_slots3; ++k) forces[k].resize(n); // viscous: empty
   // The box's and the tank's wall terms (V times) particle by particle: each acting face's mirror
   // (unless it seeds a piece), contact and share of the images behind several walls on its own
   // triangle's wall, every convex piece on the box (the tank has no convex edge); each against
@@ -93,8 +93,9 @@ TEST_CASE("emps 3-D wall forces: a box obstacle as an interface in still water t
       (s.on_box(t) ? on_box : on_tank) += V * (split[k] + mirror + terms.contact(i, k, dt));
     }
     box_terms += on_box;
-    for (const emps::TriangleForces& slot : forces) // the loads, -f, slot by slot
-      if (slot.triangle[i] >= 0) (s.on_box(slot.triangle[i]) ? on_box : on_tank) += slot.f[i];
+    for (const emps::TriangleForces& slot : forces) // the loads, -f, slot by slot (filled ones)
+      if (i < slot.triangle.size() && slot.triangle[i] >= 0)
+        (s.on_box(slot.triangle[i]) ? on_box : on_tank) += slot.f[i];
     box_worst = std::max(box_worst, on_box.norm());
     tank_worst = std::max(tank_worst, on_tank.norm());
     const std::size_t pieces = convex.pieces[i];
@@ -124,7 +125,7 @@ TEST_CASE("emps 3-D wall forces: a box obstacle as an interface in still water t
   for (const Vec3& f : loads.f) nodal += f;
   std::vector<Vec3> face(s.fe.mesh.faces.size(), Vec3::Zero());
   for (const emps::TriangleForces& slot : forces)
-    for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t i = 0; i < slot.triangle.size(); ++i)
       if (s.on_box(slot.triangle[i]))
         face[static_cast<std::size_t>(s.box.face(slot.triangle[i]))] -= slot.f[i];
   Vec3 faces_sum = Vec3::Zero();

@@ -160,7 +160,8 @@ TEST_CASE("emps 3-D walls: between two boxes each convex piece's share is its ow
   const emps::SpaceWallTerms terms = rest.terms(tank.o, tank.n0);
   const erp::ConvexFaces& convex = rest.convex;
   emps::WallForces3 forces;
-  for (emps::TriangleForces& f : forces) f.resize(x.size());
+  for (std::size_t k = 0; k < emps::pressure_slots3; ++k)
+    forces[k].resize(x.size()); // viscous: empty
   int between = 0, into_own_box = 0;
   double worst = 0.0;
   for (std::size_t i = 0; i < x.size(); ++i) {
