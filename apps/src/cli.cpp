@@ -33,8 +33,9 @@ check   validates SCENE only
 --overwrite deletes the files of an earlier run in DIR first (fields.h5, fields.xmf, probes.csv,
         run.json, coupling.csv, interface.h5, checkpoint_*.h5, failed_state.h5); without it
         such a folder is refused. One run at a time per DIR (DIR/.lock).
---threads at most the processors this process may use (output: bitwise the same for 1 and 2
-        threads, docs/reliability.md)
+--threads the most threads, at most the processors this process may use; each step runs on the
+        count its measured time favours (fewer when a core is shared; output: bitwise the same
+        for any count, docs/reliability.md)
 SIGINT/SIGTERM: the run finishes its step, writes a checkpoint and exits with 130/143
 exit status: 0 success, 2 bad input, 3 the run stopped (see its message and run.json), 1 internal,
              130/143 interrupted by SIGINT/SIGTERM (a checkpoint was written)

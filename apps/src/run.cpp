@@ -10,6 +10,7 @@
 #include "fsi_app/output/text_file.hpp"
 #include "fsi_app/progress.hpp"
 #include "fsi_app/run_state.hpp"
+#include "fsi_app/thread_governor.hpp"
 #include "fsi_app/version.hpp"
 
 #include <algorithm>
@@ -203,6 +204,12 @@ RunResult run_scene(const Scene& scene, std::vector<std::unique_ptr<Model>>& mod
   };
   auto last_checkpoint = std::chrono::steady_clock::now();
   double frame_seconds = 0.0; // this rank's wall time writing frames (Recorder)
+  // Each step's thread count, from the steps' wall times; the asked count again after the run.
+  ThreadGovernor governor(num_threads());
+  struct RestoreThreads {
+    int threads;
+    ~RestoreThreads() { set_num_threads(threads); }
+  } restore_threads{governor.most()};
   auto run_json = [&](const std::string& run_status, const std::string& run_message,
                       bool with_models) {
     JsonObject run;
@@ -215,7 +222,8 @@ RunResult run_scene(const Scene& scene, std::vector<std::unique_ptr<Model>>& mod
         .add("end", iso_time(std::chrono::system_clock::now()))
         .add("wall_seconds",
              std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count())
-        .add("threads", num_threads());
+        .add("threads", governor.most())
+        .add("thread_governor", governor.report());
     if (ranks.decomposed()) run.add("processes", ranks.size());
     run.add("status", run_status)
         .add("message", run_message)
@@ -252,7 +260,7 @@ RunResult run_scene(const Scene& scene, std::vector<std::unique_ptr<Model>>& mod
   auto checkpoint = [&] {
     for (const auto& m : models) m->flush_logs();
     result.checkpoint = checkpoint_path(options.out, c.step);
-    const StateArchive archive = make_archive(scene, models, c, false);
+    const StateArchive archive = make_archive(scene, models, c, false, governor.most());
     last_checkpoint = std::chrono::steady_clock::now();
     checkpoint_step = c.step;
     if (!root) return;
@@ -295,6 +303,8 @@ RunResult run_scene(const Scene& scene, std::vector<std::unique_ptr<Model>>& mod
     }
     Progress progress(end, options.terminal, log, c.step, c.time);
     while (scene.time.dt ? c.step < fixed_total : c.time < end * (1.0 - 1e-12)) {
+      set_num_threads(governor.threads());
+      const double step_start = wall_time();
       double dt = 0.0;
       try {
         dt = next_dt();
@@ -314,6 +324,7 @@ RunResult run_scene(const Scene& scene, std::vector<std::unique_ptr<Model>>& mod
         if (particles[k])
           check_particle_loss(*particles[k], *models[k]->particle_count(), c.step + 1, c.time,
                               attempted);
+      governor.record(wall_time() - step_start);
       ++c.step;
       c.time = scene.time.dt ? static_cast<double>(c.step) * *scene.time.dt : c.time + dt;
       // The last step ends at time.end exactly.
@@ -381,7 +392,7 @@ RunResult run_scene(const Scene& scene, std::vector<std::unique_ptr<Model>>& mod
         failed.time = attempted;
         // Decomposed: gathered (collective; every rank is here, the failure agreed) in the
         // one-process format, as a checkpoint is, and written by rank 0.
-        const StateArchive archive = make_archive(scene, models, failed, true);
+        const StateArchive archive = make_archive(scene, models, failed, true, governor.most());
         if (root) write_checkpoint(options.out / "failed_state.h5", archive);
         kept += (options.out / "failed_state.h5").string();
       } catch (const std::exception& f) {

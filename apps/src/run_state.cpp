@@ -83,7 +83,7 @@ std::string step_mismatch(double written, double scene) {
 } // namespace
 
 StateArchive make_archive(const Scene& scene, const std::vector<std::unique_ptr<Model>>& models,
-                          const RunClock& c, bool failed) {
+                          const RunClock& c, bool failed, int threads) {
   StateArchive a;
   a.put_integer("driver/step", c.step);
   a.put_real("driver/time", c.time);
@@ -92,7 +92,7 @@ StateArchive make_archive(const Scene& scene, const std::vector<std::unique_ptr<
   a.put_real("driver/dt_min", c.dt_min);
   a.put_real("driver/dt_max", c.dt_max);
   a.put_real("driver/dt", scene.time.dt.value_or(0.0));
-  a.put_integer("driver/threads", num_threads());
+  a.put_integer("driver/threads", threads);
   a.put_integer("driver/failed", failed);
   a.put("driver/overrides", encode_strings(scene.overrides));
   a.put_integer("driver/scene_digest", static_cast<std::int64_t>(scene.digest));

@@ -21,10 +21,11 @@ struct RunClock {
   double dt_min = std::numeric_limits<double>::infinity(), dt_max = 0.0;
 };
 
-/// The driver's clock, the run's settings (dt, threads, overrides, scene digest) and every
-/// model's state; `failed`: the state of a failed step (kept for inspection, refused on restart).
+/// The driver's clock, the run's settings (dt, the asked `threads`, overrides, scene digest) and
+/// every model's state; `failed`: the state of a failed step (kept for inspection, refused on
+/// restart).
 StateArchive make_archive(const Scene& scene, const std::vector<std::unique_ptr<Model>>& models,
-                          const RunClock& clock, bool failed);
+                          const RunClock& clock, bool failed, int threads);
 
 /// Reads the driver's state and the models' from a restart checkpoint. Throws InputError
 /// (`FILE: what`) for a failed step's state, another time step, other overrides (time.end
