@@ -27,7 +27,9 @@ template <int D> JsonObject DecomposedParticles<D>::balance(std::size_t owned) c
   b.add("owned_min", static_cast<long long>(hook_->min(n)))
       .add("owned_max", static_cast<long long>(hook_->max(n)))
       .add("waited_seconds_min", hook_->min(waited))
-      .add("waited_seconds_max", hook_->max(waited));
+      .add("waited_seconds_max", hook_->max(waited))
+      .add("partitions", static_cast<long long>(hook_->partitions()))
+      .add("load_imbalance", hook_->load_imbalance());
   return b;
 }
 

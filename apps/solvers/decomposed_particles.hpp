@@ -40,7 +40,8 @@ public:
   /// Bytes every rank has sent for ghosts so far (halo builds and updates), summed (collective).
   double halo_bytes() const { return hook_ ? hook_->sum(hook_->halo_bytes()) : 0.0; }
   /// Collective, decomposed: the spread over the ranks of their owned particles and of the wall
-  /// seconds each waited in collectives (the waiting of the slowest rank's peers: the imbalance).
+  /// seconds each waited in collectives (the waiting of the slowest rank's peers: the imbalance),
+  /// the partitions made and the loads' imbalance the last migration judged.
   JsonObject balance(std::size_t owned) const;
   /// Every rank's `values` summed entry by entry, the same bits on every rank (Ranks::sum).
   void sum(std::vector<double>& values) const {

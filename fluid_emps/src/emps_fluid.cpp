@@ -6,6 +6,7 @@
 #include "fsi/core/parallel.hpp"
 #include "particles/kernels.hpp"
 #include "step_timer.hpp"
+#include "wall_work.hpp"
 
 #include <algorithm>
 #include <array>
@@ -146,7 +147,7 @@ void BasicEmpsFluid<D>::refresh_neighbours(const particles::FieldList& changed, 
   const bool valid = neighbours_.valid(p.position.coords(), p.size(), 0.5 * options_.skin * r_e_);
   if (decomposition_->all(valid)) return;
   // Ghosts off, the owned particles to their regions' processes (nothing serial).
-  if (decomposition_->migrate(p.fields, p.position)) ++layout_;
+  if (decomposition_->migrate(p.fields, p.position, &p.work)) ++layout_;
   const std::size_t owned = p.size();
   grid_.bin(p.position.coords(), owned);
   if (allow_reorder && builds_ % std::max(1, options_.reorder_interval) == 0) {
@@ -190,6 +191,7 @@ template <int D> void BasicEmpsFluid<D>::query_walls([[maybe_unused]] bool step_
     }
     if (walls_.convex_corners) locator.convex_faces(x, y, z, hits, walls_.convex);
   }
+  wall_work<D>(walls_, owned(), particles_.work); // the load of the next migration
 }
 
 template <int D> void BasicEmpsFluid<D>::check_crossed(long step, double t) const {

@@ -232,7 +232,7 @@ template <int D> void BasicEmpsFluid<D>::scatter_restored() {
   for (std::size_t i = 0; i < n; ++i) row[p.id[i]] = i;
   for (int axis = 0; axis < D; ++axis)
     p.position[axis] = all.reals("neighbours/" + build_key(axis));
-  if (decomposition_->migrate(p.fields, p.position)) ++layout_;
+  if (decomposition_->migrate(p.fields, p.position, &p.work)) ++layout_;
   decomposition_->build_ghosts(p.fields, p.position, r_e_ * (1.0 + options_.skin));
   std::vector<std::size_t> pick(p.size());
   for (std::size_t j = 0; j < pick.size(); ++j) pick[j] = row[p.id[j]];

@@ -28,7 +28,7 @@ template <int D> void BasicSphFluid<D>::restore(const State& s) {
   t_ = s.t, Dt_ = s.Dt, elapsed_ = s.elapsed, dt_acoustic_ = s.dt_acoustic;
   step_ = s.step, builds_ = s.builds, sub_ = s.sub, subs_ = s.subs, removed_ = s.removed;
   if (decomposition_) { // as decompose(): partitioned at the advection step's build positions
-    hook().migrate(fluid_.fields, fluid_.xb);
+    hook().migrate(fluid_.fields, fluid_.xb, nullptr);
     build_ghosts(fluid_.xb);
   }
   build_pairs(false); // the restored advection step's pairs, from its build positions (checked)

@@ -70,7 +70,7 @@ template <int D> void BasicSphFluid<D>::per_advection_step() {
     if (out) keep_[i] = 0, any_out = true;
   }
   if (any_out) removed_ += f.fields.compact(keep_);
-  hook().migrate(f.fields, f.x); // decomposed: to the ranks whose regions hold them now
+  hook().migrate(f.fields, f.x, nullptr); // decomposed: to the ranks whose regions hold them now
   // Sort by cell (particles of a cell contiguous, neighbours close in memory).
   grid_.bin(f.x.coords(), f.size());
   f.fields.permute(grid_.order(), scratch_);
@@ -146,8 +146,10 @@ template <int D> void BasicSphFluid<D>::decompose(particles::Decomposition<D>& d
       std::fill(walls_.fv[c].begin() + static_cast<std::ptrdiff_t>(tracked_), walls_.fv[c].end(),
                 0.0);
   // The advection step under way: partitioned at its build positions, its pairs rebuilt there
-  // (B, V, rho and the prior acceleration are the particles' own, moved with them).
-  hook().migrate(fluid_.fields, fluid_.xb);
+  // (B, V, rho and the prior acceleration are the particles' own, moved with them). Unit loads
+  // (no work): the walls are particles, so a particle by a wall has wall neighbours where a bulk
+  // one has fluid ones (not counted: docs/performance.md "Cost weights").
+  hook().migrate(fluid_.fields, fluid_.xb, nullptr);
   build_ghosts(fluid_.xb);
   build_pairs(false);
 }

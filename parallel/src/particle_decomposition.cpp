@@ -10,7 +10,8 @@ ParticleDecomposition<D>::ParticleDecomposition(const Communicator& comm, double
 
 template <int D>
 bool ParticleDecomposition<D>::migrate(particles::FieldSet& fields,
-                                       const particles::VectorField<D>& x) {
+                                       const particles::VectorField<D>& x,
+                                       const std::vector<double>* work) {
   drop_ghosts(fields);
   const bool first = rcb_.partitions() == 0;
   if (first) { // every rank holds the whole set: keep every P-th entry
@@ -19,8 +20,18 @@ bool ParticleDecomposition<D>::migrate(particles::FieldSet& fields,
       keep_[i] = static_cast<int>(i % static_cast<std::size_t>(comm_.size())) == comm_.rank();
     fields.compact(keep_);
   }
-  if (first || imbalance(comm_, fields.size()) > rebalance_)
-    rcb_.partition(x.coords(), fields.size(), dest_);
+  const std::size_t n = fields.size();
+  double load = static_cast<double>(n);
+  if (work) { // the set's array, compacted above with the others
+    load_.resize(n);
+    for (std::size_t i = 0; i < n; ++i) load_[i] = static_cast<float>(1.0 + (*work)[i]);
+    load = 0.0;
+    for (const float l : load_) load += l;
+  }
+  imbalance_ = imbalance(comm_, load);
+  if (first || imbalance_ > rebalance_)
+    rcb_.partition(x.coords(), n, work ? std::span<const float>(load_) : std::span<const float>(),
+                   dest_);
   else
     rcb_.owners(x.coords(), fields.size(), dest_);
   const std::size_t before = fields.size();

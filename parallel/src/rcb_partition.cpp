@@ -12,10 +12,12 @@ namespace fsi::parallel {
 
 namespace {
 
-// What Zoltan's query functions see: the local particles, numbered from `offset` globally.
+// What Zoltan's query functions see: the local particles, numbered from `offset` globally, and
+// their weights (empty: 1 each).
 template <int D> struct Points {
   particles::Coords<D> x;
   std::size_t n = 0;
+  std::span<const float> weight;
   ZOLTAN_ID_TYPE offset = 0;
 };
 
@@ -25,11 +27,13 @@ template <int D> int count(void* data, int* ierr) {
 }
 
 template <int D>
-void list(void* data, int, int, ZOLTAN_ID_PTR gids, ZOLTAN_ID_PTR lids, int, float*, int* ierr) {
+void list(void* data, int, int, ZOLTAN_ID_PTR gids, ZOLTAN_ID_PTR lids, int, float* weights,
+          int* ierr) {
   const auto& p = *static_cast<Points<D>*>(data);
   for (std::size_t i = 0; i < p.n; ++i) {
     lids[i] = static_cast<ZOLTAN_ID_TYPE>(i);
     gids[i] = p.offset + static_cast<ZOLTAN_ID_TYPE>(i);
+    weights[i] = p.weight.empty() ? 1.0f : p.weight[i]; // OBJ_WEIGHT_DIM 1: one a particle
   }
   *ierr = ZOLTAN_OK;
 }
@@ -76,7 +80,7 @@ RcbPartition<D>::RcbPartition(const Communicator& comm, double tolerance) : comm
       {"LB_METHOD", "RCB"},
       {"NUM_GID_ENTRIES", "1"},
       {"NUM_LID_ENTRIES", "1"},
-      {"OBJ_WEIGHT_DIM", "0"}, // unit weight per particle
+      {"OBJ_WEIGHT_DIM", "1"}, // a weight per particle, its load
       {"RETURN_LISTS", "EXPORT"},
       {"KEEP_CUTS", "1"}, // for owners() and the boxes
       {"RCB_REUSE", "1"}, // a repartition starts from the previous cuts
@@ -94,8 +98,8 @@ template <int D> RcbPartition<D>::~RcbPartition() {
 
 template <int D>
 void RcbPartition<D>::partition(const particles::Coords<D>& x, std::size_t n,
-                                std::vector<int>& dest) {
-  Points<D> points{x, n, 0};
+                                std::span<const float> weight, std::vector<int>& dest) {
+  Points<D> points{x, n, weight, 0};
   auto local = static_cast<unsigned long>(n), offset = 0ul;
   MPI_Exscan(&local, &offset, 1, MPI_UNSIGNED_LONG, MPI_SUM, comm_.comm());
   points.offset = comm_.rank() == 0 ? 0 : static_cast<ZOLTAN_ID_TYPE>(offset);
@@ -149,11 +153,10 @@ void RcbPartition<D>::owners(const particles::Coords<D>& x, std::size_t n,
   }
 }
 
-double imbalance(const Communicator& comm, std::size_t n) {
-  const auto local = static_cast<std::int64_t>(n);
-  const std::int64_t total = comm.sum(local), largest = comm.max(local);
-  if (total == 0) return 1.0;
-  return static_cast<double>(largest) * comm.size() / static_cast<double>(total);
+double imbalance(const Communicator& comm, double load) {
+  const double total = comm.sum(load), largest = comm.max(load);
+  if (total == 0.0) return 1.0;
+  return largest * comm.size() / total;
 }
 
 template class RcbPartition<2>;

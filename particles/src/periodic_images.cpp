@@ -8,7 +8,9 @@ template <int D>
 PeriodicImages<D>::PeriodicImages(int axis, double lo, double period, const VectorField<D>& x)
     : axis_(axis), lo_(lo), period_(period), along_(&x[axis]) {}
 
-template <int D> bool PeriodicImages<D>::migrate(FieldSet& fields, const VectorField<D>& x) {
+template <int D>
+bool PeriodicImages<D>::migrate(FieldSet& fields, const VectorField<D>& x,
+                                const std::vector<double>*) {
   drop_ghosts(fields);
   std::vector<double>& z = x[axis_];
   const double hi = lo_ + period_;

@@ -155,9 +155,18 @@ template <class Scene> Difference run_decomposed(const Communicator& comm) {
   ParticleDecomposition<D> decomposition(comm);
   fluid.decompose(decomposition);
   const long scattered = decomposition.emigrants(); // the first partition's
+  // The first partition balanced the loads the fluid gave, 1 + the work of each particle's wall
+  // faces (wall_work.hpp), to RCB's tolerance, not the counts.
+  double load = 0.0, work = 0.0;
+  for (std::size_t i = 0; i < fluid.owned(); ++i)
+    load += 1.0 + fluid.particles().work[i], work += fluid.particles().work[i];
+  const double loads = imbalance(comm, load);
+  const double counts = imbalance(comm, static_cast<double>(fluid.owned()));
+  CHECK(comm.sum(work) > 0.0);
+  CHECK(loads <= 1.01);
   std::int64_t ghosts = 0;
   // A step without a halo rebuild sends each ghost only what the step reads of it: x and v at
-  // the start, x at x*, p after the pressure (3 D + 1 doubles); every array (85 bytes in 2-D, 69
+  // the start, x at x*, p after the pressure (3 D + 1 doubles); every array (93 bytes in 2-D, 77
   // in 3-D) at each of the first two before issue 47's halo lists.
   constexpr double per_ghost = 8.0 * (3 * D + 1);
   int steady = 0;            // steps without a rebuild
@@ -199,11 +208,12 @@ template <class Scene> Difference run_decomposed(const Communicator& comm) {
   const std::int64_t emigrants =
       comm.sum(static_cast<std::int64_t>(decomposition.emigrants() - scattered));
   if (comm.rank() == 0)
-    std::printf("emps %dd np=%d: %u particles, %d steps, %ld migrations, %ld halo builds, %lld "
+    std::printf("emps %dd np=%d: first partition's imbalance of loads %.4f, of counts %.4f; %u "
+                "particles, %d steps, %ld migrations, %ld halo builds, %lld "
                 "emigrants, %.0f ghosts a step (%.1f %% of the particles), %d steps without a "
                 "rebuild: %.0f bytes, %.1f a ghost; max |dx| %.2e m, |dv| %.2e m/s, |dp| %.2e Pa "
                 "(p max %.0f Pa)\n",
-                D, comm.size(), n, Scene::steps, decomposition.migrations(),
+                D, comm.size(), loads, counts, n, Scene::steps, decomposition.migrations(),
                 decomposition.halo_builds(), static_cast<long long>(emigrants),
                 static_cast<double>(ghosts) / Scene::steps,
                 100.0 * static_cast<double>(ghosts) / Scene::steps / n, steady, steady_bytes,

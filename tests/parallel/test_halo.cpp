@@ -48,7 +48,7 @@ TEMPLATE_TEST_CASE("Halo particles are exactly the other ranks' particles near t
   Migration migration;
   Halo<D> halo;
   std::vector<int> dest;
-  rcb.partition(c.x.coords(), c.size(), dest);
+  rcb.partition(c.x.coords(), c.size(), {}, dest);
   migration.migrate(comm, c.fields, dest);
   const std::size_t owned = c.size();
   const auto owner = owners_of(comm, c.id, owned, halo_cloud_size);

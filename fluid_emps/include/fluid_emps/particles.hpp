@@ -25,6 +25,9 @@ template <int D> struct BasicParticles {
   std::vector<double>& pnd = fields.add_real("pnd"); ///< n* incl. the wall term (eq. 20)
   std::vector<std::uint8_t>& surface = fields.add_flag("surface"); ///< free surface (eq. 17)
   std::vector<std::uint32_t>& id = fields.add_index("id"); ///< stable identity, for messages
+  /// Work beyond a bulk particle's, in bulk-particle units: its walls' (wall_work.hpp), the load
+  /// the partition over processes balances (particles::Decomposition::migrate). Scratch.
+  std::vector<double>& work = fields.add_real("work", false);
 
   std::size_t size() const { return fields.size(); }
   void resize(std::size_t n) { fields.resize(n); }

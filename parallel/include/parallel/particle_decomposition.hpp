@@ -7,7 +7,11 @@
 // (each built the solver from the whole scene): rank r keeps entries r, r + P, r + 2P, ... and
 // the first RCB partition sends them to their regions. Later migrate() calls send particles to
 // the owner of their position under the current cuts, or repartition (from the previous cuts)
-// first when the imbalance max n / mean n exceeds `rebalance`.
+// first when the imbalance max L / mean L exceeds `rebalance`.
+//
+// Load: a rank's L is the sum of its particles' loads 1 + work (particles::Decomposition::
+// migrate; the solver says what a particle costs beyond a bulk one, e.g. the EMPS fluid its wall
+// terms), the RCB weights; without `work`, L is the particle count.
 //
 // Halo reach: build_ghosts(reach) sends every particle within reach + d_out of another rank's
 // box, d_out the largest distance (over all ranks) of an owned particle outside its own box
@@ -29,10 +33,11 @@ namespace fsi::parallel {
 
 template <int D> class ParticleDecomposition final : public particles::Decomposition<D> {
 public:
-  /// `rebalance` > 1: the imbalance at which a migration repartitions first.
+  /// `rebalance` > 1: the imbalance of the loads at which a migration repartitions first.
   explicit ParticleDecomposition(const Communicator& comm, double rebalance = 1.2);
 
-  bool migrate(particles::FieldSet& fields, const particles::VectorField<D>& x) override;
+  bool migrate(particles::FieldSet& fields, const particles::VectorField<D>& x,
+               const std::vector<double>* work) override;
   void build_ghosts(particles::FieldSet& fields, const particles::VectorField<D>& x,
                     double reach) override;
   void update_ghosts(particles::FieldSet& fields, const particles::FieldList& changed) override;
@@ -40,6 +45,8 @@ public:
   std::size_t ghosts() const override { return active_ ? halo_.ghosts() : 0; }
   double halo_bytes() const override { return halo_.bytes_sent(); }
   double waited_seconds() const override { return collective_seconds(); }
+  int partitions() const override { return rcb_.partitions(); }
+  double load_imbalance() const override { return imbalance_; }
 
   double sum(double v) const override { return agreed(comm_.sum(v, failing())); }
   void sum(std::vector<double>& values) const override {
@@ -55,8 +62,6 @@ public:
     comm_.gather(local, all);
   }
 
-  /// RCB partitions made (the first and the repartitions).
-  int partitions() const { return rcb_.partitions(); }
   /// Migrations and halo builds so far, and the particles that left this rank by migration.
   long migrations() const { return migrations_; }
   long halo_builds() const { return halo_builds_; }
@@ -76,7 +81,9 @@ private:
   Migration migration_;
   Halo<D> halo_;
   std::vector<int> dest_;
+  std::vector<float> load_; // each owned particle's, 1 + work (the RCB weights)
   std::vector<std::uint8_t> keep_;
+  double imbalance_ = 1.0; // the last migration's, before it moved anything
   bool active_ = false; // ghosts appended (the same on every rank: builds and drops are collective)
   long migrations_ = 0, halo_builds_ = 0, emigrants_ = 0;
 };

@@ -28,9 +28,13 @@ public:
   virtual ~Decomposition() = default;
 
   /// Removes the ghosts and moves every owned particle to the process whose region holds it
-  /// now (repartitioning when the load has drifted); `x` is the set's position field. Returns
-  /// whether the owned particles' order changed.
-  virtual bool migrate(FieldSet& fields, const VectorField<D>& x) = 0;
+  /// now (repartitioning when the load has drifted); `x` is the set's position field. `work`, an
+  /// array of the set or null (none): each particle's work beyond a bulk particle's, in units of
+  /// a bulk particle's (>= 0), so that a particle's load is 1 + work: the partition balances the
+  /// processes' sums of the loads, and the drift is judged on them. Returns whether the owned
+  /// particles' order changed.
+  virtual bool migrate(FieldSet& fields, const VectorField<D>& x,
+                       const std::vector<double>* work) = 0;
   /// Appends, after the owned particles, copies of every other process's particles that may
   /// come within `reach` of an owned particle (the set holds no ghosts on entry).
   virtual void build_ghosts(FieldSet& fields, const VectorField<D>& x, double reach) = 0;
@@ -46,6 +50,11 @@ public:
   virtual double halo_bytes() const = 0;
   /// Wall seconds this process has waited in collectives (exchanges and reductions) so far.
   virtual double waited_seconds() const = 0;
+  /// Partitions made so far (the first and the repartitions; 0 on one process).
+  virtual int partitions() const = 0;
+  /// The load imbalance max / mean over the processes of their loads' sums (see migrate) as the
+  /// last migration found it, before it moved anything (1 on one process).
+  virtual double load_imbalance() const = 0;
 
   /// Global reductions over every process (the same value on each).
   virtual double sum(double v) const = 0;
@@ -75,13 +84,17 @@ public:
 /// (PeriodicImages adds ghosts to it).
 template <int D> class LocalParticles : public Decomposition<D> {
 public:
-  bool migrate(FieldSet&, const VectorField<D>&) override { return false; }
+  bool migrate(FieldSet&, const VectorField<D>&, const std::vector<double>*) override {
+    return false;
+  }
   void build_ghosts(FieldSet&, const VectorField<D>&, double) override {}
   void update_ghosts(FieldSet&, const FieldList&) override {}
   void drop_ghosts(FieldSet&) override {}
   std::size_t ghosts() const override { return 0; }
   double halo_bytes() const override { return 0.0; }
   double waited_seconds() const override { return 0.0; }
+  int partitions() const override { return 0; }
+  double load_imbalance() const override { return 1.0; }
   double sum(double v) const override { return v; }
   void sum(std::vector<double>&) const override {}
   double max(double v) const override { return v; }

@@ -19,8 +19,9 @@ public:
   PeriodicImages(int axis, double lo, double period, const VectorField<D>& x);
 
   /// Removes the images and wraps every owned position into [lo, lo + L) (a particle has moved
-  /// less than L since the last build); the order does not change (returns false).
-  bool migrate(FieldSet& fields, const VectorField<D>& x) override;
+  /// less than L since the last build); the order does not change (returns false). One
+  /// process: `work` balances nothing.
+  bool migrate(FieldSet& fields, const VectorField<D>& x, const std::vector<double>*) override;
   /// The images of the owned particles whose coordinate along the axis lies within `reach` of a
   /// face: x + L e_axis of those near lo, x - L e_axis of those near lo + L.
   void build_ghosts(FieldSet& fields, const VectorField<D>& x, double reach) override {
