@@ -1,6 +1,7 @@
 #include "fsi_app/thread_governor.hpp"
 
 #include <algorithm>
+#include <array>
 #include <stdexcept>
 #include <string>
 
@@ -8,9 +9,12 @@ namespace fsi::app {
 
 namespace {
 
-double median(std::vector<double> v) {
-  const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
-  std::nth_element(v.begin(), mid, v.end());
+/// The median of at most kWindow step times (a copy on the stack: no allocation per step).
+double median(const std::vector<double>& steps) {
+  std::array<double, ThreadGovernor::kWindow> v{};
+  const auto end = std::copy(steps.begin(), steps.end(), v.begin());
+  const auto mid = v.begin() + (end - v.begin()) / 2;
+  std::nth_element(v.begin(), mid, end);
   return *mid;
 }
 
