@@ -191,7 +191,7 @@ template <int D> void BasicEmpsFluid<D>::query_walls([[maybe_unused]] bool step_
     }
     if (walls_.convex_corners) locator.convex_faces(x, y, z, hits, walls_.convex);
   }
-  wall_work<D>(walls_, owned(), particles_.work); // the load of the next migration
+  if (decomposed()) wall_work<D>(walls_, owned(), particles_.work); // the next migration's load
 }
 
 template <int D> void BasicEmpsFluid<D>::check_crossed(long step, double t) const {
@@ -338,8 +338,9 @@ template <int D> void BasicEmpsFluid<D>::decompose(particles::Decomposition<D>& 
     if (neighbours_.built() == particles_.size()) return scatter_restored();
   }
   neighbours_.invalidate();
-  refresh_neighbours({}, true, step_, 0.0); // the first migration and halo
-  query_walls();                            // the ghosts' hits
+  wall_work<D>(walls_, owned(), particles_.work); // the first partition's load: the start's hits
+  refresh_neighbours({}, true, step_, 0.0);       // the first migration and halo
+  query_walls();                                  // the ghosts' hits
 }
 
 template <int D> void BasicEmpsFluid<D>::set_velocities(const std::vector<Vec>& v) {
