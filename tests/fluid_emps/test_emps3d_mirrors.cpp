@@ -155,3 +155,29 @@ TEST_CASE("emps 3-D walls: at rest under a hydrostatic pressure the floor's rows
   CHECK(lo[1][0] > 10 * std::abs(lo[2][0]));
   CHECK(std::abs(lo[2][0]) < 1e-3);
 }
+
+TEST_CASE("emps 3-D walls: eq. 10 is blind to a pressure alternating layer by layer in the bulk, "
+          "not at the floor (the hydrostatic tank's layered mode, docs/fluid_emps.md)",
+          "[emps][walls3d]") {
+  // p = rho g L (-1)^k on layer k (z = (k + 1/2) l0) of the lattice filling the closed box: the
+  // neighbours at +-m l0 above and below carry the same pressure, so eq. 10's sum cancels in
+  // pairs wherever the support is whole; the floor's mirror (eq. 26: the image of layer k
+  // carries layer k's pressure) breaks that symmetry.
+  const double rho_g = 1000.0 * 9.81, l0 = 0.01, L = 0.1;
+  const auto layer = [&](const Vec3& y) { return static_cast<int>(y[2] / l0); };
+  std::vector<Vec3> x;
+  double r_e = 0;
+  const std::vector<Vec3> grad = lattice_gradient(
+      10, [&](const Vec3& y) { return rho_g * L * (layer(y) % 2 == 0 ? 1.0 : -1.0); }, true, x,
+      r_e);
+  double bulk = 0, bottom = 0;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    if (emps::test::walls_near(x[i], L, r_e) == 0) bulk = std::max(bulk, grad[i].norm());
+    if (layer(x[i]) == 0) bottom += grad[i][2] / (rho_g * L);
+  }
+  bottom /= 100.0; // the bottom layer's 10 x 10
+  INFO("bulk |<grad p>| over rho g " << bulk / rho_g << "; bottom layer's mean <grad p>_z over "
+                                     << "rho g L / l0: " << bottom * l0);
+  CHECK(bulk / rho_g < 1e-10); // the mode costs no force where the support is whole
+  CHECK(bottom * l0 < -0.1);   // the floor feels it: the high bottom layer pushed up, ~ P/l0
+}
