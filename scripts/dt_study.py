@@ -99,6 +99,9 @@ def front_error(study, case_dir, ref_dir):
             continue
         rel.append(abs(v - r) / r)
         worst = max(worst, (abs(v - r) / r, abs(v - r)))
+    if not rel:
+        raise SystemExit(f"dt_study: {case_dir}: no frame at the reference's times (a fixed "
+                         "time.dt must divide output.interval)")
     figure = f"largest front gap {1e3 * worst[1]:.2f} mm ({100 * worst[0]:.2f} %)"
     if "a" in study:
         m = dam_break_front.measure(case_dir, study["probe"], a=study["a"])
