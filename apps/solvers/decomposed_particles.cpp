@@ -7,10 +7,20 @@
 namespace fsi::app {
 
 template <int D>
-particles::Decomposition<D>& DecomposedParticles<D>::decompose(const Ranks& ranks,
-                                                               std::size_t particles) {
+std::vector<VecD<D>> DecomposedParticles<D>::setup(const Ranks& ranks, std::vector<VecD<D>> filled,
+                                                   particles::SetupBlock& block) {
+  particles_ = filled.size();
+  if (!ranks.decomposed()) return filled;
+  const particles::BlockRange b = particles::block_of(filled.size(), ranks.rank(), ranks.size());
+  block = {b.first, true};
+  const auto first = filled.begin() + static_cast<std::ptrdiff_t>(b.first);
+  return std::vector<VecD<D>>(first, first + static_cast<std::ptrdiff_t>(b.size()));
+}
+
+template <int D>
+particles::Decomposition<D>& DecomposedParticles<D>::decompose(const Ranks& ranks) {
   if (!refusal_.empty()) throw InputError(refusal_);
-  hook_ = ranks.particle_decomposition<D>(particles);
+  hook_ = ranks.particle_decomposition<D>(particles_);
   ranks_ = &ranks;
   own_rows_ = writes_collectively(ranks);
   return *hook_;

@@ -10,6 +10,7 @@
 #include "fsi_app/output/json.hpp"
 #include "fsi_app/ranks.hpp"
 #include "fsi_app/scene.hpp"
+#include "particles/setup_block.hpp"
 
 #include <cstddef>
 #include <memory>
@@ -22,10 +23,16 @@ namespace fsi::app {
 
 template <int D> class DecomposedParticles {
 public:
-  /// A new hook over `ranks` for a fluid of `particles` particles (every rank built the whole
-  /// fluid); the caller hands it to the fluid. InputError if some rank would get none, or the
-  /// message of refuse().
-  particles::Decomposition<D>& decompose(const Ranks& ranks, std::size_t particles);
+  /// The positions of the fill `filled` this process builds its fluid with, and `block` saying
+  /// which: all on one process; under mpirun (ranks.decomposed()) this rank's block, at most
+  /// ceil(n / P) of them (particles/setup_block.hpp), the fluid's start deferred to decompose().
+  std::vector<VecD<D>> setup(const Ranks& ranks, std::vector<VecD<D>> filled,
+                             particles::SetupBlock& block);
+  /// The model read a checkpoint of `particles` particles, whole on every rank.
+  void restored(std::size_t particles) { particles_ = particles; }
+  /// A new hook over `ranks` for the fluid of the last setup() or restored(); the caller hands
+  /// it to the fluid. InputError if some rank would get none, or the message of refuse().
+  particles::Decomposition<D>& decompose(const Ranks& ranks);
   /// decompose() throws InputError(message) (`FILE:LINE: key: what`): a fluid that cannot run
   /// decomposed; an empty message: none.
   void refuse(std::string message) { refusal_ = std::move(message); }
@@ -101,6 +108,7 @@ private:
   std::vector<double> send_;        // to_blocks: rows with their places, by destination
   std::vector<int> counts_;         // to_blocks: values sent to each rank
   std::string refusal_;
+  std::size_t particles_ = 0; // the fill's count, or the checkpoint's (decompose)
   std::size_t k_ = 0;
   std::vector<double> packed_, all_, sorted_; // this rank's rows; every rank's; columns (rank 0)
   std::vector<std::size_t> order_;            // all_'s rows in id order

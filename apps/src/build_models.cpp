@@ -12,16 +12,17 @@ bool coupled(const Scene& scene) {
 }
 } // namespace
 
-std::vector<std::unique_ptr<Model>> build_models(const Scene& scene) {
+std::vector<std::unique_ptr<Model>> build_models(const Scene& scene, const Ranks& ranks) {
   std::vector<std::unique_ptr<Model>> models;
   if (coupled(scene)) {
     if (scene.dimension == 3)
-      models.push_back(std::make_unique<CoupledModel3>(scene));
+      models.push_back(std::make_unique<CoupledModel3>(scene, ranks));
     else
-      models.push_back(std::make_unique<CoupledModel>(scene));
+      models.push_back(std::make_unique<CoupledModel>(scene, ranks));
     return models;
   }
-  if (scene.fluid) models.push_back(find_fluid_plugin(scene.fluid->type)->build(scene, {}, {}));
+  if (scene.fluid)
+    models.push_back(find_fluid_plugin(scene.fluid->type)->build(scene, {}, {}, ranks));
   for (std::size_t i = 0; i < scene.structures.size(); ++i)
     models.push_back(find_structure_plugin(scene.structures[i].type)->build(scene, i));
   return models;

@@ -164,7 +164,7 @@ int dispatch(const Args& a, std::ostream& out, std::ostream& err, bool terminal,
     return 0;
   }
   check_decomposable(scene, a, ranks);
-  auto models = named([&] { return build_models(scene); }); // decomposed by run_scene
+  auto models = named([&] { return build_models(scene, ranks); }); // decomposed by run_scene
   if (a.threads > 0) set_num_threads(a.threads);
   RunOptions options{a.out, terminal, &err, a.restart};
   options.overwrite = a.overwrite;

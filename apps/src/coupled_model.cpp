@@ -94,15 +94,15 @@ template <int D> coupling::BasicFluidSolver<D>& fluid_solver(FluidPart& f) {
 template <int D>
 std::unique_ptr<FluidPart> build_fluid(const Scene& scene,
                                        const std::vector<BasicInterfaceMesh<D>>& interfaces,
-                                       const std::vector<Polygon>& solid) {
+                                       const std::vector<Polygon>& solid, const Ranks& ranks) {
   const FluidPlugin& plugin = *find_fluid_plugin(scene.fluid->type);
   if constexpr (D == 2) {
-    return plugin.build(scene, interfaces, solid);
+    return plugin.build(scene, interfaces, solid, ranks);
   } else {
     if (!plugin.build3) // the scene reader refuses such a scene first
       fail_at(scene, scene.fluid->line, "fluid.type",
               scene.fluid->type + " has no 3-D coupling to structures");
-    return plugin.build3(scene, interfaces);
+    return plugin.build3(scene, interfaces, ranks);
   }
 }
 
@@ -127,7 +127,7 @@ template std::unique_ptr<InterfaceHistory3> open_replay<3>(const Scene&, std::si
 
 template <int D> BasicCoupledModel<D>::~BasicCoupledModel() = default;
 
-template <int D> BasicCoupledModel<D>::BasicCoupledModel(const Scene& scene) {
+template <int D> BasicCoupledModel<D>::BasicCoupledModel(const Scene& scene, const Ranks& ranks) {
   std::vector<BasicInterfaceMesh<D>> interfaces;
   std::vector<Polygon> solid;
   std::vector<coupling::BasicStructureSolver<D>*> members;
@@ -150,7 +150,7 @@ template <int D> BasicCoupledModel<D>::BasicCoupledModel(const Scene& scene) {
       }
     nodes += mesh.node_count();
   }
-  fluid_ = build_fluid<D>(scene, interfaces, solid);
+  fluid_ = build_fluid<D>(scene, interfaces, solid, ranks);
   group_ = std::make_unique<coupling::BasicStructureGroup<D>>(std::move(members));
   root_ = std::make_unique<RootStructures<D>>(*group_);
   const CouplingSpec c = scene.coupling.value_or(CouplingSpec{});

@@ -155,8 +155,8 @@ RunResult run_scene(const Scene& scene, std::vector<std::unique_ptr<Model>>& mod
     resume = c.frames;
     checkpoint_step = c.step;
   }
-  // Decomposed: every rank built the whole scene (and read the whole checkpoint); the models
-  // partition it now (a restart: afresh, on any rank count).
+  // Decomposed: every rank built the scene with its block of each particle fluid (or read the
+  // whole checkpoint); the models partition it now (a restart: afresh, on any rank count).
   if (ranks.decomposed())
     for (auto& m : models) try {
         if (!m->decompose(ranks)) throw InputError("a part of it cannot run under mpirun");

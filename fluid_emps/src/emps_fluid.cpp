@@ -71,9 +71,10 @@ PlaneWalls::PlaneWalls(const FluidOptions& options, double n0, erp::WallSet& wal
 
 template <int D>
 BasicEmpsFluid<D>::BasicEmpsFluid(const Options& options, const std::vector<Vec>& positions,
-                                  erp::WallSet& walls) requires(D == 2)
+                                  erp::WallSet& walls,
+                                  const particles::SetupBlock& block) requires(D == 2)
     : options_(validated(options)), walls_(options_, n0_, walls, particles_, grid_) {
-  start(positions);
+  start(positions, block);
 }
 
 SpaceWalls::SpaceWalls(const FluidOptions3& options, double n0, const erp::TriangleWallSet& walls,
@@ -98,18 +99,20 @@ void SpaceWalls::set_step_start(const erp::TriangleWallNodes& nodes) {
 
 template <int D>
 BasicEmpsFluid<D>::BasicEmpsFluid(const Options& options, const std::vector<Vec>& positions,
-                                  const erp::TriangleWallSet& walls,
-                                  bool walls_move) requires(D == 3)
+                                  const erp::TriangleWallSet& walls, bool walls_move,
+                                  const particles::SetupBlock& block) requires(D == 3)
     : options_(validated(options)), walls_(options_, n0_, walls, walls_move, particles_, grid_) {
-  start(positions);
+  start(positions, block);
 }
 
-template <int D> void BasicEmpsFluid<D>::start(const std::vector<Vec>& positions) {
+template <int D>
+void BasicEmpsFluid<D>::start(const std::vector<Vec>& positions,
+                              const particles::SetupBlock& block) {
   const std::size_t n = positions.size();
   particles_.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     for (int a = 0; a < D; ++a) particles_.position[a][i] = positions[i][a];
-    particles_.id[i] = static_cast<std::uint32_t>(i);
+    particles_.id[i] = static_cast<std::uint32_t>(block.first + i);
   }
   // Row capacity: twice the lattice sites within (1 + skin) r_e, and a margin.
   const double reach = (1.0 + options_.skin) * options_.re_over_l0;
@@ -121,6 +124,8 @@ template <int D> void BasicEmpsFluid<D>::start(const std::vector<Vec>& positions
                                         options_.domain_max[D - 1] - options_.domain_min[D - 1],
                                         particles_.position);
   remove_outside();
+  started_ = !block.deferred;
+  if (!started_) return query_walls(); // the block's hits until decompose() starts it
   refresh_neighbours({}, true, 0, 0.0);
   query_walls();
   density_and_pressure();
@@ -337,10 +342,14 @@ template <int D> void BasicEmpsFluid<D>::decompose(particles::Decomposition<D>& 
     if (decomposition.rank() != 0) removed_ = 0; // the checkpoint's count, kept on process 0
     if (neighbours_.built() == particles_.size()) return scatter_restored();
   }
+  if (started_) // the whole fluid (built whole, or a checkpoint): this process's block of it
+    particles::keep_block(particles_.fields, decomposition.rank(), decomposition.processes(),
+                          keep_);
   neighbours_.invalidate();
-  wall_work<D>(walls_, owned(), particles_.work); // the first partition's load: the start's hits
-  refresh_neighbours({}, true, step_, 0.0);       // the first migration and halo
-  query_walls();                                  // the ghosts' hits
+  query_walls(); // this block's hits, whose wall work (decomposed now) weighs the first partition
+  refresh_neighbours({}, true, step_, 0.0);                   // the first migration and halo
+  query_walls();                                              // the ghosts' hits
+  if (!std::exchange(started_, true)) density_and_pressure(); // a block's initial pressures
 }
 
 template <int D> void BasicEmpsFluid<D>::set_velocities(const std::vector<Vec>& v) {
@@ -375,9 +384,11 @@ template <int D> double BasicEmpsFluid<D>::stable_dt(double courant) const {
   return dt;
 }
 
-template BasicEmpsFluid<2>::BasicEmpsFluid(const Options&, const std::vector<Vec>&, erp::WallSet&);
+template BasicEmpsFluid<2>::BasicEmpsFluid(const Options&, const std::vector<Vec>&, erp::WallSet&,
+                                           const particles::SetupBlock&);
 template BasicEmpsFluid<3>::BasicEmpsFluid(const Options&, const std::vector<Vec>&,
-                                           const erp::TriangleWallSet&, bool);
+                                           const erp::TriangleWallSet&, bool,
+                                           const particles::SetupBlock&);
 template void BasicEmpsFluid<2>::advance(double, double);
 template void BasicEmpsFluid<3>::advance(double, double);
 template void BasicEmpsFluid<2>::decompose(particles::Decomposition<2>&);

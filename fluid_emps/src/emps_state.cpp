@@ -146,6 +146,7 @@ void BasicEmpsFluid<D>::read_state(const StateArchive& a, const std::string& pre
   }
   read_rows(a, prefix, hits);
   restored_ = true;
+  started_ = true; // the checkpoint's pressures, not a start's
 }
 
 template <int D>
@@ -213,12 +214,12 @@ std::size_t BasicEmpsFluid<D>::restore_images(std::array<std::vector<double>, D>
   return particles_.size();
 }
 
-// A restart under mpirun (issue 47): every process read the whole checkpoint (read_state).
-// Partitioned as the run that wrote it was at its last neighbour-list build: the migration and
-// the halo at the stored build positions, so the ghosts cover every pair the list holds until
-// its next rebuild; then each process takes its particles' rows of the checkpoint (fields, build
-// positions, wall hits), and the next step neither rebuilds nor requeries before the run that
-// wrote it did. Without a stored list: a fresh partition, as at a start.
+// A restart under mpirun (issue 47): every process read the whole checkpoint (read_state) and
+// keeps its block of it. Partitioned as the run that wrote it was at its last neighbour-list
+// build: the migration and the halo at the stored build positions, so the ghosts cover every pair
+// the list holds until its next rebuild; then each process takes its particles' rows of the
+// checkpoint (fields, build positions, wall hits), and the next step neither rebuilds nor requeries
+// before the run that wrote it did. Without a stored list: a fresh partition, as at a start.
 template <int D> void BasicEmpsFluid<D>::scatter_restored() {
   ParticleSet& p = particles_;
   const std::size_t n = p.size();
@@ -232,6 +233,7 @@ template <int D> void BasicEmpsFluid<D>::scatter_restored() {
   for (std::size_t i = 0; i < n; ++i) row[p.id[i]] = i;
   for (int axis = 0; axis < D; ++axis)
     p.position[axis] = all.reals("neighbours/" + build_key(axis));
+  particles::keep_block(p.fields, decomposition_->rank(), decomposition_->processes(), keep_);
   if (decomposition_->migrate(p.fields, p.position, &p.work)) ++layout_;
   decomposition_->build_ghosts(p.fields, p.position, r_e_ * (1.0 + options_.skin));
   std::vector<std::size_t> pick(p.size());

@@ -19,7 +19,7 @@ std::vector<Vec2> fill_rectangle(const Vec2& lo, const Vec2& hi, double dp) {
 
 template <int D>
 BasicSphFluid<D>::BasicSphFluid(Setup, const Options& options, const std::vector<Vec>& positions,
-                                std::vector<Distance> distances)
+                                std::vector<Distance> distances, std::size_t first_id)
     : options_(options), kernel_((options.validate(), options.h())), h_(options.h()), sigma0_(0.0),
       mass_(options.mass()), distances_(std::move(distances)) {
   const double dp = options_.dp;
@@ -46,10 +46,10 @@ BasicSphFluid<D>::BasicSphFluid(Setup, const Options& options, const std::vector
     if (!((r.array() >= lo.array()).all() && (r.array() <= hi.array()).all())) {
       std::string at = fmt(r[0]);
       for (int c = 1; c < D; ++c) at += ", " + fmt(r[c]);
-      throw InputError("fluid_sph: particle " + std::to_string(i) + " at (" + at +
+      throw InputError("fluid_sph: particle " + std::to_string(first_id + i) + " at (" + at +
                        ") is outside the domain");
     }
-    fluid_.id[i] = static_cast<std::uint32_t>(i);
+    fluid_.id[i] = static_cast<std::uint32_t>(first_id + i);
     for (int c = 0; c < D; ++c) {
       fluid_.x[c][i] = r[c];
       fluid_.ap[c][i] = fluid_.a[c][i] = options_.gravity[c];
@@ -63,24 +63,28 @@ BasicSphFluid<D>::BasicSphFluid(Setup, const Options& options, const std::vector
 template <int D>
 BasicSphFluid<D>::BasicSphFluid(const Options& options, const std::vector<Vec>& positions,
                                 const std::vector<WallPolyline>& walls,
-                                const std::vector<Point>& points,
-                                std::vector<Distance> distances) requires(D == 2)
-    : BasicSphFluid(Setup{}, options, positions, std::move(distances)) {
+                                const std::vector<Point>& points, std::vector<Distance> distances,
+                                const particles::SetupBlock& block) requires(D == 2)
+    : BasicSphFluid(Setup{}, options, positions, std::move(distances), block.first) {
   fill_walls(walls);
   append_wall_points(points);
-  // The first advection step starts here: its per-Dt work runs as at the end of any other.
-  builds_ = -1;
-  per_advection_step();
+  start(block);
 }
 
 template <int D>
 BasicSphFluid<D>::BasicSphFluid(const Options& options, const std::vector<Vec>& positions,
-                                const std::vector<Point>& points,
-                                std::vector<Distance> distances) requires(D == 3)
-    : BasicSphFluid(Setup{}, options, positions, std::move(distances)) {
+                                const std::vector<Point>& points, std::vector<Distance> distances,
+                                const particles::SetupBlock& block) requires(D == 3)
+    : BasicSphFluid(Setup{}, options, positions, std::move(distances), block.first) {
   append_wall_points(points);
+  start(block);
+}
+
+// The first advection step starts with its per-Dt work, as at the end of any other (builds_ -1
+// until then: decompose() starts a deferred block).
+template <int D> void BasicSphFluid<D>::start(const particles::SetupBlock& block) {
   builds_ = -1;
-  per_advection_step();
+  if (!block.deferred) per_advection_step();
 }
 
 template <int D> void BasicSphFluid<D>::set_velocities(const std::vector<Vec>& v) {
@@ -112,14 +116,18 @@ void BasicSphFluid<D>::set_wall_motion(int group, WallMotion motion) requires(D 
 // Member by member (an explicit instantiation of the class would take the other dimension's
 // constructor too, clang 14).
 template BasicSphFluid<2>::BasicSphFluid(Setup, const Options&, const std::vector<Vec>&,
-                                         std::vector<Distance>);
+                                         std::vector<Distance>, std::size_t);
 template BasicSphFluid<3>::BasicSphFluid(Setup, const Options&, const std::vector<Vec>&,
-                                         std::vector<Distance>);
+                                         std::vector<Distance>, std::size_t);
 template BasicSphFluid<2>::BasicSphFluid(const Options&, const std::vector<Vec>&,
                                          const std::vector<WallPolyline>&,
-                                         const std::vector<Point>&, std::vector<Distance>);
+                                         const std::vector<Point>&, std::vector<Distance>,
+                                         const particles::SetupBlock&);
 template BasicSphFluid<3>::BasicSphFluid(const Options&, const std::vector<Vec>&,
-                                         const std::vector<Point>&, std::vector<Distance>);
+                                         const std::vector<Point>&, std::vector<Distance>,
+                                         const particles::SetupBlock&);
+template void BasicSphFluid<2>::start(const particles::SetupBlock&);
+template void BasicSphFluid<3>::start(const particles::SetupBlock&);
 template void BasicSphFluid<2>::set_velocities(const std::vector<Vec>&);
 template void BasicSphFluid<3>::set_velocities(const std::vector<Vec>&);
 template void BasicSphFluid<2>::set_wall_motion(int, WallMotion);

@@ -139,8 +139,11 @@ template <int D> void BasicSphFluid<D>::decompose(particles::Decomposition<D>& d
   if (options_.periodic_x || options_.periodic_y || options_.periodic_z)
     throw InputError("fluid_sph: a periodic fluid cannot be decomposed");
   decomposition_ = &decomposition;
-  // The tracked walls' viscous force of this Dt was summed over every particle on every rank
-  // (each built the whole fluid): rank 0 keeps it, so the ranks' parts sum to it.
+  if (builds_ < 0) return per_advection_step(); // a deferred block: the first step's start
+  // The whole fluid (built whole, or a checkpoint): this rank's block of it. The tracked walls'
+  // viscous force of this Dt was summed over every particle on every rank: rank 0 keeps it, so
+  // the ranks' parts sum to it.
+  particles::keep_block(fluid_.fields, hook().rank(), hook().processes(), keep_);
   if (tracked_ < walls_.size() && hook().rank() != 0)
     for (int c = 0; c < D; ++c)
       std::fill(walls_.fv[c].begin() + static_cast<std::ptrdiff_t>(tracked_), walls_.fv[c].end(),

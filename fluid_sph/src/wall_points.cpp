@@ -45,7 +45,7 @@ template <int D> void BasicSphFluid<D>::track_wall_forces(std::size_t first, Rea
   tracked_ = first;
   reaction_ = reaction;
   for (auto& w : wf_) w.assign(walls_.size() - first, 0.0);
-  wall_viscous_reaction(); // for the current advection step
+  if (builds_ >= 0) wall_viscous_reaction(); // for the current advection step (if started)
 }
 
 template void BasicSphFluid<2>::track_wall_forces(std::size_t, Reaction);

@@ -14,15 +14,9 @@ bool ParticleDecomposition<D>::migrate(particles::FieldSet& fields,
                                        const std::vector<double>* work) {
   drop_ghosts(fields);
   const bool first = rcb_.partitions() == 0;
-  if (first) { // every rank holds the whole set: keep every P-th entry
-    keep_.resize(fields.size());
-    for (std::size_t i = 0; i < keep_.size(); ++i)
-      keep_[i] = static_cast<int>(i % static_cast<std::size_t>(comm_.size())) == comm_.rank();
-    fields.compact(keep_);
-  }
   const std::size_t n = fields.size();
   double load = static_cast<double>(n);
-  if (work) { // the set's array, compacted above with the others
+  if (work) { // the set's array
     load_.resize(n);
     for (std::size_t i = 0; i < n; ++i) load_[i] = static_cast<float>(1.0 + (*work)[i]);
     load = 0.0;

@@ -171,7 +171,7 @@ void register_pair() {
     };
     f.check = [](const Scene&, Section&, std::vector<Section>&) {};
     f.build = [](const Scene& scene, const std::vector<InterfaceMesh>& interfaces,
-                 const std::vector<Polygon>&) -> std::unique_ptr<FluidPart> {
+                 const std::vector<Polygon>&, const Ranks&) -> std::unique_ptr<FluidPart> {
       return std::make_unique<PressureFluid>(scene.fluid->as<PressureSpec>().pressure, interfaces);
     };
     f.footprint = [](const Scene&) { return Footprint{}; };

@@ -104,7 +104,7 @@ TEST_CASE("sph plug-in: a hydrostatic column through the registry: pressure and 
   const Scene scene = load_scene(FSI_TEST_DATA "/sph_column.yaml", {});
   const FluidPlugin* plugin = find_fluid_plugin(scene.fluid->type);
   REQUIRE(plugin != nullptr);
-  const auto model = plugin->build(scene, {}, {});
+  const auto model = plugin->build(scene, {}, {}, OneProcess());
   const ProbeSpec &p_low = named(scene, "p_low"), &force_y = named(scene, "force_y"),
                   &energy = named(scene, "energy");
   const double rho = 1000.0, g = 9.81, H = 0.1, width = 0.1;

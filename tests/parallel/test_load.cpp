@@ -66,7 +66,7 @@ TEMPLATE_TEST_CASE("ParticleDecomposition repartitions on the loads' imbalance",
                    (std::integral_constant<int, 2>), (std::integral_constant<int, 3>)) {
   constexpr int D = TestType::value;
   const Communicator comm;
-  WorkCloud<D> c(load_cloud_size, 0, 1); // every rank the whole set, as a solver starts
+  WorkCloud<D> c(load_cloud_size, comm.rank(), comm.size()); // distinct particles on each rank
   constexpr double rebalance = 1.1;
   ParticleDecomposition<D> decomposition(comm, rebalance);
 

@@ -34,8 +34,8 @@ public:
   using Scheme = coupling::BasicCouplingScheme<D>;
   /// Throws InputError (scene file and line) for coupling options the scheme rejects.
   /// one_way_*: InputError (`FILE:LINE: coupling.motion|loads: what`) for a recorded file whose
-  /// node count differs from the interface's.
-  explicit BasicCoupledModel(const Scene& scene);
+  /// node count differs from the interface's. `ranks`: the fluid's (FluidPlugin::build).
+  explicit BasicCoupledModel(const Scene& scene, const Ranks& ranks = OneProcess());
   ~BasicCoupledModel() override;
   void advance(double time, double dt) override;
   /// The smallest of the fluid's and the structures' stable steps for the Courant number

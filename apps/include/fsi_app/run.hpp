@@ -37,8 +37,10 @@ struct RunResult {
 };
 
 /// Builds the models a scene needs (structures, fluid, coupler). Throws fsi::InputError for a
-/// scene that names what this build cannot simulate, before any computation.
-std::vector<std::unique_ptr<Model>> build_models(const Scene& scene);
+/// scene that names what this build cannot simulate, before any computation. `ranks`: the
+/// processes run_scene decomposes the models over (a particle fluid's share is built on each).
+std::vector<std::unique_ptr<Model>> build_models(const Scene& scene,
+                                                 const Ranks& ranks = OneProcess());
 
 /// The input checks build_models makes, through each plug-in's `validate`, without building the
 /// solvers (`fsi check`): the same InputError for the same scene.

@@ -84,9 +84,10 @@ struct FluidPlugin {
   /// blocks, for messages about them.
   std::function<void(const Scene&, Section&, std::vector<Section>& probes)> check;
   /// interfaces: the coupled structures' interfaces (empty for a fluid alone); solid: the areas
-  /// they occupy.
+  /// they occupy; ranks: the processes the part will be decomposed over (Model::decompose), so
+  /// that each builds only its share of the fluid (one process: OneProcess).
   std::function<std::unique_ptr<FluidPart>(const Scene&, const std::vector<InterfaceMesh>&,
-                                           const std::vector<Polygon>&)>
+                                           const std::vector<Polygon>&, const Ranks&)>
       build;
   /// The input checks `build` makes (e.g. that particles fit the regions), without building the
   /// solver: `fsi check` (seconds and megabytes where build takes minutes and gigabytes).
@@ -96,9 +97,10 @@ struct FluidPlugin {
   std::vector<std::string> fields;           ///< output fields it writes
   std::vector<std::string> probe_quantities; ///< probes it answers (without a `structure`)
   /// A 3-D coupled scene's fluid (scene.dimension 3 with structures): interfaces as `build`'s,
-  /// the structures' InterfaceMesh3 in scene order. Empty: the type has no 3-D coupling (the
-  /// scene reader refuses such a scene at fluid.type).
-  std::function<std::unique_ptr<FluidPart>(const Scene&, const std::vector<InterfaceMesh3>&)>
+  /// the structures' InterfaceMesh3 in scene order, ranks as `build`'s. Empty: the type has no
+  /// 3-D coupling (the scene reader refuses such a scene at fluid.type).
+  std::function<std::unique_ptr<FluidPart>(const Scene&, const std::vector<InterfaceMesh3>&,
+                                           const Ranks&)>
       build3 = {};
   /// The input checks build3 makes, without building the solver (`fsi check`); empty: none
   /// beyond `validate`'s.
@@ -129,8 +131,8 @@ struct StructurePlugin {
 template <class Part>
 std::unique_ptr<FluidPart> make_fluid_part(const Scene& scene,
                                            const std::vector<InterfaceMesh>& interfaces,
-                                           const std::vector<Polygon>& solid) {
-  return std::make_unique<Part>(scene, interfaces, solid);
+                                           const std::vector<Polygon>& solid, const Ranks& ranks) {
+  return std::make_unique<Part>(scene, interfaces, solid, ranks);
 }
 template <class Part>
 std::unique_ptr<StructurePart> make_structure_part(const Scene& scene, std::size_t index) {

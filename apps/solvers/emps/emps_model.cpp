@@ -22,7 +22,7 @@ emps::FluidOptions fluid_options(const Scene& scene) {
 }
 
 EmpsModel::EmpsModel(const Scene& scene, const std::vector<InterfaceMesh>& interfaces,
-                     const std::vector<Polygon>& solid)
+                     const std::vector<Polygon>& solid, const Ranks& ranks)
     : walls_(std::make_unique<erp::WallSet>()), probes_(scene.output.probes) {
   int group = 0;
   for (const auto& w : scene.walls) {
@@ -38,9 +38,11 @@ EmpsModel::EmpsModel(const Scene& scene, const std::vector<InterfaceMesh>& inter
     interface_walls_.emplace_back(*walls_, mesh, group++);
   }
   const FluidSpec& f = scene.fluid->as<FluidSpec>();
-  const std::vector<Vec2> positions = fill_regions(scene, f.area.regions, f.options.l0, solid);
-  initial_count_ = positions.size();
-  fluid_ = std::make_unique<emps::EmpsFluid>(fluid_options(scene), positions, *walls_);
+  std::vector<Vec2> filled = fill_regions(scene, f.area.regions, f.options.l0, solid);
+  initial_count_ = filled.size();
+  particles::SetupBlock block;
+  const std::vector<Vec2> positions = ranks_.setup(ranks, std::move(filled), block);
+  fluid_ = std::make_unique<emps::EmpsFluid>(fluid_options(scene), positions, *walls_, block);
   adapter_ = std::make_unique<FluidAdapter>(*fluid_, *walls_, interface_walls_);
 }
 
@@ -56,7 +58,7 @@ std::optional<double> EmpsModel::stable_dt(double courant) const {
 void EmpsModel::declare(FieldsFile&) const {}
 
 bool EmpsModel::decompose(const Ranks& ranks) {
-  fluid_->decompose(ranks_.decompose(ranks, fluid_->particles().size()));
+  fluid_->decompose(ranks_.decompose(ranks));
   return true;
 }
 
@@ -174,6 +176,7 @@ void EmpsModel::write_state(StateArchive& archive) const {
 
 void EmpsModel::read_state(const StateArchive& archive) {
   fluid_->read_state(archive, "fluid/");
+  ranks_.restored(fluid_->particles().size());
   walls_->read_state(archive, "walls/");
 }
 

@@ -25,9 +25,10 @@ public:
   /// structure's interface (as the structure describes it) becomes ERP walls whose nodes are its
   /// interface nodes (eqs. 47-51), and the areas the structures occupy (`solid`) are kept free of
   /// particles. Throws InputError (scene file and line) for a motion table or region that does
-  /// not fit.
+  /// not fit. Under mpirun (`ranks` decomposed) each rank builds its block of the fill only
+  /// (DecomposedParticles::setup); decompose() starts the fluid.
   EmpsModel(const Scene& scene, const std::vector<InterfaceMesh>& interfaces = {},
-            const std::vector<Polygon>& solid = {});
+            const std::vector<Polygon>& solid = {}, const Ranks& ranks = OneProcess());
   void advance(double time, double dt) override;
   std::optional<double> stable_dt(double courant) const override;
   void declare(FieldsFile& file) const override;
@@ -45,7 +46,7 @@ public:
   /// Decomposed: collective, every rank's particles summed.
   std::vector<std::pair<std::string, Vec2>> force_parts() const override;
   /// The fluid steps over `ranks` (parallel::ParticleDecomposition under mpirun); every rank
-  /// built it from the whole scene.
+  /// built its block of the fill (or read the whole checkpoint).
   bool decompose(const Ranks& ranks) override;
   /// Decomposed: every rank's owned particles in id order (to rank 0, or each rank's own when
   /// fields.h5 is written collectively, the probes then evaluated over every rank; one-process

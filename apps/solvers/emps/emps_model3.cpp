@@ -241,13 +241,16 @@ void validate3(const Scene& scene, const std::vector<InterfaceMesh3>& interfaces
     }
 }
 
-EmpsModel3::EmpsModel3(const Scene& scene, const std::vector<InterfaceMesh3>& interfaces)
+EmpsModel3::EmpsModel3(const Scene& scene, const std::vector<InterfaceMesh3>& interfaces,
+                       const Ranks& ranks)
     : probes_(scene.output.probes) {
   const FluidSpec3& f = scene.fluid->as<FluidSpec3>();
   ranks_.refuse(f.periodic);
   validate3(scene, interfaces);
-  const std::vector<Vec3> positions = fill_regions3(f);
-  initial_count_ = positions.size();
+  std::vector<Vec3> filled = fill_regions3(f);
+  initial_count_ = filled.size();
+  particles::SetupBlock block;
+  const std::vector<Vec3> positions = ranks_.setup(ranks, std::move(filled), block);
   walls_ = fluid_walls(scene, interfaces, interfaces_);
   tank_motion_ = tank_motion(f, *walls_);
   if (tank_motion_) tank_motion_->move(*walls_, 0.0);
@@ -255,8 +258,8 @@ EmpsModel3::EmpsModel3(const Scene& scene, const std::vector<InterfaceMesh3>& in
   try {
     // The walls move with fluid.tank_motion or the structures' interfaces, else never.
     const bool walls_move = tank_motion_.has_value() || !interfaces_.empty();
-    fluid_ =
-        std::make_unique<emps::EmpsFluid3>(fluid_options3(scene), positions, *walls_, walls_move);
+    fluid_ = std::make_unique<emps::EmpsFluid3>(fluid_options3(scene), positions, *walls_,
+                                                walls_move, block);
   } catch (const InputError& e) {
     fail_at(scene, scene.fluid->line, "fluid", e.what());
   }
@@ -278,7 +281,7 @@ std::optional<double> EmpsModel3::stable_dt(double courant) const {
 }
 
 bool EmpsModel3::decompose(const Ranks& ranks) {
-  fluid_->decompose(ranks_.decompose(ranks, fluid_->particles().size()));
+  fluid_->decompose(ranks_.decompose(ranks));
   return true;
 }
 
@@ -398,6 +401,7 @@ void EmpsModel3::write_state(StateArchive& archive) const {
 
 void EmpsModel3::read_state(const StateArchive& archive) {
   adapter_->read_state(archive);
+  ranks_.restored(fluid_->particles().size());
 }
 
 } // namespace fsi::app::emps_plugin

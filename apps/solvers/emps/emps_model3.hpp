@@ -39,7 +39,10 @@ public:
   /// Builds the tank's triangles (less those the interfaces cover), the interfaces' triangles at
   /// their reference positions, and fills the regions (each from its lowest corner, l0/2 from
   /// its faces; a point inside an earlier region is left out).
-  explicit EmpsModel3(const Scene& scene, const std::vector<InterfaceMesh3>& interfaces = {});
+  /// Under mpirun (`ranks` decomposed) each rank builds its block of the fill only
+  /// (DecomposedParticles::setup); decompose() starts the fluid.
+  explicit EmpsModel3(const Scene& scene, const std::vector<InterfaceMesh3>& interfaces = {},
+                      const Ranks& ranks = OneProcess());
   void advance(double time, double dt) override;
   std::optional<double> stable_dt(double courant) const override;
   /// particles: the count; wall_gap: the smallest distance of a particle centre to its nearest
@@ -60,7 +63,7 @@ public:
   /// F against the interfaces the model was built with (TriangleAdapter).
   coupling::FluidSolver3& coupling_solver3() override { return *adapter_; }
   /// The fluid steps over `ranks` (parallel::ParticleDecomposition<3> under mpirun); every rank
-  /// built it from the whole scene and holds every wall triangle (the ghosts' wall hits are
+  /// built its block of the fill and holds every wall triangle (the ghosts' wall hits are
   /// computed locally). Without structures (the adapter's state is this rank's).
   bool decompose(const Ranks& ranks) override;
   /// Decomposed: every rank's owned particles in id order (to rank 0, or each rank's own when

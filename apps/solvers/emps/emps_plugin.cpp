@@ -77,18 +77,19 @@ FluidPlugin plugin() {
           read_fluid,
           check,
           [](const Scene& scene, const std::vector<InterfaceMesh>& interfaces,
-             const std::vector<Polygon>& solid) -> std::unique_ptr<FluidPart> {
-            if (scene.dimension == 3) return std::make_unique<EmpsModel3>(scene);
-            return make_fluid_part<EmpsModel>(scene, interfaces, solid);
+             const std::vector<Polygon>& solid, const Ranks& ranks) -> std::unique_ptr<FluidPart> {
+            if (scene.dimension == 3)
+              return std::make_unique<EmpsModel3>(scene, std::vector<InterfaceMesh3>{}, ranks);
+            return make_fluid_part<EmpsModel>(scene, interfaces, solid, ranks);
           },
           validate,
           footprint,
           {"velocity", "pressure", "pnd", "free_surface"},
           {"surge_front", "pressure", "mean_pressure", "mean_speed", "kinetic_energy", "particles",
            "wall_gap", "water_height", "wall_pressure", "wall_force_x", "wall_force_y"},
-          [](const Scene& scene,
-             const std::vector<InterfaceMesh3>& interfaces) -> std::unique_ptr<FluidPart> {
-            return std::make_unique<EmpsModel3>(scene, interfaces);
+          [](const Scene& scene, const std::vector<InterfaceMesh3>& interfaces,
+             const Ranks& ranks) -> std::unique_ptr<FluidPart> {
+            return std::make_unique<EmpsModel3>(scene, interfaces, ranks);
           },
           [](const Scene& scene, const std::vector<InterfaceMesh3>& interfaces) {
             validate3(scene, interfaces);

@@ -48,7 +48,7 @@ bool has_wall_force_probe(const Scene& scene) {
 } // namespace
 
 SphModel::SphModel(const Scene& scene, const std::vector<InterfaceMesh>& interfaces,
-                   const std::vector<Polygon>& solid)
+                   const std::vector<Polygon>& solid, const Ranks& ranks)
     : probes_(scene.output.probes) {
   const SphSpec& f = scene.fluid->as<SphSpec>();
   ranks_.refuse(f.periodic);
@@ -73,11 +73,13 @@ SphModel::SphModel(const Scene& scene, const std::vector<InterfaceMesh>& interfa
   } catch (const InputError& e) {
     fail_at(scene, scene.fluid->line, "fluid", e.what());
   }
-  const std::vector<Vec2> positions = fill_regions(scene, f.area.regions, f.options.dp, solid);
-  initial_count_ = positions.size();
+  std::vector<Vec2> filled = fill_regions(scene, f.area.regions, f.options.dp, solid);
+  initial_count_ = filled.size();
+  particles::SetupBlock block;
+  const std::vector<Vec2> positions = ranks_.setup(ranks, std::move(filled), block);
   try {
     fluid_ = std::make_unique<sph::SphFluid>(sph_options(scene), positions, walls, points,
-                                             std::move(distances));
+                                             std::move(distances), block);
   } catch (const InputError& e) {
     fail_at(scene, scene.fluid->line, "fluid", e.what());
   }
@@ -167,7 +169,7 @@ void SphModel::report(JsonObject& run) const {
 }
 
 bool SphModel::decompose(const Ranks& ranks) {
-  fluid_->decompose(ranks_.decompose(ranks, fluid_->particles().size()));
+  fluid_->decompose(ranks_.decompose(ranks));
   return true;
 }
 
@@ -204,6 +206,7 @@ void SphModel::write_state(StateArchive& archive) const {
 
 void SphModel::read_state(const StateArchive& archive) {
   adapter_->read_state(archive);
+  ranks_.restored(fluid_->particles().size());
 }
 
 } // namespace fsi::app::sph_plugin

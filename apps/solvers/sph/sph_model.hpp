@@ -23,9 +23,11 @@ class SphModel final : public FluidPart {
 public:
   /// Fills the regions (l0/2 from walls and edges, the structures' areas `solid` kept free),
   /// builds the wall dummies and the interfaces' boundary points. Throws InputError (scene file
-  /// and line) for options or regions the fluid refuses.
+  /// and line) for options or regions the fluid refuses. Under mpirun (`ranks` decomposed) each
+  /// rank builds its block of the fill only (DecomposedParticles::setup); decompose() starts the
+  /// fluid's first advection step.
   SphModel(const Scene& scene, const std::vector<InterfaceMesh>& interfaces = {},
-           const std::vector<Polygon>& solid = {});
+           const std::vector<Polygon>& solid = {}, const Ranks& ranks = OneProcess());
   ~SphModel() override;
   /// Acoustic steps of the fluid's own criteria up to time + dt (the last one shortened).
   void advance(double time, double dt) override;
@@ -39,7 +41,7 @@ public:
   std::optional<std::string> non_finite() const override;
   void report(JsonObject& run) const override;
   /// The fluid steps over `ranks` (parallel::ParticleDecomposition under mpirun); every rank
-  /// built it from the whole scene and holds every wall particle, the boundary points moved
+  /// built its block of the fill and holds every wall particle, the boundary points moved
   /// alike on every rank by the same (rank 0's) interface motion.
   bool decompose(const Ranks& ranks) override;
   /// Decomposed: every rank's owned particles to rank 0 in id order (one-process files and

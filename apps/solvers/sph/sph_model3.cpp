@@ -140,12 +140,15 @@ void validate3(const Scene& scene, const std::vector<InterfaceMesh3>& interfaces
   checked_fluid(scene, boundaries_of(scene, interfaces));
 }
 
-SphModel3::SphModel3(const Scene& scene, const std::vector<InterfaceMesh3>& interfaces)
+SphModel3::SphModel3(const Scene& scene, const std::vector<InterfaceMesh3>& interfaces,
+                     const Ranks& ranks)
     : boundaries_(boundaries_of(scene, interfaces)), probes_(scene.output.probes) {
   const SphSpec3& f = scene.fluid->as<SphSpec3>();
   ranks_.refuse(f.periodic);
-  const std::vector<Vec3> positions = checked_fluid(scene, boundaries_);
-  initial_count_ = positions.size();
+  std::vector<Vec3> filled = checked_fluid(scene, boundaries_);
+  initial_count_ = filled.size();
+  particles::SetupBlock block;
+  const std::vector<Vec3> positions = ranks_.setup(ranks, std::move(filled), block);
   // The interfaces' points (group 1 + j) after the tank's dummies (group 0); the guard's exact
   // surface of interface j: its flat triangles where its points are now (interface_x_).
   std::vector<sph::WallPoint3> points;
@@ -162,7 +165,7 @@ SphModel3::SphModel3(const Scene& scene, const std::vector<InterfaceMesh3>& inte
   walls.insert(walls.end(), points.begin(), points.end());
   try {
     fluid_ = std::make_unique<sph::SphFluid3>(sph_options3(scene), positions, walls,
-                                              std::move(distances));
+                                              std::move(distances), block);
   } catch (const InputError& e) {
     fail_at(scene, scene.fluid->line, "fluid", e.what());
   }
@@ -219,7 +222,7 @@ void SphModel3::report(JsonObject& run) const {
 }
 
 bool SphModel3::decompose(const Ranks& ranks) {
-  fluid_->decompose(ranks_.decompose(ranks, fluid_->particles().size()));
+  fluid_->decompose(ranks_.decompose(ranks));
   return true;
 }
 
@@ -244,6 +247,7 @@ void SphModel3::write_state(StateArchive& archive) const {
 
 void SphModel3::read_state(const StateArchive& archive) {
   adapter_->read_state(archive);
+  ranks_.restored(fluid_->particles().size());
 }
 
 } // namespace fsi::app::sph_plugin

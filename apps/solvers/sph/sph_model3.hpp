@@ -34,7 +34,10 @@ public:
   /// earlier region, behind an interface or within l0/2 of it is left out), builds the tank's
   /// dummies (less those in a dp cell of the tank's lattice that holds a boundary point) and the
   /// interfaces' boundary points (4 layers at spacing l0).
-  explicit SphModel3(const Scene& scene, const std::vector<InterfaceMesh3>& interfaces = {});
+  /// Under mpirun (`ranks` decomposed) each rank builds its block of the fill only
+  /// (DecomposedParticles::setup); decompose() starts the fluid's first advection step.
+  explicit SphModel3(const Scene& scene, const std::vector<InterfaceMesh3>& interfaces = {},
+                     const Ranks& ranks = OneProcess());
   ~SphModel3() override;
   void advance(double time, double dt) override;
   /// The fluid's advection step Dt (its dual criteria; the Courant number is not used).

@@ -67,18 +67,19 @@ FluidPlugin plugin() {
           read_sph,
           check,
           [](const Scene& scene, const std::vector<InterfaceMesh>& interfaces,
-             const std::vector<Polygon>& solid) -> std::unique_ptr<FluidPart> {
-            if (scene.dimension == 3) return std::make_unique<SphModel3>(scene);
-            return make_fluid_part<SphModel>(scene, interfaces, solid);
+             const std::vector<Polygon>& solid, const Ranks& ranks) -> std::unique_ptr<FluidPart> {
+            if (scene.dimension == 3)
+              return std::make_unique<SphModel3>(scene, std::vector<InterfaceMesh3>{}, ranks);
+            return make_fluid_part<SphModel>(scene, interfaces, solid, ranks);
           },
           validate,
           footprint,
           {"velocity", "pressure", "density", "wkgc_indicator"},
           {"surge_front", "pressure", "velocity_x", "velocity_y", "velocity_z", "kinetic_energy",
            "mean_speed", "wall_force_x", "wall_force_y"},
-          [](const Scene& scene,
-             const std::vector<InterfaceMesh3>& interfaces) -> std::unique_ptr<FluidPart> {
-            return std::make_unique<SphModel3>(scene, interfaces);
+          [](const Scene& scene, const std::vector<InterfaceMesh3>& interfaces,
+             const Ranks& ranks) -> std::unique_ptr<FluidPart> {
+            return std::make_unique<SphModel3>(scene, interfaces, ranks);
           },
           [](const Scene& scene, const std::vector<InterfaceMesh3>& interfaces) {
             validate3(scene, interfaces);

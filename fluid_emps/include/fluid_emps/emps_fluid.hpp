@@ -31,6 +31,7 @@
 #include "particles/kernels.hpp"
 #include "particles/neighbor_list.hpp"
 #include "particles/periodic_images.hpp"
+#include "particles/setup_block.hpp"
 
 #include <array>
 #include <limits>
@@ -151,28 +152,32 @@ public:
   using ParticleSet = BasicParticles<D>;
 
   /// Particles start at rest at `positions`. Throws fsi::InputError on invalid options.
-  BasicEmpsFluid(const Options& options, const std::vector<Vec>& positions,
-                 erp::WallSet& walls) requires(D == 2);
+  /// `block`: the positions are one process's block of the fill (ids from block.first); with
+  /// block.deferred the start (neighbours, initial pnd and pressures) waits for decompose().
+  BasicEmpsFluid(const Options& options, const std::vector<Vec>& positions, erp::WallSet& walls,
+                 const particles::SetupBlock& block = {}) requires(D == 2);
   /// With triangle walls (3-D), which must outlive the fluid; a caller that moves their nodes
   /// calls walls.update() before advance() (which refits the triangle index), as the coupled
   /// interfaces do (apps: TriangleAdapter). An empty set: no walls. `walls_move` false: the
   /// caller never moves them (the fluid neither refits their index nor keeps them at t^n).
   BasicEmpsFluid(const Options& options, const std::vector<Vec>& positions,
-                 const erp::TriangleWallSet& walls, bool walls_move = true) requires(D == 3);
+                 const erp::TriangleWallSet& walls, bool walls_move = true,
+                 const particles::SetupBlock& block = {}) requires(D == 3);
   /// Initial velocities, one per owned particle in the current order (before the first
   /// advance()).
   void set_velocities(const std::vector<Vec>& v);
   ~BasicEmpsFluid() = default;
 
   /// Steps from now on decomposed over processes through `decomposition`, which must outlive
-  /// the fluid (collective; every process holds the same fluid on entry, see
-  /// parallel::ParticleDecomposition). Without it the fluid is serial (particles::LocalParticles,
-  /// or with periodic_z particles::PeriodicImages, which refuses decompose(): InputError).
-  /// The exchange points of the step are listed in docs/architecture.md "Processes (MPI)".
-  /// After read_state (a restart on any process count), the checkpoint is partitioned as its
-  /// run was at its last neighbour-list build (scatter_restored). Decomposed, save() keeps the
-  /// owned particles and restore() drops the ghosts (the next step migrates and builds them
-  /// afresh); the wall forces are this process's particles' (the caller sums them).
+  /// the fluid (collective). On entry each process holds its block of the fill, not started
+  /// (SetupBlock::deferred: the start follows the first partition), or the same whole fluid
+  /// (it keeps its block first, particles/setup_block.hpp). Without it the fluid is serial
+  /// (particles::LocalParticles, or with periodic_z particles::PeriodicImages, which refuses
+  /// decompose(): InputError). The exchange points of the step are listed in docs/architecture.md
+  /// "Processes (MPI)". After read_state (a restart on any process count), the checkpoint is
+  /// partitioned as its run was at its last neighbour-list build (scatter_restored). Decomposed,
+  /// save() keeps the owned particles and restore() drops the ghosts (the next step migrates and
+  /// builds them afresh); the wall forces are this process's particles' (the caller sums them).
   void decompose(particles::Decomposition<D>& decomposition);
   /// The particles this process owns: the first owned() entries of particles(); ghosts follow.
   std::size_t owned() const { return particles_.size() - decomposition_->ghosts(); }
@@ -247,7 +252,9 @@ private:
   void scatter_restored();
   /// Places the particles at `positions` and computes pnd, pressure and the free-surface flags
   /// of the initial state (for output at t = 0).
-  void start(const std::vector<Vec>& positions);
+  /// With block.deferred only the particles and their wall hits (the first partition's loads):
+  /// decompose() completes the start.
+  void start(const std::vector<Vec>& positions, const particles::SetupBlock& block);
   /// Refreshes the ghosts' arrays `changed` (empty: every array); rebuilds the neighbour list
   /// (its halo build sends every array) when a particle of any process has moved half the skin
   /// (with `allow_reorder`, migrating and reordering the owned particles first). `step` and `t`
@@ -294,6 +301,7 @@ private:
   std::size_t capacity_;
   long step_ = 0, layout_ = 0, builds_ = 0;
   bool restored_ = false; ///< read from a checkpoint, not yet decomposed
+  bool started_ = true;   ///< false: a deferred block (SetupBlock), until decompose()
   double gap_dt_ = std::numeric_limits<double>::infinity(); // wall-gap limit for the next step
   long gap_limited_steps_ = 0;
   std::size_t removed_ = 0;

@@ -23,6 +23,7 @@
 #include "particles/field_set.hpp"
 #include "particles/kernels.hpp"
 #include "particles/periodic_grid.hpp"
+#include "particles/setup_block.hpp"
 #include "particles/vector_field.hpp"
 
 #include <array>
@@ -158,13 +159,16 @@ public:
   /// only if its distance puts it more than dp/2 behind too (a thin body's end face may have no
   /// boundary point of its own). Called during the pair builds, this one's included, from several
   /// threads at once.
+  /// `block`: the positions are one process's block of the fill (ids from block.first); with
+  /// block.deferred the first advection step's start (pairs, density, B) waits for decompose().
   BasicSphFluid(const Options& options, const std::vector<Vec>& positions,
                 const std::vector<WallPolyline>& walls = {}, const std::vector<Point>& points = {},
-                std::vector<Distance> distances = {}) requires(D == 2);
+                std::vector<Distance> distances = {},
+                const particles::SetupBlock& block = {}) requires(D == 2);
   /// The 3-D fluid: its walls are the wall particles `points` (e.g. box_walls), as above.
   BasicSphFluid(const Options& options, const std::vector<Vec>& positions,
-                const std::vector<Point>& points = {},
-                std::vector<Distance> distances = {}) requires(D == 3);
+                const std::vector<Point>& points = {}, std::vector<Distance> distances = {},
+                const particles::SetupBlock& block = {}) requires(D == 3);
 
   /// Initial velocities (before the first advance), one per particle in the order of the
   /// constructor's positions (particle id; the particles themselves are sorted by cell).
@@ -198,8 +202,10 @@ public:
   void advance_to(double t_end);
 
   /// Steps from now on decomposed over processes through `decomposition` (issue 47), which must
-  /// outlive the fluid; every process built the whole fluid. The first migration partitions the
-  /// particles at their build positions and the advection step's pairs are rebuilt over the
+  /// outlive the fluid. Each process built its block of the fill (SetupBlock::deferred: the
+  /// first advection step starts here, decomposed), or the whole fluid, of which it keeps its
+  /// block (particles/setup_block.hpp). The first migration partitions the particles at their
+  /// build positions and the advection step's pairs are rebuilt over the
   /// owned particles and the ghosts within the kernel's support (every process holds every wall
   /// particle). Tracked wall forces (wall_force) are then this rank's particles' part: the
   /// caller sums them. Not periodic (refused); write_state is then collective (the one-process
@@ -260,7 +266,9 @@ private:
   /// The members' set-up and the fluid particles (walls and the first advection step follow).
   struct Setup {};
   BasicSphFluid(Setup, const Options& options, const std::vector<Vec>& positions,
-                std::vector<Distance> distances);
+                std::vector<Distance> distances, std::size_t first_id);
+  /// The first advection step's start, now or (block.deferred) in decompose().
+  void start(const particles::SetupBlock& block);
   void fill_walls(const std::vector<WallPolyline>& walls) requires(D == 2);
   void append_wall_points(const std::vector<Point>& points);
 

@@ -3,11 +3,11 @@
 // migration to the owner of each region and halos of every registered array (Halo, Migration,
 // RcbPartition). The solver calls it; this class only moves particles and reduces numbers.
 //
-// Start: the first migrate() expects every rank to hold the same full set in the same order
-// (each built the solver from the whole scene): rank r keeps entries r, r + P, r + 2P, ... and
-// the first RCB partition sends them to their regions. Later migrate() calls send particles to
-// the owner of their position under the current cuts, or repartition (from the previous cuts)
-// first when the imbalance max L / mean L exceeds `rebalance`.
+// Start: at the first migrate() each rank holds distinct particles (its block of the fill,
+// particles/setup_block.hpp: a solver built whole on every rank keeps its block first), and the
+// first RCB partition sends them to their regions. Later migrate() calls send particles to the
+// owner of their position under the current cuts, or repartition (from the previous cuts) first
+// when the imbalance max L / mean L exceeds `rebalance`.
 //
 // Load: a rank's L is the sum of its particles' loads 1 + work (particles::Decomposition::
 // migrate; the solver says what a particle costs beyond a bulk one, e.g. the EMPS fluid its wall
@@ -58,6 +58,7 @@ public:
   void fail(const std::string& what) override;
   void agree() override { agreed(comm_.max(0.0, failing())); }
   int rank() const override { return comm_.rank(); }
+  int processes() const override { return comm_.size(); }
   void gather(const std::vector<double>& local, std::vector<double>& all) const override {
     comm_.gather(local, all);
   }
@@ -82,8 +83,7 @@ private:
   Halo<D> halo_;
   std::vector<int> dest_;
   std::vector<float> load_; // each owned particle's, 1 + work (the RCB weights)
-  std::vector<std::uint8_t> keep_;
-  double imbalance_ = 1.0; // the last migration's, before it moved anything
+  double imbalance_ = 1.0;  // the last migration's, before it moved anything
   bool active_ = false; // ghosts appended (the same on every rank: builds and drops are collective)
   long migrations_ = 0, halo_builds_ = 0, emigrants_ = 0;
 };

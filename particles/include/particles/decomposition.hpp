@@ -28,11 +28,12 @@ public:
   virtual ~Decomposition() = default;
 
   /// Removes the ghosts and moves every owned particle to the process whose region holds it
-  /// now (repartitioning when the load has drifted); `x` is the set's position field. `work`, an
-  /// array of the set or null (none): each particle's work beyond a bulk particle's, in units of
-  /// a bulk particle's (>= 0), so that a particle's load is 1 + work: the partition balances the
-  /// processes' sums of the loads, and the drift is judged on them. Returns whether the owned
-  /// particles' order changed.
+  /// now (repartitioning when the load has drifted; the first call partitions: each process
+  /// holds distinct particles then, e.g. its block of the fill, particles/setup_block.hpp); `x` is
+  /// the set's position field. `work`, an array of the set or null (none): each particle's work
+  /// beyond a bulk particle's, in units of a bulk particle's (>= 0), so that a particle's load is 1
+  /// + work: the partition balances the processes' sums of the loads, and the drift is judged on
+  /// them. Returns whether the owned particles' order changed.
   virtual bool migrate(FieldSet& fields, const VectorField<D>& x,
                        const std::vector<double>* work) = 0;
   /// Appends, after the owned particles, copies of every other process's particles that may
@@ -73,8 +74,9 @@ public:
   /// A reduction that only agrees on fail(): throws on every process if any failed.
   virtual void agree() = 0;
 
-  /// This process's number, 0 .. processes - 1 (not collective).
+  /// This process's number, 0 .. processes() - 1, and the count (not collective).
   virtual int rank() const = 0;
+  virtual int processes() const = 0;
   /// Every process's `local`, concatenated in process order, into `all` on process 0 (emptied
   /// on the others): a decomposed checkpoint, written by process 0.
   virtual void gather(const std::vector<double>& local, std::vector<double>& all) const = 0;
@@ -103,6 +105,7 @@ public:
   void fail(const std::string& what) override { throw RunError(what); }
   void agree() override {}
   int rank() const override { return 0; }
+  int processes() const override { return 1; }
   void gather(const std::vector<double>& local, std::vector<double>& all) const override {
     all = local;
   }
