@@ -9,12 +9,20 @@ energy grows after the damping phase.
 Exits 1 when a criterion fails: pressure within 1 % of rho g H, mean speed below 1 % of
 sqrt(g H), and the kinetic energy never above its value at the end of the damping phase (every
 sample of probes.csv). Also printed, not judged: the largest kinetic energy in each window of
---window seconds after the damping phase (its envelope).
+--window seconds after the damping phase (its envelope), and, where DIR holds fields.h5 with
+positions, velocities and pressures, the energy budget after the damping phase
+(energy_budget): whether a rise of the kinetic energy is the column still settling (gravity's
+potential released) or energy the scheme adds.
 """
 import argparse
 import csv
+import json
 import math
+import os
 import sys
+
+import h5py
+import numpy as np
 
 
 def measure(rows, depth=0.5, l0=0.0125, rho=1000.0, g=9.81, damping=2.0, window=1.0):
@@ -39,6 +47,36 @@ def measure(rows, depth=0.5, l0=0.0125, rho=1000.0, g=9.81, damping=2.0, window=
     return {"end": end, "p_bottom": p_bottom, "rho_g_h": rho * g * depth,
             "row": rho * g * (depth - 0.5 * l0), "speed": float(rows[-1]["mean_speed"]),
             "scale": math.sqrt(g * depth), "growth": growth, "envelope": envelope}
+
+
+def energy_budget(directory, damping=2.0, g=9.81):
+    """The fluid's energies in every frame of DIR/fields.h5 from the frame nearest the end of the
+    damping phase on, each as its change since that frame: gravity's potential sum m g y (y up),
+    the kinetic sum m |u|^2 / 2 and the compression sum V p^2 / (2 rho c^2) (the equation of
+    state p = rho c^2 (n - n0) / n0 as an elastic energy), m = rho V, V = l0^D (density, sound
+    speed and l0 from run.json's fluid options). Returns a dict: time, gravity, kinetic (the
+    values, not changes), compression and total (gravity + kinetic + compression, change) as
+    arrays, kinetic_first (at that frame) and rise (the largest increase of total between two
+    frames after it)."""
+    with open(os.path.join(directory, "run.json")) as f:
+        o = json.load(f)["fluid"]["options"]
+    rho, c, l0 = o["density"], o["sound_speed"], o["l0"]
+    rows = []
+    with h5py.File(os.path.join(directory, "fields.h5"), "r") as f:
+        frames = f["frames"]
+        for k in sorted(frames.keys(), key=int):
+            p = frames[k]["particles"]
+            x, u, pr = p["position"][:], p["velocity"][:], p["pressure"][:]
+            v = l0 ** x.shape[1]
+            rows.append((frames[k].attrs["time"], rho * v * g * x[:, 1].sum(),
+                         0.5 * rho * v * (u ** 2).sum(), v * (pr ** 2).sum() / (2 * rho * c * c)))
+    r = np.array(rows)
+    r = r[np.argmin(abs(r[:, 0] - damping)):]
+    total = r[:, 1:].sum(axis=1) - r[0, 1:].sum()
+    rise = max((total[j] - total[:j].min() for j in range(1, len(total))), default=0.0)
+    return {"time": r[:, 0], "gravity": r[:, 1] - r[0, 1], "kinetic": r[:, 2],
+            "compression": r[:, 3] - r[0, 3], "total": total, "kinetic_first": r[0, 2],
+            "rise": max(rise, 0.0)}
 
 
 def main():
@@ -73,6 +111,12 @@ def main():
         near = min(rows, key=lambda r: abs(float(r["time"]) - tt))
         print(f"  t = {float(near['time']):5.2f} s  mean speed {float(near['mean_speed']):.4f} m/s"
               f"  kinetic energy {float(near['kinetic_energy']):.4g} J/m")
+    if os.path.exists(os.path.join(a.dir, "fields.h5")):
+        b = energy_budget(a.dir, a.damping, a.g)
+        print(f"energy budget from t = {b['time'][0]:.2f} s to {b['time'][-1]:.2f} s (fields.h5): "
+              f"gravity {b['gravity'][-1]:+.4g}, kinetic {b['kinetic'][-1] - b['kinetic_first']:+.4g}, "
+              f"compression {b['compression'][-1]:+.4g}, total {b['total'][-1]:+.4g} J "
+              f"(per metre in 2-D); the largest rise of the total between frames {b['rise']:.4g}")
     sys.exit(0 if ok_p and ok_v and ok_e else 1)
 
 

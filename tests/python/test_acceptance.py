@@ -10,10 +10,14 @@ import os
 import sys
 import unittest
 
+import h5py
+import numpy as np
+
 from common import SOURCE, fresh
 
 sys.path.insert(0, os.path.join(SOURCE, "scripts"))
 import acceptance  # noqa: E402
+import hydrostatic_check  # noqa: E402
 
 
 def write_run(name, scene, overrides, columns, rows):
@@ -60,7 +64,38 @@ def plate(name, scale):
     return write_run(name, "hydrostatic_plate", ["time.end=1.5"], ["time", "mid_span"], rows)
 
 
+def settling_column(name):
+    """fields.h5 of two particles (2-D, l0 = 0.1 m, rho 1000, c 10 m/s) at t = 0, 2, 3, 4 s:
+    the top one sinks by 0.01 m and climbs back by 0.005 m after the damping phase."""
+    d = fresh(name)
+    os.makedirs(d)
+    with open(os.path.join(d, "run.json"), "w") as f:
+        json.dump({"fluid": {"options": {"density": 1000.0, "sound_speed": 10.0, "l0": 0.1}}}, f)
+    frames = [(0.0, 0.25, 0.0, 0.0), (2.0, 0.15, 0.0, 100.0), (3.0, 0.14, 0.1, 200.0),
+              (4.0, 0.145, 0.0, 100.0)]
+    with h5py.File(os.path.join(d, "fields.h5"), "w") as f:
+        for k, (t, y, u, p) in enumerate(frames):
+            g = f.create_group(f"frames/{k}")
+            g.attrs["time"] = t
+            g["particles/position"] = np.array([[0.05, 0.05], [0.05, y]])
+            g["particles/velocity"] = np.array([[u, 0.0], [0.0, 0.0]])
+            g["particles/pressure"] = np.array([p, 0.0])
+    return d
+
+
 class AcceptanceTest(unittest.TestCase):
+    def test_the_energy_budget_splits_gravity_kinetic_and_compression(self):
+        b = hydrostatic_check.energy_budget(settling_column("budget"), damping=2.0, g=9.81)
+        # m = rho l0^2 = 10 kg; from t = 2 s: gravity m g dy, kinetic m u^2 / 2,
+        # compression l0^2 (p^2 - p_2^2) / (2 rho c^2).
+        self.assertEqual(list(b["time"]), [2.0, 3.0, 4.0])
+        self.assertAlmostEqual(b["gravity"][1], -0.981, delta=1e-12)
+        self.assertAlmostEqual(b["kinetic"][1], 0.05, delta=1e-12)
+        self.assertAlmostEqual(b["compression"][1], 0.0015, delta=1e-12)
+        self.assertAlmostEqual(b["total"][1], -0.9295, delta=1e-12)
+        self.assertAlmostEqual(b["total"][2], -0.4905, delta=1e-12)
+        self.assertAlmostEqual(b["rise"], 0.439, delta=1e-12)
+
     def test_a_tank_within_one_percent_passes_and_two_percent_off_fails(self):
         status, out = check(tank("tank_ok", 4905.0 * 0.995), "--tier", "standard")
         self.assertEqual(status, 0, out)
