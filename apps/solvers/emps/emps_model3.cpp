@@ -247,10 +247,7 @@ EmpsModel3::EmpsModel3(const Scene& scene, const std::vector<InterfaceMesh3>& in
   const FluidSpec3& f = scene.fluid->as<FluidSpec3>();
   ranks_.refuse(f.periodic);
   validate3(scene, interfaces);
-  std::vector<Vec3> filled = fill_regions3(f);
-  initial_count_ = filled.size();
-  particles::SetupBlock block;
-  const std::vector<Vec3> positions = ranks_.setup(ranks, std::move(filled), block);
+  const auto [positions, block] = ranks_.setup(ranks, fill_regions3(f));
   walls_ = fluid_walls(scene, interfaces, interfaces_);
   tank_motion_ = tank_motion(f, *walls_);
   if (tank_motion_) tank_motion_->move(*walls_, 0.0);
@@ -390,7 +387,7 @@ std::optional<ParticleCount> EmpsModel3::particle_count() const {
 }
 
 void EmpsModel3::report(JsonObject& run) const {
-  JsonObject f = fluid_report(*fluid_, initial_count_, ranks_);
+  JsonObject f = fluid_report(*fluid_, ranks_.filled(), ranks_);
   f.add("wall_triangles", static_cast<long long>(walls_->triangles().size()));
   run.add("fluid", f);
 }

@@ -92,7 +92,6 @@ private:
   std::unique_ptr<TriangleAdapter> adapter_;
   std::unique_ptr<erp::TriangleLocator> locator_; ///< the wall_gap probe's nearest triangles
   mutable erp::TriangleHits hits_;
-  std::size_t initial_count_ = 0;
   std::vector<ProbeSpec> probes_; // the scene's, evaluated by gather_frame on every rank's rows
   mutable std::vector<double> xyz_, v_, flag_;   // output buffers
   GatheredParticles<3> gathered_;                // on rank 0, in id order
