@@ -7,14 +7,13 @@
 namespace fsi::app {
 
 template <int D>
-std::vector<VecD<D>> DecomposedParticles<D>::setup(const Ranks& ranks, std::vector<VecD<D>> filled,
-                                                   particles::SetupBlock& block) {
-  particles_ = filled.size();
-  if (!ranks.decomposed()) return filled;
+FillBlock<D> DecomposedParticles<D>::setup(const Ranks& ranks, std::vector<VecD<D>> filled) {
+  particles_ = filled_ = filled.size();
+  if (!ranks.decomposed()) return {std::move(filled), {}};
   const particles::BlockRange b = particles::block_of(filled.size(), ranks.rank(), ranks.size());
-  block = {b.first, true};
   const auto first = filled.begin() + static_cast<std::ptrdiff_t>(b.first);
-  return std::vector<VecD<D>>(first, first + static_cast<std::ptrdiff_t>(b.size()));
+  return {std::vector<VecD<D>>(first, first + static_cast<std::ptrdiff_t>(b.size())),
+          {b.first, true}};
 }
 
 template <int D>

@@ -21,13 +21,21 @@
 
 namespace fsi::app {
 
+/// The positions of a fill one process builds its fluid with, and `block` saying which.
+template <int D> struct FillBlock {
+  std::vector<VecD<D>> positions;
+  particles::SetupBlock block;
+};
+
 template <int D> class DecomposedParticles {
 public:
-  /// The positions of the fill `filled` this process builds its fluid with, and `block` saying
-  /// which: all on one process; under mpirun (ranks.decomposed()) this rank's block, at most
-  /// ceil(n / P) of them (particles/setup_block.hpp), the fluid's start deferred to decompose().
-  std::vector<VecD<D>> setup(const Ranks& ranks, std::vector<VecD<D>> filled,
-                             particles::SetupBlock& block);
+  /// The part of the fill `filled` this process builds its fluid with: all on one process;
+  /// under mpirun (ranks.decomposed()) this rank's block, at most ceil(n / P) positions
+  /// (particles/setup_block.hpp), the fluid's start deferred to decompose(). Keeps the fill's
+  /// count (filled()).
+  FillBlock<D> setup(const Ranks& ranks, std::vector<VecD<D>> filled);
+  /// The count of the fill of the last setup(): every rank's, also after a restart.
+  std::size_t filled() const { return filled_; }
   /// The model read a checkpoint of `particles` particles, whole on every rank.
   void restored(std::size_t particles) { particles_ = particles; }
   /// A new hook over `ranks` for the fluid of the last setup() or restored(); the caller hands
@@ -109,6 +117,7 @@ private:
   std::vector<int> counts_;         // to_blocks: values sent to each rank
   std::string refusal_;
   std::size_t particles_ = 0; // the fill's count, or the checkpoint's (decompose)
+  std::size_t filled_ = 0;    // the fill's count
   std::size_t k_ = 0;
   std::vector<double> packed_, all_, sorted_; // this rank's rows; every rank's; columns (rank 0)
   std::vector<std::size_t> order_;            // all_'s rows in id order

@@ -3,6 +3,7 @@
 #include "geometry_erp/triangle_locator.hpp"
 #include "geometry_erp/wall_locator.hpp"
 
+#include "fsi/core/fresh_resize.hpp"
 #include "fsi/core/parallel.hpp"
 
 #include <algorithm>
@@ -11,16 +12,16 @@
 namespace fsi::erp {
 
 void ConvexFaces::resize(std::size_t n_points) {
-  pieces.resize(n_points);
+  fresh_resize(pieces, n_points);
   for (std::size_t q = 0; q < max_pieces; ++q) {
-    face[q].resize(n_points);
-    seed[q].resize(n_points);
-    bary[q].resize(n_points);
-    end[q].resize(n_points);
+    fresh_resize(face[q], n_points);
+    fresh_resize(seed[q], n_points);
+    fresh_resize(bary[q], n_points);
+    fresh_resize(end[q], n_points);
   }
   for (std::size_t k = 0; k < max_planes; ++k) {
-    n[k].resize(n_points);
-    s[k].resize(n_points);
+    fresh_resize(n[k], n_points);
+    fresh_resize(s[k], n_points);
   }
 }
 

@@ -2,6 +2,7 @@
 
 #include "nearest_triangle.hpp"
 
+#include "fsi/core/fresh_resize.hpp"
 #include "fsi/core/parallel.hpp"
 
 #include <algorithm>
@@ -11,15 +12,15 @@
 namespace fsi::erp {
 
 void TriangleHits::resize(std::size_t n) {
-  triangle.resize(n);
-  feature.resize(n);
-  bary.resize(n);
-  r.resize(n);
-  x_wall.resize(n);
-  n_wall.resize(n);
-  v_wall.resize(n);
-  a_wall.resize(n);
-  crossed.resize(n);
+  fresh_resize(triangle, n);
+  fresh_resize(feature, n);
+  fresh_resize(bary, n);
+  fresh_resize(r, n);
+  fresh_resize(x_wall, n);
+  fresh_resize(n_wall, n);
+  fresh_resize(v_wall, n);
+  fresh_resize(a_wall, n);
+  fresh_resize(crossed, n);
 }
 
 TriangleLocator::TriangleLocator(const TriangleWallSet& walls, double r_e)

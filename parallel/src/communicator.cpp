@@ -81,11 +81,21 @@ bool Communicator::sum(std::vector<double>& values, bool failed) const {
 std::string Communicator::first_failure(const std::string& message, bool failed) const {
   const int first = reduce(comm_, failed ? rank_ : size_, MPI_INT, MPI_MIN);
   if (first == size_) return {}; // nobody failed: not called so
-  int length = rank_ == first ? static_cast<int>(message.size()) : 0;
-  MPI_Bcast(&length, 1, MPI_INT, first, comm_);
-  std::string text = rank_ == first ? message : std::string(static_cast<std::size_t>(length), ' ');
-  MPI_Bcast(text.data(), length, MPI_CHAR, first, comm_);
-  return text + " (rank " + std::to_string(first) + " of " + std::to_string(size_) + ")";
+  return broadcast_text(message, first) + " (rank " + std::to_string(first) + " of " +
+         std::to_string(size_) + ")";
+}
+
+std::string Communicator::first_message(const std::string& message, bool failed) const {
+  const int first = reduce(comm_, failed ? rank_ : size_, MPI_INT, MPI_MIN);
+  return first == size_ ? std::string() : broadcast_text(message, first);
+}
+
+std::string Communicator::broadcast_text(const std::string& message, int from) const {
+  int length = rank_ == from ? static_cast<int>(message.size()) : 0;
+  MPI_Bcast(&length, 1, MPI_INT, from, comm_);
+  std::string text = rank_ == from ? message : std::string(static_cast<std::size_t>(length), ' ');
+  MPI_Bcast(text.data(), length, MPI_CHAR, from, comm_);
+  return text;
 }
 
 void Communicator::gather(const std::vector<double>& local, std::vector<double>& all) const {

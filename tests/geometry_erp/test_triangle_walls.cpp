@@ -14,6 +14,7 @@
 #include <limits>
 #include <numbers>
 #include <random>
+#include <span>
 #include <vector>
 
 using namespace fsi;
@@ -312,4 +313,63 @@ TEST_CASE("erp: triangle queries follow moving nodes and do not depend on the th
     REQUIRE((moved.v_wall[i] - v).norm() < 1e-14);
   }
   CHECK(near > 1000);
+}
+
+TEST_CASE("erp: hits and convex pieces grown from a smaller query equal a fresh query's",
+          "[triangle_walls]") {
+  // A query writes every entry it reads (fsi::fresh_resize drops the old ones as the records
+  // grow, docs/performance.md "Set-up memory per rank"): the 4000 points queried after 1000 others
+  // into the same records give the records of a first query, bit for bit.
+  TriangleWallSet walls;
+  add_quarter_cylinder(walls);
+  add_cube(walls, false); // a box obstacle: convex edges and corners
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(-0.2, 1.2);
+  std::vector<double> x(4000), y(4000), z(4000);
+  for (std::size_t i = 0; i < x.size(); ++i) x[i] = u(rng), y[i] = u(rng), z[i] = u(rng);
+  const TriangleLocator locator(walls, 0.15);
+  REQUIRE(locator.has_convex_edges());
+  const auto query = [&](std::size_t n, std::array<TriangleHits, 3>& faces, ConvexFaces& convex) {
+    const std::span<const double> xs(x.data(), n), ys(y.data(), n), zs(z.data(), n);
+    locator.query(xs, ys, zs, faces[0]);
+    locator.corner_faces(xs, ys, zs, faces);
+    locator.convex_faces(xs, ys, zs, faces, convex);
+  };
+  std::array<TriangleHits, 3> grown, fresh;
+  ConvexFaces grown_convex, fresh_convex;
+  query(1000, grown, grown_convex);
+  query(x.size(), grown, grown_convex);
+  query(x.size(), fresh, fresh_convex);
+  int faces = 0, pieces = 0;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    INFO("point " << i);
+    for (std::size_t k = 0; k < 3; ++k) {
+      const TriangleHits &g = grown[k], &f = fresh[k];
+      REQUIRE(g.triangle[i] == f.triangle[i]);
+      if (f.triangle[i] < 0) continue;
+      ++faces;
+      REQUIRE(g.feature[i] == f.feature[i]);
+      REQUIRE(g.r[i] == f.r[i]);
+      REQUIRE(g.crossed[i] == f.crossed[i]);
+      REQUIRE(g.bary[i] == f.bary[i]);
+      REQUIRE(g.x_wall[i] == f.x_wall[i]);
+      REQUIRE(g.n_wall[i] == f.n_wall[i]);
+      REQUIRE(g.v_wall[i] == f.v_wall[i]);
+      REQUIRE(g.a_wall[i] == f.a_wall[i]);
+    }
+    REQUIRE(grown_convex.pieces[i] == fresh_convex.pieces[i]);
+    for (std::size_t q = 0; q < fresh_convex.pieces[i]; ++q) {
+      ++pieces;
+      REQUIRE(grown_convex.face[q][i] == fresh_convex.face[q][i]);
+      REQUIRE(grown_convex.seed[q][i] == fresh_convex.seed[q][i]);
+      REQUIRE(grown_convex.bary[q][i] == fresh_convex.bary[q][i]);
+      REQUIRE(grown_convex.end[q][i] == fresh_convex.end[q][i]);
+      for (std::size_t m = fresh_convex.begin(q, i); m < fresh_convex.end[q][i]; ++m) {
+        REQUIRE(grown_convex.n[m][i] == fresh_convex.n[m][i]);
+        REQUIRE(grown_convex.s[m][i] == fresh_convex.s[m][i]);
+      }
+    }
+  }
+  CHECK(faces > 1000);
+  CHECK(pieces > 100);
 }

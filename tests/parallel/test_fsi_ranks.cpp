@@ -288,6 +288,33 @@ TEST_CASE("bad input under mpirun: exit 2, the message once", "[mpi]") {
   CHECK(!fs::exists(out / "fields.h5"));
 }
 
+TEST_CASE("a 3-D fluid behind a wall under mpirun: one process's message, once", "[mpi]") {
+  // Each rank queries the walls for its block of the fill only (validate3); the fill, 12 layers
+  // in z, reaches 0.04 m past the STL tank's face z = 0.2: the first particle behind it in id
+  // order (z = 0.21, layer 10) is in the last rank's block at np = 2 and 3, and its message is
+  // the one-process message, printed once.
+  const fs::path out = scratch() / "fsi_ranks_behind";
+  const std::string args = "run " + std::string(FSI_SOURCE_DIR) +
+                           "/data/scenes/hydrostatic_tank_emps_3d_stl.yaml --out " + out.string() +
+                           " --overwrite --set 'fluid.regions[0].max=[0.2, 0.2, 0.24]'";
+  const std::string message = "fluid.tank_file: " + std::string(FSI_SOURCE_DIR) +
+                              "/data/scenes/../meshes/hydrostatic_tank_emps_3d.stl: the fluid at "
+                              "(0.01, 0.01, 0.21) m lies behind facet 12 (each facet's normal "
+                              "must point into the fluid)";
+  const Outcome one = fsi(0, args);
+  INFO(one.output);
+  CHECK(one.status == 2);
+  CHECK(occurrences(one.output, message) == 1);
+  for (const int np : {2, 3}) {
+    const Outcome o = fsi(np, args, 120); // a rank left out of the verdict would wait forever
+    INFO(o.output);
+    CHECK(o.status == 2);
+    CHECK(occurrences(o.output, message) == 1);
+    CHECK(occurrences(o.output, "(rank ") == 0);
+  }
+  CHECK(!fs::exists(out / "fields.h5"));
+}
+
 namespace {
 
 /// A 2-D EMPS state file's particles (fluid/: x, y, vx, vy) in id order, row after row.

@@ -17,6 +17,9 @@ public:
   bool decomposed() const override { return true; }
   bool all(bool v) const override { return comm_.all(v); }
   Agreed agree(int signal, const std::string& failure) const override;
+  std::string first(const std::string& failure) const override {
+    return comm_.first_message(failure, !failure.empty());
+  }
   void gather(const std::vector<double>& local, std::vector<double>& all) const override {
     comm_.gather(local, all);
   }

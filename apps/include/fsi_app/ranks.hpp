@@ -30,6 +30,9 @@ public:
     std::string failure;
   };
   virtual Agreed agree(int signal, const std::string& failure) const = 0;
+  /// The lowest rank's non-empty `failure`, as given, on every rank; empty if every rank passed
+  /// an empty one (a check each rank makes on its block of the input, reported as one process).
+  virtual std::string first(const std::string& failure) const = 0;
   /// A new exchange hook over these ranks for a particle fluid of dimension D (2 or 3) holding
   /// `particles`; InputError if some rank would get none (RCB gives every rank a particle).
   template <int D>
@@ -94,6 +97,7 @@ public:
   bool decomposed() const override { return false; }
   bool all(bool v) const override { return v; }
   Agreed agree(int signal, const std::string& failure) const override { return {signal, failure}; }
+  std::string first(const std::string& failure) const override { return failure; }
   void gather(const std::vector<double>& local, std::vector<double>& all) const override {
     all.assign(local.begin(), local.end());
   }

@@ -38,10 +38,8 @@ EmpsModel::EmpsModel(const Scene& scene, const std::vector<InterfaceMesh>& inter
     interface_walls_.emplace_back(*walls_, mesh, group++);
   }
   const FluidSpec& f = scene.fluid->as<FluidSpec>();
-  std::vector<Vec2> filled = fill_regions(scene, f.area.regions, f.options.l0, solid);
-  initial_count_ = filled.size();
-  particles::SetupBlock block;
-  const std::vector<Vec2> positions = ranks_.setup(ranks, std::move(filled), block);
+  const auto [positions, block] =
+      ranks_.setup(ranks, fill_regions(scene, f.area.regions, f.options.l0, solid));
   fluid_ = std::make_unique<emps::EmpsFluid>(fluid_options(scene), positions, *walls_, block);
   adapter_ = std::make_unique<FluidAdapter>(*fluid_, *walls_, interface_walls_);
 }
@@ -199,7 +197,7 @@ std::optional<ParticleCount> EmpsModel::particle_count() const {
 }
 
 void EmpsModel::report(JsonObject& run) const {
-  run.add("fluid", fluid_report(*fluid_, initial_count_, ranks_));
+  run.add("fluid", fluid_report(*fluid_, ranks_.filled(), ranks_));
 }
 
 } // namespace fsi::app::emps_plugin

@@ -78,7 +78,6 @@ private:
   DecomposedParticles<2> ranks_; // the hook, before the fluid that uses it
   std::unique_ptr<emps::EmpsFluid> fluid_;
   std::unique_ptr<FluidAdapter> adapter_;
-  std::size_t initial_count_ = 0;
   std::vector<ProbeSpec> probes_; // the scene's, evaluated by gather_frame on every rank's rows
   std::vector<std::string> wall_names_; ///< by wall group: the scene's walls, then the interfaces
   mutable std::vector<double> xy_, v_, flag_; // output buffers

@@ -29,46 +29,6 @@ namespace {
 // Interface corners within this many l0 of a tank triangle's plane lie in it (tank_cover.hpp).
 constexpr double kCoplanar = 1e-6;
 
-/// fluid.tank_motion over every node of `walls` (a moving tank has no structures: validate3).
-std::optional<erp::RigidTriangles3> tank_motion(const FluidSpec3& f,
-                                                const erp::TriangleWallSet& walls) {
-  if (!f.tank_motion) return std::nullopt;
-  return erp::RigidTriangles3{make_motion3(*f.tank_motion), 0, walls.nodes().x};
-}
-
-/// Refuses an open edge of the tank_file surface below the top of the fill `x` (against gravity):
-/// a hole the water can leave by. A tank open above its water passes.
-void check_open_edges(const Scene& scene, const FluidSpec3& f, const std::vector<Vec3>& x) {
-  if (!f.tank_surface || f.tank_surface->open_edges == 0 || scene.gravity3.norm() == 0.0) return;
-  const Vec3 up = -scene.gravity3.normalized();
-  double top = -std::numeric_limits<double>::infinity();
-  for (const Vec3& xi : x) top = std::max(top, up.dot(xi));
-  erp::TriangleWallSet surface;
-  surface.add_triangles(f.tank_surface->points, f.tank_surface->triangles, 0);
-  const auto& X = surface.nodes().x;
-  for (std::size_t t = 0; t < surface.triangles().size(); ++t)
-    for (std::size_t k = 0; k < 3; ++k) {
-      const auto edge = static_cast<erp::TriangleFeature>(3 + k); // corners k, k + 1
-      const Vec3& a = X[static_cast<std::size_t>(surface.triangles().node[t][k])];
-      const Vec3& b = X[static_cast<std::size_t>(surface.triangles().node[t][(k + 1) % 3])];
-      if (!surface.open(static_cast<int>(t), edge) || std::min(up.dot(a), up.dot(b)) >= top)
-        continue;
-      const Vec3 m = 0.5 * (a + b);
-      std::ostringstream at;
-      at << '(' << significant(m.x(), 6) << ", " << significant(m.y(), 6) << ", "
-         << significant(m.z(), 6) << ") m";
-      fail_at(scene, f.tank_line, "fluid.tank_file",
-              f.tank_path + ": facet " + std::to_string(t + 1) + " has an open edge at " +
-                  at.str() + " below the water's top (a hole the water can leave by; only a " +
-                  "tank open above its water is allowed)");
-    }
-}
-
-/// The line of the fluid's first region (a box, else region_file) for messages.
-int regions_line(const FluidSpec3& f) {
-  return f.regions.empty() ? f.region_line : f.regions.front().line;
-}
-
 /// The volume a closed surface encloses (either orientation), m^3: |sum a . (b x c)| / 6.
 double enclosed_volume(const erp::StlSurface& surface) {
   const auto& X = surface.points;
@@ -80,6 +40,12 @@ double enclosed_volume(const erp::StlSurface& surface) {
 }
 
 } // namespace
+
+std::optional<erp::RigidTriangles3> tank_motion(const FluidSpec3& f,
+                                                const erp::TriangleWallSet& walls) {
+  if (!f.tank_motion) return std::nullopt;
+  return erp::RigidTriangles3{make_motion3(*f.tank_motion), 0, walls.nodes().x};
+}
 
 emps::FluidOptions3 fluid_options3(const Scene& scene) {
   const FluidSpec3& f = scene.fluid->as<FluidSpec3>();
@@ -197,60 +163,13 @@ Footprint footprint3(const Scene& scene) {
   return e;
 }
 
-void validate3(const Scene& scene, const std::vector<InterfaceMesh3>& interfaces) {
-  const FluidSpec3& f = scene.fluid->as<FluidSpec3>();
-  const std::vector<Vec3> x = fill_regions3(f);
-  if (x.empty())
-    fail_at(scene, regions_line(f), f.regions.empty() ? "fluid.region_file" : "fluid.regions",
-            "no particle fits");
-  if (f.periodic_z && !scene.structures.empty()) throw InputError(f.periodic_structures);
-  if (f.tank_motion) {
-    if (!scene.structures.empty())
-      fail_at(scene, f.tank_motion_line, "fluid.tank_motion", "not available with structures yet");
-    if (!f.domain) // the box around the tank at rest would not hold it as it moves
-      fail_at(scene, f.tank_motion_line, "fluid.tank_motion",
-              "needs fluid.domain, a box that holds the tank as it moves");
-    check_motion_table(scene, *f.tank_motion, f.tank_motion_line, "fluid.tank_motion.table");
-  }
-  check_open_edges(scene, f, x);
-  std::vector<erp::InterfaceTriangles> triangles;
-  const std::unique_ptr<erp::TriangleWallSet> walls = fluid_walls(scene, interfaces, triangles);
-  WallPointProbes(scene, *walls, f.options.r_e(), f.tank_motion || !interfaces.empty());
-  if (walls->triangles().size() == 0) return;
-  if (const auto motion = tank_motion(f, *walls)) motion->move(*walls, 0.0); // the fill at t = 0
-  const erp::TriangleLocator locator(*walls, f.options.r_e());
-  erp::TriangleHits hits;
-  locator.query(x, hits);
-  for (std::size_t i = 0; i < x.size(); ++i)
-    if (hits.crossed[i]) {
-      std::ostringstream at;
-      at << '(' << significant(x[i].x(), 6) << ", " << significant(x[i].y(), 6) << ", "
-         << significant(x[i].z(), 6) << ") m";
-      const int group = walls->triangles().group[static_cast<std::size_t>(hits.triangle[i])];
-      if (group > 0)
-        fail_at(scene, regions_line(f), "fluid.regions",
-                "the fluid at " + at.str() + " lies behind the interface of structure '" +
-                    scene.structures[static_cast<std::size_t>(group - 1)].name + "'");
-      if (f.tank_surface)
-        fail_at(scene, f.tank_line, "fluid.tank_file",
-                f.tank_path + ": the fluid at " + at.str() + " lies behind facet " +
-                    std::to_string(hits.triangle[i] + 1) +
-                    " (each facet's normal must point into the fluid)");
-      fail_at(scene, regions_line(f), "fluid.regions",
-              "the fluid at " + at.str() + " lies behind a wall of the tank");
-    }
-}
-
 EmpsModel3::EmpsModel3(const Scene& scene, const std::vector<InterfaceMesh3>& interfaces,
                        const Ranks& ranks)
     : probes_(scene.output.probes) {
   const FluidSpec3& f = scene.fluid->as<FluidSpec3>();
   ranks_.refuse(f.periodic);
-  validate3(scene, interfaces);
-  std::vector<Vec3> filled = fill_regions3(f);
-  initial_count_ = filled.size();
-  particles::SetupBlock block;
-  const std::vector<Vec3> positions = ranks_.setup(ranks, std::move(filled), block);
+  validate3(scene, interfaces, ranks);
+  const auto [positions, block] = ranks_.setup(ranks, fill_regions3(f));
   walls_ = fluid_walls(scene, interfaces, interfaces_);
   tank_motion_ = tank_motion(f, *walls_);
   if (tank_motion_) tank_motion_->move(*walls_, 0.0);
@@ -390,7 +309,7 @@ std::optional<ParticleCount> EmpsModel3::particle_count() const {
 }
 
 void EmpsModel3::report(JsonObject& run) const {
-  JsonObject f = fluid_report(*fluid_, initial_count_, ranks_);
+  JsonObject f = fluid_report(*fluid_, ranks_.filled(), ranks_);
   f.add("wall_triangles", static_cast<long long>(walls_->triangles().size()));
   run.add("fluid", f);
 }

@@ -31,8 +31,12 @@ Footprint footprint3(const Scene& scene);
 /// The regions hold particles, each on the fluid side of its nearest wall triangle (an STL
 /// surface facing away from the fluid is refused naming its file; a moving tank at t = 0; its
 /// motion's table covers the run and there are no structures), the interfaces' meshes make
-/// triangles and cover tank triangles wholly or not at all; InputError naming the key.
-void validate3(const Scene& scene, const std::vector<InterfaceMesh3>& interfaces = {});
+/// triangles and cover tank triangles wholly or not at all; InputError naming the key. Under
+/// mpirun (`ranks` decomposed) each rank queries the walls for its block of the fill only, and
+/// every rank throws the message of the first particle behind a wall in id order, as one
+/// process does (collective).
+void validate3(const Scene& scene, const std::vector<InterfaceMesh3>& interfaces = {},
+               const Ranks& ranks = OneProcess());
 
 class EmpsModel3 final : public FluidPart {
 public:
@@ -92,7 +96,6 @@ private:
   std::unique_ptr<TriangleAdapter> adapter_;
   std::unique_ptr<erp::TriangleLocator> locator_; ///< the wall_gap probe's nearest triangles
   mutable erp::TriangleHits hits_;
-  std::size_t initial_count_ = 0;
   std::vector<ProbeSpec> probes_; // the scene's, evaluated by gather_frame on every rank's rows
   mutable std::vector<double> xyz_, v_, flag_;   // output buffers
   GatheredParticles<3> gathered_;                // on rank 0, in id order
@@ -102,6 +105,9 @@ private:
 
 /// The fluid particles of a 3-D scene's regions (EmpsModel3's fill).
 std::vector<Vec3> fill_regions3(const FluidSpec3& f);
+/// fluid.tank_motion over every node of `walls` (a moving tank has no structures: validate3).
+std::optional<erp::RigidTriangles3> tank_motion(const FluidSpec3& f,
+                                                const erp::TriangleWallSet& walls);
 /// The fluid's walls: the tank's triangles (the box's 12, or the STL surface's) less those the
 /// interfaces cover wholly (group 0), then each interface's triangles (group 1 + j) into
 /// `triangles`; InputError naming the scene's key (a partial cover, a bad interface mesh).

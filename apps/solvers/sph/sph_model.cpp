@@ -73,10 +73,8 @@ SphModel::SphModel(const Scene& scene, const std::vector<InterfaceMesh>& interfa
   } catch (const InputError& e) {
     fail_at(scene, scene.fluid->line, "fluid", e.what());
   }
-  std::vector<Vec2> filled = fill_regions(scene, f.area.regions, f.options.dp, solid);
-  initial_count_ = filled.size();
-  particles::SetupBlock block;
-  const std::vector<Vec2> positions = ranks_.setup(ranks, std::move(filled), block);
+  const auto [positions, block] =
+      ranks_.setup(ranks, fill_regions(scene, f.area.regions, f.options.dp, solid));
   try {
     fluid_ = std::make_unique<sph::SphFluid>(sph_options(scene), positions, walls, points,
                                              std::move(distances), block);
@@ -165,7 +163,7 @@ std::vector<std::pair<std::string, Vec2>> SphModel::force_parts() const {
 }
 
 void SphModel::report(JsonObject& run) const {
-  run.add("fluid", fluid_report(ranks_, *fluid_, initial_count_, first_point_));
+  run.add("fluid", fluid_report(ranks_, *fluid_, ranks_.filled(), first_point_));
 }
 
 bool SphModel::decompose(const Ranks& ranks) {

@@ -73,7 +73,7 @@ private:
   std::vector<ProbeSpec> probes_; // the scene's, evaluated by gather_frame when decomposed
   std::unique_ptr<sph::SphFluid> fluid_;
   std::unique_ptr<BoundaryAdapter<2>> adapter_;
-  std::size_t initial_count_ = 0, first_point_ = 0;
+  std::size_t first_point_ = 0;
   bool tracked_ = false, interface_acceleration_ = false;
   Vec2 wall_force_ = Vec2::Zero();     // uncoupled: the walls' mean force over the last advance
   mutable std::vector<double> xy_, v_; // output buffers

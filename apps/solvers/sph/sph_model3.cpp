@@ -145,10 +145,7 @@ SphModel3::SphModel3(const Scene& scene, const std::vector<InterfaceMesh3>& inte
     : boundaries_(boundaries_of(scene, interfaces)), probes_(scene.output.probes) {
   const SphSpec3& f = scene.fluid->as<SphSpec3>();
   ranks_.refuse(f.periodic);
-  std::vector<Vec3> filled = checked_fluid(scene, boundaries_);
-  initial_count_ = filled.size();
-  particles::SetupBlock block;
-  const std::vector<Vec3> positions = ranks_.setup(ranks, std::move(filled), block);
+  const auto [positions, block] = ranks_.setup(ranks, checked_fluid(scene, boundaries_));
   // The interfaces' points (group 1 + j) after the tank's dummies (group 0); the guard's exact
   // surface of interface j: its flat triangles where its points are now (interface_x_).
   std::vector<sph::WallPoint3> points;
@@ -218,7 +215,7 @@ std::optional<double> SphModel3::evaluate(const ProbeSpec& probe) const {
 }
 
 void SphModel3::report(JsonObject& run) const {
-  run.add("fluid", fluid_report(ranks_, *fluid_, initial_count_, first_point_));
+  run.add("fluid", fluid_report(ranks_, *fluid_, ranks_.filled(), first_point_));
 }
 
 bool SphModel3::decompose(const Ranks& ranks) {

@@ -79,7 +79,7 @@ private:
   std::vector<ProbeSpec> probes_; // the scene's, evaluated by gather_frame when decomposed
   std::unique_ptr<sph::SphFluid3> fluid_;
   std::unique_ptr<BoundaryAdapter<3>> adapter_;
-  std::size_t initial_count_ = 0, first_point_ = 0;
+  std::size_t first_point_ = 0;
   mutable std::vector<double> xyz_, v_; // output buffers
 };
 

@@ -61,6 +61,9 @@ public:
   /// After a flagged reduction reported a failure (collective, on that path only): the message
   /// of the lowest failing rank, followed by " (rank r of P)".
   std::string first_failure(const std::string& message, bool failed) const;
+  /// Collective, on every path: the message of the lowest rank passing `failed`, as given (every
+  /// rank the same text), empty if none did.
+  std::string first_message(const std::string& message, bool failed) const;
   /// Every rank's `local`, concatenated in rank order, into `all` on rank 0 (emptied on the
   /// others): frames and checkpoints gathered for the files rank 0 writes.
   void gather(const std::vector<double>& local, std::vector<double>& all) const;
@@ -70,6 +73,9 @@ public:
                 std::vector<double>& received) const;
 
 private:
+  /// Rank `from`'s message on every rank.
+  std::string broadcast_text(const std::string& message, int from) const;
+
   MPI_Comm comm_;
   int rank_ = 0, size_ = 1;
 };
