@@ -1,9 +1,9 @@
 #pragma once
-// Query records (wall hits, convex pieces) are rewritten by each query wherever they are read;
-// a point far from every wall leaves most of its entries unwritten, so their pages are never
-// touched. Grown with std::vector::resize, the old entries would be copied into the new block,
-// making every page of it resident (about 0.4 GiB a rank on the 1M-particle 3-D case at the first
-// query after the ghosts arrive: docs/performance.md "Set-up memory per rank").
+// Query records (wall hits, convex pieces) are rewritten by each query wherever they are read,
+// so their old entries need not survive a growth. Grown past its capacity by std::vector::resize,
+// a record keeps its old block alive while copying it into the new one: on the 1M-particle 3-D
+// case the first query after the ghosts arrive held about 0.4 GiB a rank more at np = 2 (the
+// mechanism inferred, the net effect measured: docs/performance.md "Set-up memory per rank").
 #include <cstddef>
 #include <vector>
 
