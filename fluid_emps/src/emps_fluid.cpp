@@ -377,9 +377,16 @@ template <int D> double BasicEmpsFluid<D>::wall_gap_dt() const {
 
 template <int D> double BasicEmpsFluid<D>::stable_dt(double courant) const {
   double dt = courant * options_.l0 / (options_.sound_speed + max_speed());
-  const double nu =
-      options_.viscosity + options_.pair_viscosity_alpha() * options_.sound_speed * options_.l0;
-  if (nu > 0) dt = std::min(dt, 0.25 * options_.l0 * options_.l0 / nu);
+  // v* = v + dt a_visc (eq. 13) is forward Euler: stable while dt times the viscous terms'
+  // largest rate is at most 2. On the lattice that rate is 2d/(lambda0 n0) times nu P_lap for
+  // eq. 11 (and eq. 24: a no-slip mirror continues the lattice's modes across a flat wall) plus
+  // alpha c l0 P_closing for the closing-pair viscosities (their pairs across a wall continue the
+  // lattice as the ghosts' velocity R v_j does), every closing pair taken at the largest alpha.
+  const double rate =
+      2.0 * D / (lambda0_ * n0_) *
+      (options_.viscosity * laplacian_peak_ +
+       options_.pair_viscosity_alpha() * options_.sound_speed * options_.l0 * closing_peak_);
+  if (rate > 0) dt = std::min(dt, 2.0 / rate);
   if (options_.wall.gap_courant > 0) dt = std::min(dt, gap_dt_);
   return dt;
 }

@@ -1,16 +1,11 @@
 #include "geometry_erp/wall_weight.hpp"
 
+#include "lattice_points.hpp"
+
 #include <cmath>
 #include <vector>
 
 namespace fsi::erp {
-
-namespace {
-/// Lattice index bound that covers every point within r_e.
-int reach(double l0, double r_e) {
-  return static_cast<int>(std::ceil(r_e / l0)) + 1;
-}
-} // namespace
 
 template <int D> double wall_weight_sum(double r, double l0, double r_e, const WeightFunction& w) {
   const int n = reach(l0, r_e);
@@ -93,33 +88,15 @@ Vec2 corner_gradient_sum(double a, double b, double l0, double r_e, const Weight
   return g;
 }
 
-namespace {
-/// f(r) for every point j != 0 of the D-dimensional cubic lattice of spacing l0 within the cube of
-/// half-width reach(l0, r_e), r = |x_j| (x fastest, then y, then z).
-template <int D, class F> void for_each_lattice_point(double l0, double r_e, F&& f) {
-  const int n = reach(l0, r_e);
-  if constexpr (D == 2) {
-    for (int j = -n; j <= n; ++j)
-      for (int i = -n; i <= n; ++i)
-        if (i != 0 || j != 0) f(std::hypot(i * l0, j * l0));
-  } else {
-    for (int k = -n; k <= n; ++k)
-      for (int j = -n; j <= n; ++j)
-        for (int i = -n; i <= n; ++i)
-          if (i != 0 || j != 0 || k != 0) f(std::hypot(i * l0, j * l0, k * l0));
-  }
-}
-} // namespace
-
 template <int D> double lattice_n0(double l0, double r_e, const WeightFunction& w) {
   double n0 = 0.0;
-  for_each_lattice_point<D>(l0, r_e, [&](double r) { n0 += w(r); }); // eq. 9
+  for_each_lattice_point<D>(l0, r_e, [&](const auto&, double r) { n0 += w(r); }); // eq. 9
   return n0;
 }
 
 template <int D> double lattice_lambda0(double l0, double r_e, const WeightFunction& w) {
   double sum_r2w = 0.0;
-  for_each_lattice_point<D>(l0, r_e, [&](double r) { sum_r2w += r * r * w(r); });
+  for_each_lattice_point<D>(l0, r_e, [&](const auto&, double r) { sum_r2w += r * r * w(r); });
   return sum_r2w / lattice_n0<D>(l0, r_e, w); // eq. 12
 }
 

@@ -21,6 +21,7 @@
 #include "fluid_emps/particles.hpp"
 #include "fluid_emps/space_wall_terms.hpp"
 #include "fluid_emps/wall_terms.hpp"
+#include "geometry_erp/lattice_spectrum.hpp"
 #include "geometry_erp/triangle_locator.hpp"
 #include "geometry_erp/triangle_wall_set.hpp"
 #include "geometry_erp/wall_locator.hpp"
@@ -186,8 +187,10 @@ public:
   /// wall or a neighbour-row overflow, naming the particle, the step and the time.
   void advance(double t, double dt);
 
-  /// Largest stable step for a Courant number: C l0 / (c + |v|max), the viscous limit and the
-  /// wall-gap limit of the last step (FluidOptions::wall_gap_courant).
+  /// Largest stable step for a Courant number: C l0 / (c + |v|max), the viscous limit of the
+  /// step's forward-Euler viscous update on the rest lattice, 2 / (2d/(lambda0 n0) (nu P_lap +
+  /// alpha c l0 P_closing)) (alpha: pair_viscosity_alpha; P: erp::lattice_laplacian_peak,
+  /// erp::lattice_closing_peak), and the wall-gap limit of the last step (wall_gap_courant).
   double stable_dt(double courant) const;
   /// Steps whose dt the wall-gap limit set.
   long gap_limited_steps() const { return gap_limited_steps_; }
@@ -286,6 +289,11 @@ private:
   double r_e_ = options_.r_e();
   double n0_ = erp::lattice_n0<D>(options_.l0, r_e_, particles::MpsWeight(r_e_));
   double lambda0_ = erp::lattice_lambda0<D>(options_.l0, r_e_, particles::MpsWeight(r_e_));
+  /// The viscous sums' peak rates on the lattice (stable_dt).
+  double laplacian_peak_ =
+      erp::lattice_laplacian_peak<D>(options_.l0, r_e_, particles::MpsWeight(r_e_));
+  double closing_peak_ =
+      erp::lattice_closing_peak<D>(options_.l0, r_e_, particles::MpsWeight(r_e_));
   particles::MpsWeight w_e_{r_e_}; ///< w(r) of eq. 8 at r_e
   double re2_ = r_e_ * r_e_;       ///< r_e^2 (the pair loops test r^2 < r_e^2)
   ParticleSet particles_;

@@ -4,6 +4,8 @@
 #include "fsi/core/options.hpp"
 #include "fsi/core/types.hpp"
 
+#include <algorithm>
+
 namespace fsi::emps {
 
 enum class WallCondition { no_slip, slip };
@@ -116,11 +118,13 @@ template <int D> struct BasicFluidOptions {
     else
       return l0 * l0 * l0;
   }
-  /// alpha of every closing-pair viscosity alpha c l0 the step applies (artificial, approach,
-  /// near-wall contact): the viscous time-step limit counts their sum.
+  /// The largest alpha of a closing pair's viscosity alpha c l0: a fluid pair's artificial one
+  /// (with the near-wall contact's added on pairs near a wall), a pair across a wall's approach
+  /// one. The viscous time-step limit takes every closing pair at it (stable_dt).
   double pair_viscosity_alpha() const {
-    return artificial_viscosity + wall.mirror.approach_viscosity +
-           (wall.contact.model == WallContact::viscous ? wall.contact.viscosity : 0.0);
+    const double contact =
+        wall.contact.model == WallContact::viscous ? wall.contact.viscosity : 0.0;
+    return std::max(artificial_viscosity + contact, wall.mirror.approach_viscosity);
   }
   /// Whether the step runs its viscous loop (eqs. 11, 24, and the closing-pair viscosities).
   bool viscous_loop() const { return viscosity > 0 || pair_viscosity_alpha() > 0; }
