@@ -13,6 +13,11 @@ the experiment's points and of the run's samples in that range) within --speed-t
 The unshifted difference is printed beside. With two or more DIRs (two resolutions) each is
 checked, and the largest relative difference of Z between the first two at the points' T must
 be <= --agreement (3 %). Exits 1 when a criterion fails.
+
+Also printed, not judged, where DIR holds fields.h5 with velocities: the tip speed, the mean
+x-velocity of the particles within 0.2 a behind the front over sqrt(2 g a), averaged over the
+frames with 2 <= Z <= 3.5 (tip_speed): the front's speed free of which particle leads it and of
+the ramp the straight-line fit averages (docs/fluid_emps.md, "The front's speed split by term").
 """
 import argparse
 import csv
@@ -20,6 +25,7 @@ import math
 import os
 import sys
 
+import h5py
 import matplotlib
 
 matplotlib.use("Agg")
@@ -105,6 +111,29 @@ def measure(d, probe="front", release=0.0, a=0.1, g=9.81):
             "speed_diff": (speed_sim - speed_exp) / speed_exp, "shifted": shifted}
 
 
+def tip_speed(d, probe="front", release=0.0, a=0.1, g=9.81):
+    """The mean over DIR/fields.h5's frames with 2 <= Z <= 3.5 (Z from probes.csv at the frame's
+    time) of the mean x-velocity of the particles with x > x_front - 0.2 a, over sqrt(2 g a);
+    None without fields.h5 or without such a frame."""
+    path = os.path.join(d, "fields.h5")
+    if not os.path.exists(path):
+        return None
+    table = rows(os.path.join(d, "probes.csv"))
+    col = table[0].index(probe)
+    front = {float(r[0]): float(r[col]) for r in table[1:]}
+    speeds = []
+    with h5py.File(path, "r") as f:
+        for frame in f["frames"].values():
+            t = float(frame.attrs["time"])
+            x_front = min(front.items(), key=lambda item: abs(item[0] - t))[1]
+            if t < release or not 2.0 <= x_front / a <= 3.5:
+                continue
+            x, v = frame["particles/position"][:, 0], frame["particles/velocity"][:, 0]
+            tip = v[x > x_front - 0.2 * a]
+            speeds.append(tip.mean() / math.sqrt(2.0 * g * a))
+    return sum(speeds) / len(speeds) if speeds else None
+
+
 def agreement(first, second):
     """Largest relative difference of Z between two runs at the experiment's judged T (relative to
     the first), from measure()'s "shifted" lists."""
@@ -154,6 +183,10 @@ def main():
         print(f"front speed dZ/dT for 2 <= Z <= 3.5: {m['speed_sim']:.3f} against "
               f"{m['speed_exp']:.3f} ({100 * m['speed_diff']:+.1f} %, tolerance "
               f"{100 * args.speed_tolerance:.0f} %)")
+        tip = tip_speed(d, args.probe, args.release, args.a, args.g)
+        if tip is not None:
+            print(f"tip speed (particles within 0.2 a of the front, 2 <= Z <= 3.5): {tip:.3f} "
+                  f"(reported, not judged)")
         ok = ok and m["worst"] <= args.tolerance and abs(m["speed_diff"]) <= args.speed_tolerance
         shifted_runs.append(m["shifted"])
         out = os.path.join(d, "front.png")

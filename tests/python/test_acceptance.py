@@ -17,6 +17,7 @@ from common import SOURCE, fresh
 
 sys.path.insert(0, os.path.join(SOURCE, "scripts"))
 import acceptance  # noqa: E402
+import dam_break_front  # noqa: E402
 import hydrostatic_check  # noqa: E402
 
 
@@ -83,7 +84,33 @@ def settling_column(name):
     return d
 
 
+def surge(name):
+    """A dam break's probes.csv (front x) and fields.h5 at t = 0, 0.1, 0.2, 0.3 s (a = 0.1 m):
+    the front at Z = 1.5, 2.5, 3.0 and 4.0; three particles a frame, the two nearest the front
+    within 0.2 a of it."""
+    d = fresh(name)
+    os.makedirs(d)
+    frames = [(0.0, 0.15, [0.10, 0.14, 0.15], [100.0, 100.0, 100.0]),
+              (0.1, 0.25, [0.10, 0.24, 0.25], [5.0, 1.0, 2.0]),
+              (0.2, 0.30, [0.20, 0.29, 0.30], [5.0, 2.0, 4.0]),
+              (0.3, 0.40, [0.30, 0.39, 0.40], [100.0, 100.0, 100.0])]
+    with open(os.path.join(d, "probes.csv"), "w") as f:
+        f.write("time,front\n" + "".join(f"{t!r},{x!r}\n" for t, x, _, _ in frames))
+    with h5py.File(os.path.join(d, "fields.h5"), "w") as f:
+        for k, (t, _, x, u) in enumerate(frames):
+            g = f.create_group(f"frames/{k}")
+            g.attrs["time"] = t
+            g["particles/position"] = np.array([[xi, 0.0] for xi in x])
+            g["particles/velocity"] = np.array([[ui, 0.0] for ui in u])
+    return d
+
+
 class AcceptanceTest(unittest.TestCase):
+    def test_the_tip_speed_averages_the_particles_behind_the_front_inside_the_window(self):
+        # frames at Z = 2.5 and 3.0 only; the particles within 0.02 m of the front: 1.5 and 3.0
+        tip = dam_break_front.tip_speed(surge("tip"), a=0.1, g=9.81)
+        self.assertAlmostEqual(tip, 2.25 / math.sqrt(2 * 9.81 * 0.1), delta=1e-12)
+
     def test_the_energy_budget_splits_gravity_kinetic_and_compression(self):
         b = hydrostatic_check.energy_budget(settling_column("budget"), damping=2.0, g=9.81)
         # m = rho l0^2 = 10 kg; from t = 2 s: gravity m g dy, kinetic m u^2 / 2,
