@@ -1,8 +1,11 @@
 """Surge front of a dam-break run against Martin & Moyce (1952): Z = x/a against T = t sqrt(2g/a).
 
 usage: scripts/dam_break_front DIR [DIR2 ...] [--a 0.1] [--g 9.81] [--probe front] [--release 0]
+                               [--compare PNG [--label NAME ...]]
 Prints, at each experimental T with Z <= 3.5, the simulated Z and the relative difference, and
-the largest difference; draws DIR/front.png. --release: the scene time at which the column is
+the largest difference; draws DIR/front.png. --compare: every DIR's Z(T) and dZ/dT (central
+differences over +-2 samples) in one figure with the experiment, labelled by --label (one per DIR,
+in order) or the directory names. --release: the scene time at which the column is
 let go (a scene that settles it behind a gate first); T = 0 there.
 
 Acceptance (data/ref/dam_break_rigid/acceptance.yaml): the experiment's release was not instantaneous, so its clock is shifted
@@ -14,7 +17,8 @@ The unshifted difference is printed beside. With two or more DIRs (two resolutio
 checked, and the largest relative difference of Z between the first two at the points' T must
 be <= --agreement (3 %). Exits 1 when a criterion fails.
 
-Also printed, not judged, where DIR holds fields.h5 with velocities: the tip speed, the mean
+Also printed, not judged: Z at T = 2.5, the late speed (dZ/dT fitted over 3 <= T <= 4), and where
+DIR holds fields.h5 with velocities: the tip speed, the mean
 x-velocity of the particles within 0.2 a behind the front over sqrt(2 g a), averaged over the
 frames with 2 <= Z <= 3.5 (tip_speed): the front's speed free of which particle leads it and of
 the ramp the straight-line fit averages (docs/fluid_emps.md, "The front's speed split by term").
@@ -106,9 +110,12 @@ def measure(d, probe="front", release=0.0, a=0.1, g=9.81):
         table.append((t, z, z_raw, d_raw, z_sh, d_sh, inside))
     sim_pts = [(t, z) for t, z in zip(T, Z) if 2.0 <= z <= 3.5]
     speed_sim = slope([t for t, _ in sim_pts], [z for _, z in sim_pts])
+    late = [(t, z) for t, z in zip(T, Z) if 3.0 <= t <= 4.0]
     return {"T": T, "Z": Z, "ref": ref, "shift": shift, "table": table, "worst": worst,
             "worst_raw": worst_raw, "speed_sim": speed_sim, "speed_exp": speed_exp,
-            "speed_diff": (speed_sim - speed_exp) / speed_exp, "shifted": shifted}
+            "speed_diff": (speed_sim - speed_exp) / speed_exp, "shifted": shifted,
+            "z_25": at(T, Z, 2.5),
+            "late": slope([t for t, _ in late], [z for _, z in late]) if len(late) > 1 else None}
 
 
 def tip_speed(d, probe="front", release=0.0, a=0.1, g=9.81):
@@ -158,6 +165,35 @@ def plot(m, out):
     plt.close()
 
 
+def compare(runs, labels, out):
+    """Every run's Z(T) (left) and dZ/dT by central differences over +-2 samples (right), with the
+    experiment's points and the straight line's speed over 2 <= Z <= 3.5, into out."""
+    _, ax = plt.subplots(1, 2, figsize=(11, 4.2))
+    for m, label in zip(runs, labels):
+        T, Z = m["T"], m["Z"]
+        ax[0].plot(T, Z, label=label, lw=1)
+        ax[1].plot(T[2:-2], [(Z[k + 2] - Z[k - 2]) / (T[k + 2] - T[k - 2])
+                             for k in range(2, len(T) - 2)], label=label, lw=1)
+    ref, _, speed_exp = reference()
+    ax[0].plot([t for t, _ in ref], [z for _, z in ref], "ko", ms=4, label="Martin & Moyce 1952")
+    ax[0].axhspan(2.0, 3.5, color="0.9")
+    ax[1].axhline(speed_exp, color="k", ls="--", lw=1, label=f"experiment's fit, {speed_exp:.3f}")
+    ax[0].set_ylim(0.9, 6)
+    ax[1].set_ylim(0, 2.2)
+    ax[0].set_xlabel("T = t sqrt(2g/a)")
+    ax[1].set_xlabel("T")
+    ax[0].set_ylabel("Z = x/a (grey: the criterion's window)")
+    ax[1].set_ylabel("dZ/dT")
+    for a_ in ax:
+        a_.set_xlim(0, 4.25)
+        a_.grid(alpha=0.3)
+    ax[0].legend(fontsize=7)
+    ax[1].legend(fontsize=7, loc="lower right")
+    plt.tight_layout()
+    plt.savefig(out, dpi=80)
+    plt.close()
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
     p.add_argument("dirs", nargs="+", metavar="DIR")
@@ -168,9 +204,13 @@ def main():
     p.add_argument("--speed-tolerance", type=float, default=0.05)
     p.add_argument("--agreement", type=float, default=0.03)
     p.add_argument("--release", type=float, default=0.0, help="scene time of the release, s")
+    p.add_argument("--compare", metavar="PNG", help="every DIR's front and speed in one figure")
+    p.add_argument("--label", action="append", help="a DIR's name in --compare's figure")
     args = p.parse_args()
+    if args.label and len(args.label) != len(args.dirs):
+        p.error(f"--label given {len(args.label)} times for {len(args.dirs)} DIRs")
     ok = True
-    shifted_runs = []
+    shifted_runs, runs = [], []
     for d in args.dirs:
         m = measure(d, args.probe, args.release, args.a, args.g)
         print(f"{d}: least-squares shift dT = {m['shift']:.3f} (T units)")
@@ -183,15 +223,23 @@ def main():
         print(f"front speed dZ/dT for 2 <= Z <= 3.5: {m['speed_sim']:.3f} against "
               f"{m['speed_exp']:.3f} ({100 * m['speed_diff']:+.1f} %, tolerance "
               f"{100 * args.speed_tolerance:.0f} %)")
+        if m["z_25"] is not None:
+            print(f"Z at T = 2.5: {m['z_25']:.3f} (reported, not judged)")
+        if m["late"] is not None:
+            print(f"late speed dZ/dT for 3 <= T <= 4: {m['late']:.3f} (reported, not judged)")
         tip = tip_speed(d, args.probe, args.release, args.a, args.g)
         if tip is not None:
             print(f"tip speed (particles within 0.2 a of the front, 2 <= Z <= 3.5): {tip:.3f} "
                   f"(reported, not judged)")
         ok = ok and m["worst"] <= args.tolerance and abs(m["speed_diff"]) <= args.speed_tolerance
         shifted_runs.append(m["shifted"])
+        runs.append(m)
         out = os.path.join(d, "front.png")
         plot(m, out)
         print(f"plot: {out}")
+    if args.compare:
+        compare(runs, args.label or args.dirs, args.compare)
+        print(f"comparison: {args.compare}")
     if len(shifted_runs) >= 2:
         agree = agreement(shifted_runs[0], shifted_runs[1])
         print(f"{args.dirs[0]} against {args.dirs[1]}: largest difference of Z at the experiment's T "

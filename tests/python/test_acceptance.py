@@ -105,7 +105,31 @@ def surge(name):
     return d
 
 
+def accelerating_front(name):
+    """A dam break's probes.csv (a = 0.1 m) whose front is Z = 1 + 0.5 T + 0.1 T^2, sampled at
+    T = 0.025 + 0.05 k to T = 4.2."""
+    d = fresh(name)
+    os.makedirs(d)
+    scale = math.sqrt(2 * 9.81 / 0.1)
+    T = [0.025 + 0.05 * k for k in range(84)]
+    with open(os.path.join(d, "probes.csv"), "w") as f:
+        f.write("time,front\n" + "".join(f"{t / scale!r},{0.1 * (1 + 0.5 * t + 0.1 * t * t)!r}\n"
+                                         for t in T))
+    return d
+
+
 class AcceptanceTest(unittest.TestCase):
+    def test_the_front_at_2_5_and_the_late_speed_of_an_accelerating_front(self):
+        d = accelerating_front("late")
+        m = dam_break_front.measure(d, a=0.1, g=9.81)
+        # linear interpolation at T = 2.5 between 2.475 and 2.525: Z(2.5) + 0.1 x 0.025^2
+        self.assertAlmostEqual(m["z_25"], 2.875 + 6.25e-5, delta=1e-9)
+        # the straight line over 20 samples symmetric about T = 3.5 has the slope 0.5 + 0.2 x 3.5
+        self.assertAlmostEqual(m["late"], 1.2, delta=1e-9)
+        out = os.path.join(d, "compare.png")
+        dam_break_front.compare([m, m], ["one", "two"], out)
+        self.assertGreater(os.path.getsize(out), 10000)
+
     def test_the_tip_speed_averages_the_particles_behind_the_front_inside_the_window(self):
         # frames at Z = 2.5 and 3.0 only; the particles within 0.02 m of the front: 1.5 and 3.0
         tip = dam_break_front.tip_speed(surge("tip"), a=0.1, g=9.81)
