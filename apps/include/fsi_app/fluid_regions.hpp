@@ -2,6 +2,7 @@
 // What every particle fluid's plug-in reads and does alike: the regions filled with particles, the
 // domain box, the filling, and the memory footprint of the particles.
 #include "fsi_app/solver_plugin.hpp"
+#include "particles/setup_block.hpp"
 
 #include <optional>
 #include <span>
@@ -61,7 +62,12 @@ std::string periodic_refusal(const Section& s, const std::string& key);
 bool inside_box(const Vec3& p, const Vec3& lo, const Vec3& hi);
 
 /// Each box region's cell-centred lattice at spacing l0 (particles::lattice_box, l0/2 from its
-/// faces), a point inside an earlier region left out.
+/// faces), a point inside an earlier region left out: the points of ids [ids.first, ids.last)
+/// of that fill appended to `out`, the others visited but not kept (a rank's block without the
+/// whole list). Returns the whole fill's count.
+std::size_t fill_box_regions(const std::vector<BoxRegion>& regions, double l0,
+                             particles::BlockRange ids, std::vector<Vec3>& out);
+/// The whole fill of the box regions.
 std::vector<Vec3> fill_box_regions(const std::vector<BoxRegion>& regions, double l0);
 
 /// A 3-D particle fluid's domain: `domain` as given, else the box around the tank, `tank_points`
