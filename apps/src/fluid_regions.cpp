@@ -211,24 +211,9 @@ bool inside_box(const Vec3& p, const Vec3& lo, const Vec3& hi) {
   return (p - lo).minCoeff() >= 0.0 && (hi - p).minCoeff() >= 0.0;
 }
 
-std::size_t fill_box_regions(const std::vector<BoxRegion>& regions, double l0,
-                             particles::BlockRange ids, std::vector<Vec3>& out) {
-  std::size_t id = 0;
-  for (std::size_t i = 0; i < regions.size(); ++i)
-    particles::for_each_lattice_point<3>(regions[i].min, regions[i].max, l0, [&](const Vec3& p) {
-      for (std::size_t j = 0; j < i; ++j)
-        if (inside_box(p, regions[j].min, regions[j].max)) return;
-      if (id >= ids.first && id < ids.last) out.push_back(p);
-      ++id;
-    });
-  return id;
-}
-
-std::vector<Vec3> fill_box_regions(const std::vector<BoxRegion>& regions, double l0) {
-  std::vector<Vec3> out;
-  out.reserve(fill_box_regions(regions, l0, {}, out)); // a first pass counts
-  fill_box_regions(regions, l0, {0, out.capacity()}, out);
-  return out;
+particles::BlockRange fill_block(std::size_t n, const Ranks& ranks) {
+  return ranks.decomposed() ? particles::block_of(n, ranks.rank(), ranks.size())
+                            : particles::BlockRange{0, n};
 }
 
 std::pair<Vec3, Vec3> box_domain(const std::optional<BoxRegion>& domain,

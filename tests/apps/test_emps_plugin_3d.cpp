@@ -430,13 +430,13 @@ TEST_CASE("apps: a 3-D EMPS fluid region given as a closed surface (fluid.region
                  "fluid.regions=[{min: [0, 0, 0], max: [0.2, 0.2, 0.2]}, {min: [0.05, 0.15, "
                  "0.05], max: [0.15, 0.25, 0.15]}]"});
     const auto& f = scene.fluid->as<emps_plugin::FluidSpec3>();
-    const emps_plugin::Fill3 whole = emps_plugin::fill_regions3(f, OneProcess());
+    const Fill3 whole = emps_plugin::fill_regions3(f, OneProcess());
     REQUIRE(whole.total == whole.x.size());
     REQUIRE(whole.total > 1080); // the box and the octahedron of the section above, and more
     for (int P = 1; P <= 4; ++P) {
       std::vector<Vec3> joined;
       for (int r = 0; r < P; ++r) {
-        const emps_plugin::Fill3 block = emps_plugin::fill_regions3(f, RankOf(r, P));
+        const Fill3 block = emps_plugin::fill_regions3(f, RankOf(r, P));
         CHECK(block.total == whole.total);
         CHECK(block.ids.first == joined.size());
         CHECK(block.x.size() == block.ids.size());

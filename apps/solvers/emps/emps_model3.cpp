@@ -73,13 +73,9 @@ Fill3 fill_regions3(const FluidSpec3& f, const Ranks& ranks) {
       for (const Box& r : f.regions) in_box = in_box || inside_box(p, r.min, r.max);
       if (!in_box) surface.push_back(p);
     }
-  Fill3 fill;
-  const std::size_t boxes = fill_box_regions(f.regions, f.options.l0, {}, fill.x); // the count
-  fill.total = boxes + surface.size();
-  fill.ids = ranks.decomposed() ? particles::block_of(fill.total, ranks.rank(), ranks.size())
-                                : particles::BlockRange{0, fill.total};
-  fill.x.reserve(fill.ids.size());
-  fill_box_regions(f.regions, f.options.l0, fill.ids, fill.x);
+  Fill3 fill = fill_box_part(
+      f.regions, f.options.l0, ranks, [](const Vec3&) { return true; }, surface.size());
+  const std::size_t boxes = fill.total - surface.size();
   for (std::size_t i = std::max(fill.ids.first, boxes); i < fill.ids.last; ++i)
     fill.x.push_back(surface[i - boxes]);
   return fill;

@@ -28,13 +28,6 @@ emps::FluidOptions3 fluid_options3(const Scene& scene);
 /// The plug-in's functions for a 3-D scene (emps_plugin.cpp picks them by scene.dimension).
 void check3(const Scene& scene, Section& s, std::vector<Section>& probes);
 Footprint footprint3(const Scene& scene);
-/// A process's part of the fill of a 3-D scene's regions: ids [ids.first, ids.last) of the
-/// whole fill of `total` (the ids one process gives them), their positions `x`.
-struct Fill3 {
-  std::vector<Vec3> x;
-  particles::BlockRange ids;
-  std::size_t total = 0;
-};
 /// The fill of the scene's regions (box regions, then region_file's points outside every box):
 /// the whole on one process; under mpirun (`ranks` decomposed) this rank's block of ids
 /// (particles::block_of), the box regions' lattices enumerated without keeping the rest
