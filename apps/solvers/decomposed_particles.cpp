@@ -8,12 +8,20 @@ namespace fsi::app {
 
 template <int D>
 FillBlock<D> DecomposedParticles<D>::setup(const Ranks& ranks, std::vector<VecD<D>> filled) {
-  particles_ = filled_ = filled.size();
-  if (!ranks.decomposed()) return {std::move(filled), {}};
-  const particles::BlockRange b = particles::block_of(filled.size(), ranks.rank(), ranks.size());
+  const std::size_t n = filled.size();
+  if (!ranks.decomposed()) return setup(ranks, std::move(filled), 0, n);
+  const particles::BlockRange b = particles::block_of(n, ranks.rank(), ranks.size());
   const auto first = filled.begin() + static_cast<std::ptrdiff_t>(b.first);
-  return {std::vector<VecD<D>>(first, first + static_cast<std::ptrdiff_t>(b.size())),
-          {b.first, true}};
+  return setup(ranks, std::vector<VecD<D>>(first, first + static_cast<std::ptrdiff_t>(b.size())),
+               b.first, n);
+}
+
+template <int D>
+FillBlock<D> DecomposedParticles<D>::setup(const Ranks& ranks, std::vector<VecD<D>> part,
+                                           std::size_t first, std::size_t filled) {
+  particles_ = filled_ = filled;
+  if (!ranks.decomposed()) return {std::move(part), {}};
+  return {std::move(part), {first, true}};
 }
 
 template <int D>

@@ -34,6 +34,10 @@ public:
   /// (particles/setup_block.hpp), the fluid's start deferred to decompose(). Keeps the fill's
   /// count (filled()).
   FillBlock<D> setup(const Ranks& ranks, std::vector<VecD<D>> filled);
+  /// setup() for a fill each process built its part of already: `part` the positions of ids
+  /// [first, first + part.size()) of a fill of `filled` (on one process the whole, first 0).
+  FillBlock<D> setup(const Ranks& ranks, std::vector<VecD<D>> part, std::size_t first,
+                     std::size_t filled);
   /// The count of the fill of the last setup(): every rank's, also after a restart.
   std::size_t filled() const { return filled_; }
   /// The model read a checkpoint of `particles` particles, whole on every rank.

@@ -211,16 +211,9 @@ bool inside_box(const Vec3& p, const Vec3& lo, const Vec3& hi) {
   return (p - lo).minCoeff() >= 0.0 && (hi - p).minCoeff() >= 0.0;
 }
 
-std::vector<Vec3> fill_box_regions(const std::vector<BoxRegion>& regions, double l0) {
-  std::vector<Vec3> out;
-  for (std::size_t i = 0; i < regions.size(); ++i)
-    for (const Vec3& p : particles::lattice_box<3>(regions[i].min, regions[i].max, l0)) {
-      bool earlier = false;
-      for (std::size_t j = 0; j < i; ++j)
-        earlier = earlier || inside_box(p, regions[j].min, regions[j].max);
-      if (!earlier) out.push_back(p);
-    }
-  return out;
+particles::BlockRange fill_block(std::size_t n, const Ranks& ranks) {
+  return ranks.decomposed() ? particles::block_of(n, ranks.rank(), ranks.size())
+                            : particles::BlockRange{0, n};
 }
 
 std::pair<Vec3, Vec3> box_domain(const std::optional<BoxRegion>& domain,

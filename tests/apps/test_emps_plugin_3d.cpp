@@ -351,6 +351,38 @@ std::string octahedron_stl(const std::string& name, const Vec3& c, double R, int
   return path;
 }
 
+/// Process `rank` of `size` as mpirun would number it, for what reads only those (the fill).
+class RankOf final : public Ranks {
+public:
+  RankOf(int rank, int size) : rank_(rank), size_(size) {}
+  int rank() const override { return rank_; }
+  int size() const override { return size_; }
+  bool decomposed() const override { return true; }
+  bool all(bool) const override { throw RunError("RankOf: no collectives"); }
+  Agreed agree(int, const std::string&) const override { throw RunError("RankOf"); }
+  std::string first(const std::string&) const override { throw RunError("RankOf"); }
+  void gather(const std::vector<double>&, std::vector<double>&) const override {
+    throw RunError("RankOf");
+  }
+  void exchange(const std::vector<double>&, const std::vector<int>&,
+                std::vector<double>&) const override {
+    throw RunError("RankOf");
+  }
+  void sum(std::vector<double>&) const override { throw RunError("RankOf"); }
+  void broadcast(std::vector<double>&) const override { throw RunError("RankOf"); }
+
+private:
+  std::unique_ptr<particles::Decomposition<2>>
+  new_decomposition(std::integral_constant<int, 2>) const override {
+    throw RunError("RankOf");
+  }
+  std::unique_ptr<particles::Decomposition<3>>
+  new_decomposition(std::integral_constant<int, 3>) const override {
+    throw RunError("RankOf");
+  }
+  int rank_, size_;
+};
+
 } // namespace
 
 TEST_CASE("apps: a 3-D EMPS fluid region given as a closed surface (fluid.region_file) holds its "
@@ -388,6 +420,30 @@ TEST_CASE("apps: a 3-D EMPS fluid region given as a closed surface (fluid.region
     advance(model, 0, 4);
     CHECK(probe(model, "particles") == 1080.0);
     CHECK(probe(model, "wall_gap") > 0.0);
+  }
+  SECTION("each rank's block of the fill is its slice of the whole, built without the rest") {
+    // Two overlapping boxes (the second's points in the first left out) and the surface's
+    // points outside both (ids after the boxes'): on P ranks each builds ids
+    // [n r/P, n(r+1)/P) only, and the blocks in rank order are the one-process fill, bit for bit.
+    const Scene scene = load_scene(
+        kScene, {"fluid.region_file=" + stl,
+                 "fluid.regions=[{min: [0, 0, 0], max: [0.2, 0.2, 0.2]}, {min: [0.05, 0.15, "
+                 "0.05], max: [0.15, 0.25, 0.15]}]"});
+    const auto& f = scene.fluid->as<emps_plugin::FluidSpec3>();
+    const Fill3 whole = emps_plugin::fill_regions3(f, OneProcess());
+    REQUIRE(whole.total == whole.x.size());
+    REQUIRE(whole.total > 1080); // the box and the octahedron of the section above, and more
+    for (int P = 1; P <= 4; ++P) {
+      std::vector<Vec3> joined;
+      for (int r = 0; r < P; ++r) {
+        const Fill3 block = emps_plugin::fill_regions3(f, RankOf(r, P));
+        CHECK(block.total == whole.total);
+        CHECK(block.ids.first == joined.size());
+        CHECK(block.x.size() == block.ids.size());
+        joined.insert(joined.end(), block.x.begin(), block.x.end());
+      }
+      CHECK(joined == whole.x);
+    }
   }
   SECTION("an open surface is refused naming the key and the file") {
     const std::string open = octahedron_stl("test_emps_plugin_3d_open.stl", c, R, 3);

@@ -1,7 +1,10 @@
 #pragma once
 // What every particle fluid's plug-in reads and does alike: the regions filled with particles, the
 // domain box, the filling, and the memory footprint of the particles.
+#include "fsi_app/ranks.hpp"
 #include "fsi_app/solver_plugin.hpp"
+#include "particles/lattice.hpp"
+#include "particles/setup_block.hpp"
 
 #include <optional>
 #include <span>
@@ -60,9 +63,52 @@ std::string periodic_refusal(const Section& s, const std::string& key);
 /// Whether p lies in the box [lo, hi], its faces included.
 bool inside_box(const Vec3& p, const Vec3& lo, const Vec3& hi);
 
-/// Each box region's cell-centred lattice at spacing l0 (particles::lattice_box, l0/2 from its
-/// faces), a point inside an earlier region left out.
-std::vector<Vec3> fill_box_regions(const std::vector<BoxRegion>& regions, double l0);
+/// Calls visit(p) for each box region's cell-centred lattice point at spacing l0
+/// (particles::for_each_lattice_point, l0/2 from its faces), region after region, a point inside
+/// an earlier region left out: the fill's points in id order, without a list.
+template <class Visit>
+void for_each_box_region_point(const std::vector<BoxRegion>& regions, double l0, Visit visit) {
+  for (std::size_t i = 0; i < regions.size(); ++i)
+    particles::for_each_lattice_point<3>(regions[i].min, regions[i].max, l0, [&](const Vec3& p) {
+      for (std::size_t j = 0; j < i; ++j)
+        if (inside_box(p, regions[j].min, regions[j].max)) return;
+      visit(p);
+    });
+}
+
+/// A process's part of a 3-D fluid's fill: ids [ids.first, ids.last) of the whole fill of
+/// `total` (the ids one process gives them), their positions `x`.
+struct Fill3 {
+  std::vector<Vec3> x;
+  particles::BlockRange ids;
+  std::size_t total = 0;
+};
+
+/// The ids of this process's part of a fill of n: its block under mpirun (`ranks` decomposed,
+/// particles::block_of), else all n.
+particles::BlockRange fill_block(std::size_t n, const Ranks& ranks);
+
+/// The box regions' fill less the points `keep` refuses, numbered in its order, then `after`
+/// more points (ids from the boxes' count, total - after, which the caller appends for its
+/// part): this process's part (fill_block) of the boxes' points, built without the others (a
+/// first pass counts, a second keeps; `keep` is called twice a point).
+template <class Keep>
+Fill3 fill_box_part(const std::vector<BoxRegion>& regions, double l0, const Ranks& ranks, Keep keep,
+                    std::size_t after = 0) {
+  std::size_t n = 0;
+  for_each_box_region_point(regions, l0, [&](const Vec3& p) { n += keep(p) ? 1 : 0; });
+  Fill3 fill;
+  fill.total = n + after;
+  fill.ids = fill_block(fill.total, ranks);
+  fill.x.reserve(fill.ids.size());
+  std::size_t id = 0;
+  for_each_box_region_point(regions, l0, [&](const Vec3& p) {
+    if (!keep(p)) return;
+    if (id >= fill.ids.first && id < fill.ids.last) fill.x.push_back(p);
+    ++id;
+  });
+  return fill;
+}
 
 /// A 3-D particle fluid's domain: `domain` as given, else the box around the tank, `tank_points`
 /// (an STL tank's, a surface region's) and the regions, grown by margin on every side.

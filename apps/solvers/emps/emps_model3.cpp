@@ -64,16 +64,21 @@ emps::FluidOptions3 fluid_options3(const Scene& scene) {
   return o;
 }
 
-std::vector<Vec3> fill_regions3(const FluidSpec3& f) {
-  std::vector<Vec3> x = fill_box_regions(f.regions, f.options.l0);
-  if (!f.region_surface) return x;
-  for (const Vec3& p : erp::fill_closed_surface(f.region_surface->points,
-                                                f.region_surface->triangles, f.options.l0)) {
-    bool in_box = false;
-    for (const Box& r : f.regions) in_box = in_box || inside_box(p, r.min, r.max);
-    if (!in_box) x.push_back(p);
-  }
-  return x;
+Fill3 fill_regions3(const FluidSpec3& f, const Ranks& ranks) {
+  std::vector<Vec3> surface; // region_file's points outside every box: ids after the boxes'
+  if (f.region_surface)
+    for (const Vec3& p : erp::fill_closed_surface(f.region_surface->points,
+                                                  f.region_surface->triangles, f.options.l0)) {
+      bool in_box = false;
+      for (const Box& r : f.regions) in_box = in_box || inside_box(p, r.min, r.max);
+      if (!in_box) surface.push_back(p);
+    }
+  Fill3 fill = fill_box_part(
+      f.regions, f.options.l0, ranks, [](const Vec3&) { return true; }, surface.size());
+  const std::size_t boxes = fill.total - surface.size();
+  for (std::size_t i = std::max(fill.ids.first, boxes); i < fill.ids.last; ++i)
+    fill.x.push_back(surface[i - boxes]);
+  return fill;
 }
 
 std::unique_ptr<erp::TriangleWallSet> fluid_walls(const Scene& scene,
@@ -168,8 +173,10 @@ EmpsModel3::EmpsModel3(const Scene& scene, const std::vector<InterfaceMesh3>& in
     : probes_(scene.output.probes) {
   const FluidSpec3& f = scene.fluid->as<FluidSpec3>();
   ranks_.refuse(f.periodic);
-  validate3(scene, interfaces, ranks);
-  const auto [positions, block] = ranks_.setup(ranks, fill_regions3(f));
+  Fill3 fill = fill_regions3(f, ranks);
+  validate3(scene, interfaces, fill, ranks);
+  const auto [positions, block] =
+      ranks_.setup(ranks, std::move(fill.x), fill.ids.first, fill.total);
   walls_ = fluid_walls(scene, interfaces, interfaces_);
   tank_motion_ = tank_motion(f, *walls_);
   if (tank_motion_) tank_motion_->move(*walls_, 0.0);

@@ -28,15 +28,23 @@ emps::FluidOptions3 fluid_options3(const Scene& scene);
 /// The plug-in's functions for a 3-D scene (emps_plugin.cpp picks them by scene.dimension).
 void check3(const Scene& scene, Section& s, std::vector<Section>& probes);
 Footprint footprint3(const Scene& scene);
-/// The regions hold particles, each on the fluid side of its nearest wall triangle (an STL
-/// surface facing away from the fluid is refused naming its file; a moving tank at t = 0; its
-/// motion's table covers the run and there are no structures), the interfaces' meshes make
-/// triangles and cover tank triangles wholly or not at all; InputError naming the key. Under
-/// mpirun (`ranks` decomposed) each rank queries the walls for its block of the fill only, and
-/// every rank throws the message of the first particle behind a wall in id order, as one
-/// process does (collective).
-void validate3(const Scene& scene, const std::vector<InterfaceMesh3>& interfaces = {},
-               const Ranks& ranks = OneProcess());
+/// The fill of the scene's regions (box regions, then region_file's points outside every box):
+/// the whole on one process; under mpirun (`ranks` decomposed) this rank's block of ids
+/// (particles::block_of), the box regions' lattices enumerated without keeping the rest
+/// (region_file's points are still built whole, then cut).
+Fill3 fill_regions3(const FluidSpec3& f, const Ranks& ranks);
+
+/// The regions hold particles (`fill`, fill_regions3's), each on the fluid side of its nearest
+/// wall triangle (an STL surface facing away from the fluid is refused naming its file; a moving
+/// tank at t = 0; its motion's table covers the run and there are no structures), the
+/// interfaces' meshes make triangles and cover tank triangles wholly or not at all; InputError
+/// naming the key. Under mpirun (`ranks` decomposed) each rank checks its block of the fill
+/// only, and every rank throws the message of the first particle behind a wall in id order, as
+/// one process does (collective).
+void validate3(const Scene& scene, const std::vector<InterfaceMesh3>& interfaces, const Fill3& fill,
+               const Ranks& ranks);
+/// validate3 on one process, over the whole fill (fsi check, the plug-in's validate).
+void validate3(const Scene& scene, const std::vector<InterfaceMesh3>& interfaces = {});
 
 class EmpsModel3 final : public FluidPart {
 public:
@@ -103,8 +111,6 @@ private:
   std::unique_ptr<WallPointProbes> wall_points_; // the scene's wall_pressure probes
 };
 
-/// The fluid particles of a 3-D scene's regions (EmpsModel3's fill).
-std::vector<Vec3> fill_regions3(const FluidSpec3& f);
 /// fluid.tank_motion over every node of `walls` (a moving tank has no structures: validate3).
 std::optional<erp::RigidTriangles3> tank_motion(const FluidSpec3& f,
                                                 const erp::TriangleWallSet& walls);

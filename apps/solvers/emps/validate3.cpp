@@ -18,13 +18,27 @@ namespace fsi::app::emps_plugin {
 
 namespace {
 
-/// Refuses an open edge of the tank_file surface below the top of the fill `x` (against gravity):
-/// a hole the water can leave by. A tank open above its water passes.
-void check_open_edges(const Scene& scene, const FluidSpec3& f, const std::vector<Vec3>& x) {
+/// A point for messages: "(x, y, z) m", six significant digits.
+std::string point_text(const Vec3& p) {
+  std::ostringstream at;
+  at << '(' << significant(p.x(), 6) << ", " << significant(p.y(), 6) << ", "
+     << significant(p.z(), 6) << ") m";
+  return at.str();
+}
+
+/// Refuses an open edge of the tank_file surface below the top of the fill (against gravity;
+/// `x` this rank's block of it, the top the highest of every rank's): a hole the water can
+/// leave by. A tank open above its water passes. Collective when decomposed.
+void check_open_edges(const Scene& scene, const FluidSpec3& f, const std::vector<Vec3>& x,
+                      const Ranks& ranks) {
   if (!f.tank_surface || f.tank_surface->open_edges == 0 || scene.gravity3.norm() == 0.0) return;
   const Vec3 up = -scene.gravity3.normalized();
-  double top = -std::numeric_limits<double>::infinity();
-  for (const Vec3& xi : x) top = std::max(top, up.dot(xi));
+  std::vector<double> tops(static_cast<std::size_t>(ranks.size()), 0.0); // each rank's top
+  double& own = tops[static_cast<std::size_t>(ranks.rank())];
+  own = -std::numeric_limits<double>::infinity();
+  for (const Vec3& xi : x) own = std::max(own, up.dot(xi));
+  ranks.sum(tops); // the others' entries are zero: every rank's top, on every rank
+  const double top = *std::max_element(tops.begin(), tops.end());
   erp::TriangleWallSet surface;
   surface.add_triangles(f.tank_surface->points, f.tank_surface->triangles, 0);
   const auto& X = surface.nodes().x;
@@ -35,13 +49,10 @@ void check_open_edges(const Scene& scene, const FluidSpec3& f, const std::vector
       const Vec3& b = X[static_cast<std::size_t>(surface.triangles().node[t][(k + 1) % 3])];
       if (!surface.open(static_cast<int>(t), edge) || std::min(up.dot(a), up.dot(b)) >= top)
         continue;
-      const Vec3 m = 0.5 * (a + b);
-      std::ostringstream at;
-      at << '(' << significant(m.x(), 6) << ", " << significant(m.y(), 6) << ", "
-         << significant(m.z(), 6) << ") m";
       fail_at(scene, f.tank_line, "fluid.tank_file",
               f.tank_path + ": facet " + std::to_string(t + 1) + " has an open edge at " +
-                  at.str() + " below the water's top (a hole the water can leave by; only a " +
+                  point_text(0.5 * (a + b)) +
+                  " below the water's top (a hole the water can leave by; only a " +
                   "tank open above its water is allowed)");
     }
 }
@@ -60,31 +71,33 @@ void check_behind_walls(const Scene& scene, const erp::TriangleWallSet& walls,
   locator.query(x, hits);
   for (std::size_t i = 0; i < x.size(); ++i)
     if (hits.crossed[i]) {
-      std::ostringstream at;
-      at << '(' << significant(x[i].x(), 6) << ", " << significant(x[i].y(), 6) << ", "
-         << significant(x[i].z(), 6) << ") m";
+      const std::string at = point_text(x[i]);
       const int group = walls.triangles().group[static_cast<std::size_t>(hits.triangle[i])];
       if (group > 0)
         fail_at(scene, regions_line(f), "fluid.regions",
-                "the fluid at " + at.str() + " lies behind the interface of structure '" +
+                "the fluid at " + at + " lies behind the interface of structure '" +
                     scene.structures[static_cast<std::size_t>(group - 1)].name + "'");
       if (f.tank_surface)
         fail_at(scene, f.tank_line, "fluid.tank_file",
-                f.tank_path + ": the fluid at " + at.str() + " lies behind facet " +
+                f.tank_path + ": the fluid at " + at + " lies behind facet " +
                     std::to_string(hits.triangle[i] + 1) +
                     " (each facet's normal must point into the fluid)");
       fail_at(scene, regions_line(f), "fluid.regions",
-              "the fluid at " + at.str() + " lies behind a wall of the tank");
+              "the fluid at " + at + " lies behind a wall of the tank");
     }
 }
 
 } // namespace
 
-void validate3(const Scene& scene, const std::vector<InterfaceMesh3>& interfaces,
+void validate3(const Scene& scene, const std::vector<InterfaceMesh3>& interfaces) {
+  const OneProcess one{};
+  validate3(scene, interfaces, fill_regions3(scene.fluid->as<FluidSpec3>(), one), one);
+}
+
+void validate3(const Scene& scene, const std::vector<InterfaceMesh3>& interfaces, const Fill3& fill,
                const Ranks& ranks) {
   const FluidSpec3& f = scene.fluid->as<FluidSpec3>();
-  const std::vector<Vec3> x = fill_regions3(f);
-  if (x.empty())
+  if (fill.total == 0)
     fail_at(scene, regions_line(f), f.regions.empty() ? "fluid.region_file" : "fluid.regions",
             "no particle fits");
   if (f.periodic_z && !scene.structures.empty()) throw InputError(f.periodic_structures);
@@ -96,7 +109,7 @@ void validate3(const Scene& scene, const std::vector<InterfaceMesh3>& interfaces
               "needs fluid.domain, a box that holds the tank as it moves");
     check_motion_table(scene, *f.tank_motion, f.tank_motion_line, "fluid.tank_motion.table");
   }
-  check_open_edges(scene, f, x);
+  check_open_edges(scene, f, fill.x, ranks);
   std::vector<erp::InterfaceTriangles> triangles;
   const std::unique_ptr<erp::TriangleWallSet> walls = fluid_walls(scene, interfaces, triangles);
   WallPointProbes(scene, *walls, f.options.r_e(), f.tank_motion || !interfaces.empty());
@@ -104,12 +117,9 @@ void validate3(const Scene& scene, const std::vector<InterfaceMesh3>& interfaces
   if (const auto motion = tank_motion(f, *walls)) motion->move(*walls, 0.0); // the fill at t = 0
   // Each rank its block of the fill (ids as one process numbers them, particles/setup_block.hpp):
   // the lowest failing rank holds the first particle behind a wall in id order.
-  const particles::BlockRange b = ranks.decomposed()
-                                      ? particles::block_of(x.size(), ranks.rank(), ranks.size())
-                                      : particles::BlockRange{0, x.size()};
   std::string failure;
   try {
-    check_behind_walls(scene, *walls, std::span<const Vec3>(x).subspan(b.first, b.size()));
+    check_behind_walls(scene, *walls, fill.x);
   } catch (const InputError& e) {
     failure = e.what();
   }

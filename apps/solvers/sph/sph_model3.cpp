@@ -38,25 +38,26 @@ std::vector<sph::InterfaceBoundary3> boundaries_of(const Scene& scene,
 }
 
 // The options checked and the fluid's particles: the regions' fill less what lies behind an
-// interface or within l0/2 of it (its signed distance at the reference positions); InputError
-// naming the fluid block when none is left.
-std::vector<Vec3> checked_fluid(const Scene& scene,
-                                const std::vector<sph::InterfaceBoundary3>& bs) {
+// interface or within l0/2 of it (its signed distance at the reference positions), this
+// process's part of it (fill_box_part: under mpirun its block of ids, built without the rest);
+// InputError naming the fluid block when none is left.
+Fill3 checked_fluid(const Scene& scene, const std::vector<sph::InterfaceBoundary3>& bs,
+                    const Ranks& ranks) {
   const SphSpec3& f = scene.fluid->as<SphSpec3>();
   try {
     sph_options3(scene).validate();
   } catch (const InputError& e) {
     fail_at(scene, scene.fluid->line, "fluid", e.what());
   }
-  std::vector<Vec3> out;
-  for (const Vec3& p : fill_regions3(f)) {
-    bool solid = false;
-    for (const auto& b : bs) solid = solid || b.signed_distance(p) < 0.5 * f.options.dp;
-    if (!solid) out.push_back(p);
-  }
-  if (out.empty())
+  const double dp = f.options.dp;
+  Fill3 fill = fill_box_part(f.regions, dp, ranks, [&bs, dp](const Vec3& p) {
+    for (const auto& b : bs)
+      if (b.signed_distance(p) < 0.5 * dp) return false;
+    return true;
+  });
+  if (fill.total == 0)
     fail_at(scene, f.regions.front().line, "fluid.regions", "no particle fits the regions");
-  return out;
+  return fill;
 }
 
 // The tank's dummies less those whose dp cell of the tank's lattice holds one of `points` (a
@@ -93,10 +94,6 @@ sph::SphOptions3 sph_options3(const Scene& scene) {
     o.domain_min.z() = f.tank->min.z(), o.domain_max.z() = f.tank->max.z();
   }
   return o;
-}
-
-std::vector<Vec3> fill_regions3(const SphSpec3& f) {
-  return fill_box_regions(f.regions, f.options.dp);
 }
 
 void check3(const Scene& scene, Section& s, std::vector<Section>& probes) {
@@ -137,7 +134,7 @@ Footprint footprint3(const Scene& scene) {
 }
 
 void validate3(const Scene& scene, const std::vector<InterfaceMesh3>& interfaces) {
-  checked_fluid(scene, boundaries_of(scene, interfaces));
+  checked_fluid(scene, boundaries_of(scene, interfaces), OneProcess());
 }
 
 SphModel3::SphModel3(const Scene& scene, const std::vector<InterfaceMesh3>& interfaces,
@@ -145,7 +142,9 @@ SphModel3::SphModel3(const Scene& scene, const std::vector<InterfaceMesh3>& inte
     : boundaries_(boundaries_of(scene, interfaces)), probes_(scene.output.probes) {
   const SphSpec3& f = scene.fluid->as<SphSpec3>();
   ranks_.refuse(f.periodic);
-  const auto [positions, block] = ranks_.setup(ranks, checked_fluid(scene, boundaries_));
+  Fill3 fill = checked_fluid(scene, boundaries_, ranks);
+  const auto [positions, block] =
+      ranks_.setup(ranks, std::move(fill.x), fill.ids.first, fill.total);
   // The interfaces' points (group 1 + j) after the tank's dummies (group 0); the guard's exact
   // surface of interface j: its flat triangles where its points are now (interface_x_).
   std::vector<sph::WallPoint3> points;

@@ -83,7 +83,4 @@ private:
   mutable std::vector<double> xyz_, v_; // output buffers
 };
 
-/// The fluid particles of a 3-D scene's regions (SphModel3's fill, before the interfaces').
-std::vector<Vec3> fill_regions3(const SphSpec3& f);
-
 } // namespace fsi::app::sph_plugin
