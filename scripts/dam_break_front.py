@@ -133,6 +133,8 @@ def tip_speed(d, probe="front", release=0.0, a=0.1, g=9.81):
         for frame in f["frames"].values():
             t = float(frame.attrs["time"])
             x_front = min(front.items(), key=lambda item: abs(item[0] - t))[1]
+            if "velocity" not in frame["particles"]:
+                return None  # a run that wrote no velocities (output.fields)
             if t < release or not 2.0 <= x_front / a <= 3.5:
                 continue
             x, v = frame["particles/position"][:, 0], frame["particles/velocity"][:, 0]

@@ -135,6 +135,14 @@ class AcceptanceTest(unittest.TestCase):
         tip = dam_break_front.tip_speed(surge("tip"), a=0.1, g=9.81)
         self.assertAlmostEqual(tip, 2.25 / math.sqrt(2 * 9.81 * 0.1), delta=1e-12)
 
+    def test_no_tip_speed_from_frames_without_velocities(self):
+        # output.fields without velocity (the EMPS peer case): the frames hold positions only
+        d = surge("no_velocity")
+        with h5py.File(os.path.join(d, "fields.h5"), "a") as f:
+            for g in f["frames"].values():
+                del g["particles/velocity"]
+        self.assertIsNone(dam_break_front.tip_speed(d, a=0.1, g=9.81))
+
     def test_the_energy_budget_splits_gravity_kinetic_and_compression(self):
         b = hydrostatic_check.energy_budget(settling_column("budget"), damping=2.0, g=9.81)
         # m = rho l0^2 = 10 kg; from t = 2 s: gravity m g dy, kinetic m u^2 / 2,
