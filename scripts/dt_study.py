@@ -26,13 +26,19 @@ FSI = os.path.join(os.environ.get("BUILD_DIR", os.path.join(ROOT, "build")), "ap
 
 # What each scene is measured by. The rigid dam break: the surge front x(t), at the output
 # times where the reference front has not yet reached `front_until` (the right wall is at
-# 0.8 m). The elastic obstacle: the upper-left corner's largest rightward deflection and when.
+# 0.8 m); its 3-D slab (issue 43) likewise. The elastic obstacle: the upper-left corner's largest rightward deflection and when.
 # Issue 48's EMPS peer case (column width a = 1 m): the front at the frames with
 # T = t sqrt(2 g / a) in `T_window`, Martin & Moyce's acceptance figures (scripts/dam_break_front)
 # and the density error of the interior (`density`, from fields.h5).
 STUDIES = {
     "dam_break_rigid": {
         "file": "data/scenes/dam_break_rigid.yaml",
+        "probe": "front",
+        "metric": "front",
+        "front_until": 0.7,
+    },
+    "dam_break_slab_emps_3d": {
+        "file": "data/scenes/dam_break_slab_emps_3d.yaml",
         "probe": "front",
         "metric": "front",
         "front_until": 0.7,
